@@ -1,0 +1,39 @@
+# hrp: humanoid robot platform.
+#   make        build every native part (runs `make deps` first if something is missing)
+#   make deps   install what Debian must provide (idempotent)
+#   make test   run every test; ends with one line "N passed, N failed"
+#   make clean  remove build/
+
+BUILD := $(CURDIR)/build
+export BUILD
+# Every folder with a Makefile under Modules/, Platforms/ and Run/ is a native part.
+NATIVE_DIRS := $(sort $(dir $(wildcard Modules/*/Makefile Platforms/*/Makefile Run/*/Makefile)))
+DEPS_STAMP := $(BUILD)/.deps-ok
+
+.PHONY: all deps test clean bench $(NATIVE_DIRS)
+
+all: $(DEPS_STAMP) $(NATIVE_DIRS)
+
+# Modules/shm first: others link against it.
+$(filter-out Modules/shm/,$(NATIVE_DIRS)): Modules/shm/
+
+$(NATIVE_DIRS): $(DEPS_STAMP)
+	@$(MAKE) --no-print-directory -C $@ all
+
+deps:
+	@Run/install_deps.sh
+	@mkdir -p $(BUILD) && touch $(DEPS_STAMP)
+
+# Only re-checked when the dependency list changes or on a new clone.
+$(DEPS_STAMP): Run/install_deps.sh
+	@Run/install_deps.sh
+	@mkdir -p $(BUILD) && touch $@
+
+test: all
+	@Tests/run_all.sh
+
+bench: all
+	@Tests/run_benchmarks.sh
+
+clean:
+	rm -rf $(BUILD)

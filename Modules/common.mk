@@ -1,0 +1,19 @@
+# Shared flags for every native part. Include from a sub-Makefile:  include ../../Modules/common.mk
+# Outputs: libraries to $(LIBDIR), programs to $(BINDIR), C/C++ test programs to $(TESTDIR)
+# (every executable in $(TESTDIR) is run by `make test` and must print TAP: "ok N - ..." / "not ok N - ...").
+TOP      := $(abspath $(dir $(lastword $(MAKEFILE_LIST)))/..)
+BUILD    ?= $(TOP)/build
+LIBDIR   := $(BUILD)/lib
+BINDIR   := $(BUILD)/bin
+TESTDIR  := $(BUILD)/tests
+OBJDIR    = $(BUILD)/obj/$(notdir $(CURDIR))
+
+CC       := gcc
+CXX      := g++
+WARN     := -Wall -Wextra -Werror -Wshadow -Wno-unused-parameter
+CFLAGS   += -std=c11 -O2 -g -fPIC $(WARN) -D_GNU_SOURCE -I$(TOP)/Modules -DHRP_ROOT_DEFAULT='"$(TOP)"'
+CXXFLAGS += -std=c++17 -O2 -g -fPIC $(WARN) -D_GNU_SOURCE -I$(TOP)/Modules -DHRP_ROOT_DEFAULT='"$(TOP)"'
+# Link against the shm library by path with an rpath, so nothing needs installing.
+SHM_LIBS := -L$(LIBDIR) -lhrpshm -Wl,-rpath,$(LIBDIR) -lpthread -lrt -lm
+
+$(shell mkdir -p $(LIBDIR) $(BINDIR) $(TESTDIR))

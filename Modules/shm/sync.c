@@ -1,0 +1,123 @@
+/* Sequence lock, futex waits and atomics on shared-memory words. */
+#include "shm_internal.h"
+
+#include <errno.h>
+#include <linux/futex.h>
+#include <math.h>
+#include <sched.h>
+#include <sys/syscall.h>
+#include <time.h>
+#include <unistd.h>
+
+double shm_now(void) {
+  struct timespec ts;
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static void cpu_relax(void) {
+#if defined(__x86_64__) || defined(__i386__)
+  __builtin_ia32_pause();
+#endif
+}
+
+void shm_write_begin(shm_block *b) {
+  uint32_t *seq = &shm_block_header(b)->seq;
+  double stuck_since = 0;
+  uint32_t stuck_value = 0;
+  for (unsigned spins = 0;; spins++) {
+    uint32_t s = __atomic_load_n(seq, __ATOMIC_RELAXED);
+    if (!(s & 1u)) {
+      if (__atomic_compare_exchange_n(seq, &s, s + 1, 0, __ATOMIC_ACQUIRE, __ATOMIC_RELAXED)) break;
+      continue;
+    }
+    /* Another writer is inside. After ~10 ms at the same value it died mid-update: take over
+     * (s+2 stays odd, so readers keep waiting until our shm_write_end). */
+    if (spins % 256 == 255) {
+      double now = shm_now();
+      if (s != stuck_value) { stuck_value = s; stuck_since = now; }
+      else if (now - stuck_since > 0.010 &&
+               __atomic_compare_exchange_n(seq, &s, s + 2, 0, __ATOMIC_ACQUIRE, __ATOMIC_RELAXED))
+        break;
+      sched_yield();
+    } else {
+      cpu_relax();
+    }
+  }
+  __atomic_thread_fence(__ATOMIC_RELEASE);
+}
+
+static long futex(volatile uint32_t *addr, int op, uint32_t val, const struct timespec *ts) {
+  return syscall(SYS_futex, addr, op, val, ts, NULL, 0);
+}
+
+void shm_write_end(shm_block *b) {
+  shm_header *h = shm_block_header(b);
+  __atomic_fetch_add(&h->seq, 1u, __ATOMIC_RELEASE);
+  __atomic_fetch_add(&h->writes, 1u, __ATOMIC_RELEASE);
+  if (__atomic_load_n(&h->waiters, __ATOMIC_ACQUIRE)) futex(&h->writes, FUTEX_WAKE, 0x7fffffff, NULL);
+}
+
+uint32_t shm_read_begin(const shm_block *b) {
+  const uint32_t *seq = &shm_block_header((shm_block *)b)->seq;
+  for (unsigned spins = 0;; spins++) {
+    uint32_t s = __atomic_load_n(seq, __ATOMIC_ACQUIRE);
+    if (!(s & 1u)) return s;
+    if (spins % 256 == 255) sched_yield(); else cpu_relax();
+  }
+}
+
+int shm_read_retry(const shm_block *b, uint32_t s) {
+  __atomic_thread_fence(__ATOMIC_ACQUIRE);
+  return __atomic_load_n(&shm_block_header((shm_block *)b)->seq, __ATOMIC_RELAXED) != s;
+}
+
+static struct timespec to_timespec(double s) {
+  if (!(s > 0)) s = 0;
+  struct timespec ts;
+  ts.tv_sec = (time_t)s;
+  ts.tv_nsec = (long)((s - (double)ts.tv_sec) * 1e9);
+  return ts;
+}
+
+uint32_t shm_wait_write(shm_block *b, uint32_t last, double timeout_s) {
+  shm_header *h = shm_block_header(b);
+  double deadline = shm_now() + timeout_s;
+  __atomic_fetch_add(&h->waiters, 1u, __ATOMIC_ACQ_REL);
+  uint32_t now_w;
+  while ((now_w = __atomic_load_n(&h->writes, __ATOMIC_ACQUIRE)) == last) {
+    double left = deadline - shm_now();
+    if (left <= 0) break;
+    struct timespec ts = to_timespec(left);
+    futex(&h->writes, FUTEX_WAIT, last, &ts);
+  }
+  __atomic_fetch_sub(&h->waiters, 1u, __ATOMIC_ACQ_REL);
+  return now_w;
+}
+
+int shm_futex_wait(volatile uint32_t *addr, uint32_t val, double timeout_s) {
+  struct timespec ts = to_timespec(timeout_s);
+  long r = futex(addr, FUTEX_WAIT, val, isinf(timeout_s) ? NULL : &ts);
+  return r == 0 ? 0 : -errno;
+}
+
+int shm_futex_wake(volatile uint32_t *addr) {
+  return (int)futex(addr, FUTEX_WAKE, 0x7fffffff, NULL);
+}
+
+int shm_cas_i32(volatile int32_t *addr, int32_t expected, int32_t desired) {
+  return __atomic_compare_exchange_n(addr, &expected, desired, 0, __ATOMIC_ACQ_REL,
+                                     __ATOMIC_ACQUIRE);
+}
+
+uint32_t shm_fetch_add_u32(volatile uint32_t *addr, uint32_t delta) {
+  return __atomic_fetch_add(addr, delta, __ATOMIC_ACQ_REL);
+}
+
+void shm_store_release_u32(volatile uint32_t *addr, uint32_t val) {
+  __atomic_store_n(addr, val, __ATOMIC_RELEASE);
+}
+
+uint32_t shm_load_acquire_u32(const volatile uint32_t *addr) {
+  return __atomic_load_n(addr, __ATOMIC_ACQUIRE);
+}

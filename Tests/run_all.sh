@@ -1,0 +1,71 @@
+#!/usr/bin/env bash
+# Runs every test of the platform and ends with one line: "N passed, N failed".
+#   luacheck over all Lua; busted specs (Tests/**/*_spec.lua) under LuaJIT; every C/C++ test
+#   program in build/tests/; every script Tests/**/*_test.sh (integration scenarios).
+# Test programs print TAP ("ok N - name" / "not ok N - name"); a program that prints no TAP
+# counts as one test judged by its exit status. TESTS=regex runs only the matching ones.
+set -u
+cd "$(dirname "$0")/.."
+TOP=$(pwd)
+export HRP_ROOT="$TOP"
+export LUA_PATH="$TOP/Lib/?.lua;$TOP/Player/?.lua;$TOP/?.lua;;"
+export ROBOT_ID="${ROBOT_ID:-$((9000 + $$ % 500))}"   # keep tests away from a running robot
+FILTER="${TESTS:-.}"
+LOGDIR="$TOP/build/test-logs"
+mkdir -p "$LOGDIR"
+TIMEOUT="${TEST_TIMEOUT:-900}"
+
+passed=0; failed=0; failures=()
+
+# run NAME CMD... : runs one test program, counts its TAP lines (or its exit status).
+run() {
+  local name=$1; shift
+  echo "$name" | grep -Eq "$FILTER" || return 0
+  local log="$LOGDIR/$(echo "$name" | tr '/ ' '__').log"
+  local t0=$SECONDS
+  timeout --kill-after=10 "$TIMEOUT" "$@" >"$log" 2>&1
+  local rc=$?
+  local ok nok
+  ok=$(grep -cE '^ok [0-9]+' "$log")
+  nok=$(grep -cE '^not ok [0-9]+' "$log")
+  if [ "$ok" -eq 0 ] && [ "$nok" -eq 0 ]; then
+    if [ "$rc" -eq 0 ]; then ok=1; else nok=1; fi
+  elif [ "$rc" -ne 0 ] && [ "$nok" -eq 0 ]; then
+    nok=1   # crashed or timed out after its last TAP line
+  fi
+  passed=$((passed + ok)); failed=$((failed + nok))
+  if [ "$nok" -gt 0 ]; then
+    failures+=("$name")
+    printf '%-50s %4d ok %3d FAILED (%ds, exit %d) -- log: %s\n' "$name" "$ok" "$nok" $((SECONDS - t0)) "$rc" "$log"
+    grep -E '^not ok' "$log" | head -20 | sed 's/^/    /'
+    tail -n 25 "$log" | sed 's/^/    | /'
+  else
+    printf '%-50s %4d ok (%ds)\n' "$name" "$ok" $((SECONDS - t0))
+  fi
+}
+
+# 1. luacheck
+mapfile -t lua_files < <(find Lib Player Run Tests Config Platforms -name '*.lua' 2>/dev/null | sort)
+if [ "${#lua_files[@]}" -gt 0 ]; then
+  run luacheck luacheck --codes --no-color "${lua_files[@]}"
+fi
+
+# 2. busted specs, one run per folder so a crash is easy to place
+for dir in $(find Tests -name '*_spec.lua' -printf '%h\n' | sort -u); do
+  run "busted:$dir" luajit /usr/bin/busted --helper=Tests/helper.lua -o TAP --pattern=_spec "$dir"
+done
+
+# 3. C/C++ test programs
+for prog in $(find build/tests -maxdepth 1 -type f -executable 2>/dev/null | sort); do
+  run "ctest:$(basename "$prog")" "$prog"
+done
+
+# 4. integration scenarios
+for script in $(find Tests -name '*_test.sh' | sort); do
+  run "scenario:${script#Tests/}" bash "$script"
+done
+
+echo
+if [ "${#failures[@]}" -gt 0 ]; then echo "failed: ${failures[*]}"; fi
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]
