@@ -1,0 +1,196 @@
+-- The robot's body: joints by name or index, commands and sensors through shm, radians everywhere.
+--
+-- Joint names, order, groups and limits come from Config/<PLATFORM>/robot.lua. A command beyond
+-- a joint's limit is clamped (counted in body.stats.clamped); a NaN or infinite command is refused
+-- (counted in body.stats.refused) and never reaches dcm.actuator.
+local shm = require('shm')
+local Config = require('Config')
+
+local M = {}
+
+local robot = Config.load('robot', { joints = 'table', groups = 'table', limits = 'table', period = 'number' })
+local sensor = shm.open('dcm.sensor')
+local actuator = shm.open('dcm.actuator')
+local stats = shm.open('body.stats')
+
+local names = {}
+local index = {}
+local lo, hi = {}, {}
+for i, name in ipairs(robot.joints) do
+  names[i] = name
+  index[name] = i
+  local lim = rawget(robot.limits, name)
+  if type(lim) ~= 'table' or type(lim[1]) ~= 'number' or type(lim[2]) ~= 'number' or lim[1] > lim[2] then
+    error(string.format("Config/%s/robot.lua: key 'limits.%s' must be { min, max } in radians",
+      Config.platform(), name), 0)
+  end
+  lo[i], hi[i] = lim[1], lim[2]
+end
+local njoint = #names
+if njoint > actuator:count('command') then
+  error(string.format("Config/%s/robot.lua: %d joints but the shm schema has room for %d (const njoint)",
+    Config.platform(), njoint, actuator:count('command')), 0)
+end
+
+local groups = {}
+for gname, members in pairs(robot.groups) do
+  local idx = {}
+  for k, jname in ipairs(members) do
+    idx[k] = index[jname] or error(string.format(
+      "Config/%s/robot.lua: group '%s' names unknown joint '%s'", Config.platform(), gname, jname), 0)
+  end
+  groups[gname] = idx
+end
+
+local command, hardness, torque = actuator.command, actuator.hardness, actuator.torque_enable
+local position, velocity, load = sensor.position, sensor.velocity, sensor.load
+
+local function finite(x)
+  return type(x) == 'number' and x == x and x ~= math.huge and x ~= -math.huge
+end
+
+-- 1-based index of a joint given by name or index; errors on an unknown joint.
+function M.index(joint)
+  local i = type(joint) == 'number' and joint or index[joint]
+  if not i or i < 1 or i > njoint or i % 1 ~= 0 then error("Body: unknown joint '" .. tostring(joint) .. "'", 3) end
+  return i
+end
+local joint_index = M.index
+
+function M.joint_names()
+  local t = {}
+  for i = 1, njoint do t[i] = names[i] end
+  return t
+end
+function M.njoint() return njoint end
+function M.limits(joint) local i = joint_index(joint) return lo[i], hi[i] end
+function M.group(name)
+  local g = groups[name] or error("Body: unknown joint group '" .. tostring(name) .. "'", 2)
+  local t = {}
+  for k, i in ipairs(g) do t[k] = names[i] end
+  return t
+end
+
+-- Stores a checked command; returns false if refused.
+local function put_command(i, rad)
+  if not finite(rad) then
+    stats.refused[0] = stats.refused[0] + 1
+    return false
+  end
+  if rad < lo[i] then rad = lo[i]; stats.clamped[0] = stats.clamped[0] + 1
+  elseif rad > hi[i] then rad = hi[i]; stats.clamped[0] = stats.clamped[0] + 1 end
+  command[i - 1] = rad
+  return true
+end
+
+function M.set_command(joint, rad) return put_command(joint_index(joint), rad) end
+function M.get_command(joint) return command[joint_index(joint) - 1] end
+function M.get_position(joint) return position[joint_index(joint) - 1] end
+function M.get_velocity(joint) return velocity[joint_index(joint) - 1] end
+function M.get_load(joint) return load[joint_index(joint) - 1] end
+
+-- Hardness 0..1 (fraction of the servo's torque limit); NaN refused, out of range clamped.
+function M.set_hardness(joint, h)
+  local i = joint_index(joint)
+  if not finite(h) then stats.refused[0] = stats.refused[0] + 1 return false end
+  hardness[i - 1] = math.max(0, math.min(1, h))
+  return true
+end
+function M.get_hardness(joint) return hardness[joint_index(joint) - 1] end
+function M.set_torque_enable(joint, on) torque[joint_index(joint) - 1] = on and 1 or 0 end
+
+-- All joints at once: tables in joint order (1-based).
+function M.set_commands(t)
+  local ok = true
+  for i = 1, njoint do if t[i] ~= nil then ok = put_command(i, t[i]) and ok end end
+  return ok
+end
+function M.get_commands() local t = {} for i = 1, njoint do t[i] = command[i - 1] end return t end
+function M.get_positions() local t = {} for i = 1, njoint do t[i] = position[i - 1] end return t end
+function M.set_all_hardness(h) for i = 1, njoint do M.set_hardness(i, h) end end
+function M.set_all_torque_enable(on) for i = 1, njoint do torque[i - 1] = on and 1 or 0 end end
+
+local function group_setter(gname)
+  local g = groups[gname]
+  return function(values)
+    if not g then error("Body: this robot has no joint group '" .. gname .. "'", 2) end
+    local ok = true
+    for k, i in ipairs(g) do
+      if values[k] ~= nil then ok = put_command(i, values[k]) and ok end
+    end
+    return ok
+  end
+end
+local function group_getter(gname, array)
+  local g = groups[gname]
+  return function()
+    if not g then error("Body: this robot has no joint group '" .. gname .. "'", 2) end
+    local t = {}
+    for k, i in ipairs(g) do t[k] = array[i - 1] end
+    return t
+  end
+end
+local function group_hardness(gname)
+  return function(h)
+    local g = groups[gname] or error("Body: this robot has no joint group '" .. gname .. "'", 2)
+    for _, i in ipairs(g) do M.set_hardness(i, h) end
+  end
+end
+
+M.set_head_command = group_setter('head')
+M.set_larm_command = group_setter('larm')
+M.set_rarm_command = group_setter('rarm')
+M.set_lleg_command = group_setter('lleg')
+M.set_rleg_command = group_setter('rleg')
+M.get_head_command = group_getter('head', command)
+M.get_larm_command = group_getter('larm', command)
+M.get_rarm_command = group_getter('rarm', command)
+M.get_lleg_command = group_getter('lleg', command)
+M.get_rleg_command = group_getter('rleg', command)
+M.get_head_position = group_getter('head', position)
+M.get_larm_position = group_getter('larm', position)
+M.get_rarm_position = group_getter('rarm', position)
+M.get_lleg_position = group_getter('lleg', position)
+M.get_rleg_position = group_getter('rleg', position)
+M.set_head_hardness = group_hardness('head')
+M.set_larm_hardness = group_hardness('larm')
+M.set_rarm_hardness = group_hardness('rarm')
+M.set_lleg_hardness = group_hardness('lleg')
+M.set_rleg_hardness = group_hardness('rleg')
+
+-- Sensors.
+local function vec3(p) return { p[0], p[1], p[2] } end
+function M.get_gyro() return vec3(sensor.gyro) end                   -- rad/s, torso frame
+function M.get_accelerometer() return vec3(sensor.accelerometer) end -- m/s^2, with gravity
+function M.get_angle() return vec3(sensor.angle) end                 -- roll, pitch, yaw (rad)
+function M.get_foot_force() return { sensor.foot_force[0], sensor.foot_force[1] } end
+function M.get_button(k) return sensor.button[(k or 1) - 1] end
+function M.get_battery() return sensor.battery[0] end
+-- The robot's clock (simulated time under the sim): the only clock robot code uses.
+function M.get_time() return sensor.time[0] end
+function M.get_tick() return sensor.tick[0] end
+function M.period() return robot.period end
+
+-- Consistent snapshot of time and tick.
+function M.get_time_tick()
+  return sensor:read(function(s) return s.time[0], s.tick[0] end)
+end
+
+-- Waits until the DCM has published a tick other than `last_tick`; returns the new tick, or nil
+-- after `timeout` seconds of wall time with no DCM progress.
+function M.wait_tick(last_tick, timeout)
+  local deadline = shm.C.shm_now() + (timeout or 1.0)
+  local last_writes = 0
+  while true do
+    local t = sensor.tick[0]
+    if t ~= last_tick then return t end
+    local left = deadline - shm.C.shm_now()
+    if left <= 0 then return nil end
+    last_writes = sensor:wait_write(last_writes, math.min(left, 0.05))
+  end
+end
+
+-- Blocks and statistics, for tools and tests.
+M.sensor, M.actuator, M.stats = sensor, actuator, stats
+
+return M

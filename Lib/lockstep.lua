@@ -1,0 +1,70 @@
+-- Lockstep participation: lets a process hold the simulated clock until it has done its work.
+--
+-- Protocol (block `sync`, the DCM side is in Platforms/Sim): a participant claims a slot with its
+-- pid. The DCM publishes dcm.sensor for tick N, sets sync.tick = N, and then waits until every
+-- live participant whose wake_tick <= N reports done_tick >= N; only then does it read
+-- dcm.actuator and step. A participant that needs every tick (motion) sets wake_tick = N + 1
+-- after each tick; one that needs few (a script in wait(), vision between frames) sets it further
+-- ahead. When the DCM is not in lockstep mode, all of this is harmless and nobody waits.
+local ffi = require('ffi')
+local shm = require('shm')
+
+ffi.cdef [[ int getpid(void); ]]
+
+local M = {}
+local C = shm.C
+
+local Participant = {}
+Participant.__index = Participant
+
+-- Claims a slot; errors if all are taken by live processes.
+function M.join()
+  local sync = shm.open('sync')
+  local pid = ffi.C.getpid()
+  local n = sync:count('pid')
+  local pids = ffi.cast('volatile int32_t *', sync.pid)
+  for pass = 1, 2 do
+    for i = 0, n - 1 do
+      local p = pids[i]
+      if p == pid then return M._setup(sync, i) end
+      if p == 0 or (pass == 2 and C.shm_pid_alive(p) == 0) then
+        -- mark as not needing the current tick before claiming, so the DCM never waits on a half-set slot
+        sync.wake_tick[i] = 0xffffffff
+        if C.shm_cas_i32(pids + i, p, pid) == 1 then return M._setup(sync, i) end
+      end
+    end
+  end
+  error('lockstep: all ' .. n .. ' participant slots are taken', 2)
+end
+
+function M._setup(sync, slot)
+  local tick = sync.tick[0]
+  sync.done_tick[slot] = tick
+  sync.wake_tick[slot] = tick + 1
+  return setmetatable({ sync = sync, slot = slot }, Participant)
+end
+
+-- True while the DCM runs in lockstep mode.
+function M.active()
+  return shm.open('sync').lockstep[0] == 1
+end
+
+-- Reports tick `tick` done and asks to be consulted again at `wake_tick` (default tick + 1).
+function Participant:done(tick, wake_tick)
+  local s, i = self.sync, self.slot
+  s.wake_tick[i] = wake_tick or (tick + 1)
+  s.done_tick[i] = tick
+  C.shm_fetch_add_u32(s.done_count, 1)
+  C.shm_futex_wake(s.done_count)
+end
+
+-- Gives the slot back (the DCM stops waiting for this process).
+function Participant:leave()
+  local s, i = self.sync, self.slot
+  s.wake_tick[i] = 0xffffffff
+  C.shm_cas_i32(ffi.cast('volatile int32_t *', s.pid) + i, ffi.C.getpid(), 0)
+  C.shm_fetch_add_u32(s.done_count, 1)
+  C.shm_futex_wake(s.done_count)
+end
+
+return M
