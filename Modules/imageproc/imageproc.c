@@ -1,0 +1,355 @@
+/* imageproc: lookup-table labelling, block OR, connected regions, colour statistics. */
+#include "imageproc/imageproc.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+static void set_err(char *err, size_t errlen, const char *fmt, ...) {
+  if (!err || errlen == 0) return;
+  va_list ap;
+  va_start(ap, fmt);
+  vsnprintf(err, errlen, fmt, ap);
+  va_end(ap);
+}
+
+/* ---------------------------------------------------------------- LUT files */
+
+#define LUT_HEADER 16
+
+uint32_t img_crc32(const uint8_t *data, size_t n) {
+  static uint32_t table[256];
+  static int ready = 0;
+  if (!ready) {   /* idempotent: racing threads compute the same values */
+    for (uint32_t i = 0; i < 256; i++) {
+      uint32_t c = i;
+      for (int k = 0; k < 8; k++) c = (c & 1) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
+      table[i] = c;
+    }
+    ready = 1;
+  }
+  uint32_t c = 0xFFFFFFFFu;
+  for (size_t i = 0; i < n; i++) c = table[(c ^ data[i]) & 0xFF] ^ (c >> 8);
+  return c ^ 0xFFFFFFFFu;
+}
+
+static uint32_t rd32(const uint8_t *p) {
+  return (uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 | (uint32_t)p[3] << 24;
+}
+static void wr32(uint8_t *p, uint32_t v) {
+  p[0] = (uint8_t)v; p[1] = (uint8_t)(v >> 8); p[2] = (uint8_t)(v >> 16); p[3] = (uint8_t)(v >> 24);
+}
+
+int img_lut_load(const char *path, uint8_t *lut, char *err, size_t errlen) {
+  if (!path || !lut) { set_err(err, errlen, "img_lut_load: NULL argument"); return IMG_EARG; }
+  FILE *f = fopen(path, "rb");
+  if (!f) { set_err(err, errlen, "LUT '%s': cannot open: %s", path, strerror(errno)); return IMG_EIO; }
+  uint8_t header[LUT_HEADER];
+  size_t n = fread(header, 1, LUT_HEADER, f);
+  if (n != LUT_HEADER || memcmp(header, IMG_LUT_MAGIC, 8) != 0) {
+    fclose(f);
+    set_err(err, errlen, "LUT '%s': not a lookup table (bad magic; expected \"%s\" header)", path,
+            IMG_LUT_MAGIC);
+    return IMG_EFORMAT;
+  }
+  uint32_t count = rd32(header + 8), crc = rd32(header + 12);
+  if (count != IMG_LUT_SIZE) {
+    fclose(f);
+    set_err(err, errlen, "LUT '%s': has %u entries, expected %d", path, count, IMG_LUT_SIZE);
+    return IMG_EFORMAT;
+  }
+  n = fread(lut, 1, IMG_LUT_SIZE, f);
+  int extra = fgetc(f);
+  int rerr = ferror(f);
+  fclose(f);
+  if (rerr) { set_err(err, errlen, "LUT '%s': read error", path); return IMG_EIO; }
+  if (n != IMG_LUT_SIZE || extra != EOF) {
+    set_err(err, errlen, "LUT '%s': wrong size (%s; expected %d bytes)", path,
+            n != IMG_LUT_SIZE ? "truncated" : "trailing data", LUT_HEADER + IMG_LUT_SIZE);
+    return IMG_EFORMAT;
+  }
+  uint32_t got = img_crc32(lut, IMG_LUT_SIZE);
+  if (got != crc) {
+    set_err(err, errlen, "LUT '%s': corrupt (checksum %08x, header says %08x)", path, got, crc);
+    return IMG_EFORMAT;
+  }
+  return 0;
+}
+
+int img_lut_save(const char *path, const uint8_t *lut, char *err, size_t errlen) {
+  if (!path || !lut) { set_err(err, errlen, "img_lut_save: NULL argument"); return IMG_EARG; }
+  char tmp[4096];
+  snprintf(tmp, sizeof tmp, "%s.tmp.%d", path, (int)getpid());
+  FILE *f = fopen(tmp, "wb");
+  if (!f) { set_err(err, errlen, "LUT '%s': cannot write: %s", path, strerror(errno)); return IMG_EIO; }
+  uint8_t header[LUT_HEADER];
+  memcpy(header, IMG_LUT_MAGIC, 8);
+  wr32(header + 8, IMG_LUT_SIZE);
+  wr32(header + 12, img_crc32(lut, IMG_LUT_SIZE));
+  int ok = fwrite(header, 1, LUT_HEADER, f) == LUT_HEADER &&
+           fwrite(lut, 1, IMG_LUT_SIZE, f) == IMG_LUT_SIZE;
+  ok = (fclose(f) == 0) && ok;
+  if (!ok || rename(tmp, path) != 0) {
+    set_err(err, errlen, "LUT '%s': write failed: %s", path, strerror(errno));
+    unlink(tmp);
+    return IMG_EIO;
+  }
+  return 0;
+}
+
+int img_lut_add_ranges(uint8_t *lut, const img_color_range *ranges, int nranges) {
+  if (!lut || (nranges > 0 && !ranges) || nranges < 0) return IMG_EARG;
+  for (int r = 0; r < nranges; r++) {
+    const img_color_range *c = &ranges[r];
+    if (c->ymin > c->ymax || c->umin > c->umax || c->vmin > c->vmax) return IMG_EARG;
+    /* cell k covers values [4k, 4k+3]: it overlaps [lo, hi] for k in [lo/4, hi/4] */
+    for (int y = c->ymin >> 2; y <= c->ymax >> 2; y++)
+      for (int u = c->umin >> 2; u <= c->umax >> 2; u++)
+        for (int v = c->vmin >> 2; v <= c->vmax >> 2; v++)
+          lut[(y << 12) | (u << 6) | v] |= c->bit;
+  }
+  return 0;
+}
+
+/* ---------------------------------------------------------------- labelling */
+
+int img_label_yuyv(const uint8_t *yuyv, int width, int height, const uint8_t *lut, int scale,
+                   uint8_t *labels) {
+  if (!yuyv || !lut || !labels || width <= 0 || height <= 0 || (width & 1) || scale < 2 ||
+      (scale & 1))
+    return IMG_EARG;
+  const int wo = width / scale, ho = height / scale;
+  const size_t stride = (size_t)width * 2;
+  const int step = 2 * scale;   /* bytes between consecutive output pixels */
+  for (int j = 0; j < ho; j++) {
+    const uint8_t *p = yuyv + (size_t)j * scale * stride;
+    uint8_t *out = labels + (size_t)j * wo;
+    for (int i = 0; i < wo; i++, p += step) {
+      out[i] = lut[((uint32_t)(p[0] >> 2) << 12) | ((uint32_t)(p[1] >> 2) << 6) | (p[3] >> 2)];
+    }
+  }
+  return 0;
+}
+
+int img_block_or(const uint8_t *labels, int w, int h, int bs, uint8_t *out) {
+  if (!labels || !out || w <= 0 || h <= 0 || bs <= 0) return IMG_EARG;
+  const int wo = (w + bs - 1) / bs, ho = (h + bs - 1) / bs;
+  for (int jb = 0; jb < ho; jb++) {
+    uint8_t *o = out + (size_t)jb * wo;
+    memset(o, 0, (size_t)wo);
+    int y1 = (jb + 1) * bs < h ? (jb + 1) * bs : h;
+    for (int y = jb * bs; y < y1; y++) {
+      const uint8_t *row = labels + (size_t)y * w;
+      int x = 0;
+      for (int ib = 0; ib < wo; ib++) {
+        int x1 = x + bs < w ? x + bs : w;
+        uint8_t acc = o[ib];
+        for (; x < x1; x++) acc |= row[x];
+        o[ib] = acc;
+      }
+    }
+  }
+  return 0;
+}
+
+int img_count(const uint8_t *labels, int w, int h, uint8_t mask) {
+  if (!labels || w <= 0 || h <= 0) return IMG_EARG;
+  int n = 0;
+  size_t total = (size_t)w * h;
+  for (size_t i = 0; i < total; i++) n += (labels[i] & mask) != 0;
+  return n;
+}
+
+/* ---------------------------------------------------------------- moments */
+
+typedef struct acc {
+  int64_t area, sx, sy, sxx, syy, sxy;
+  int32_t xmin, xmax, ymin, ymax;
+} acc;
+
+static void acc_init(acc *a) {
+  memset(a, 0, sizeof *a);
+  a->xmin = a->ymin = INT32_MAX;
+  a->xmax = a->ymax = -1;
+}
+
+/* Adds the horizontal run x0..x1 (inclusive) on row y. */
+static inline void acc_run(acc *a, int64_t x0, int64_t x1, int64_t y) {
+  int64_t n = x1 - x0 + 1;
+  int64_t sx = (x0 + x1) * n / 2;
+  /* sum of x^2 for x in [x0, x1] = S(x1) - S(x0 - 1), S(k) = k(k+1)(2k+1)/6 */
+  int64_t s1 = x1 * (x1 + 1) * (2 * x1 + 1) / 6, s0 = (x0 - 1) * x0 * (2 * x0 - 1) / 6;
+  a->area += n;
+  a->sx += sx;
+  a->sy += n * y;
+  a->sxx += s1 - s0;
+  a->syy += n * y * y;
+  a->sxy += sx * y;
+  if (x0 < a->xmin) a->xmin = (int32_t)x0;
+  if (x1 > a->xmax) a->xmax = (int32_t)x1;
+  if (y < a->ymin) a->ymin = (int32_t)y;
+  if (y > a->ymax) a->ymax = (int32_t)y;
+}
+
+static void acc_finish(const acc *a, img_region *r) {
+  memset(r, 0, sizeof *r);
+  r->area = (int32_t)a->area;
+  if (a->area == 0) return;
+  r->xmin = a->xmin; r->xmax = a->xmax; r->ymin = a->ymin; r->ymax = a->ymax;
+  double n = (double)a->area;
+  r->cx = (double)a->sx / n;
+  r->cy = (double)a->sy / n;
+  r->cxx = (double)a->sxx / n - r->cx * r->cx + 1.0 / 12;   /* + pixel's own extent */
+  r->cyy = (double)a->syy / n - r->cy * r->cy + 1.0 / 12;
+  r->cxy = (double)a->sxy / n - r->cx * r->cy;
+  double m = 0.5 * (r->cxx + r->cyy);
+  double d = sqrt(0.25 * (r->cxx - r->cyy) * (r->cxx - r->cyy) + r->cxy * r->cxy);
+  double l1 = m + d, l2 = m - d;
+  r->axis_major = 4.0 * sqrt(l1 > 0 ? l1 : 0);
+  r->axis_minor = 4.0 * sqrt(l2 > 0 ? l2 : 0);
+  r->orientation = 0.5 * atan2(2.0 * r->cxy, r->cxx - r->cyy);
+}
+
+int img_color_stats(const uint8_t *labels, int w, int h, uint8_t mask,
+                    int x0, int x1, int y0, int y1, img_region *out) {
+  if (!labels || !out || w <= 0 || h <= 0) return IMG_EARG;
+  if (x0 < 0) x0 = 0;
+  if (y0 < 0) y0 = 0;
+  if (x1 > w - 1) x1 = w - 1;
+  if (y1 > h - 1) y1 = h - 1;
+  acc a;
+  acc_init(&a);
+  for (int y = y0; y <= y1; y++) {
+    const uint8_t *row = labels + (size_t)y * w;
+    int x = x0;
+    while (x <= x1) {
+      while (x <= x1 && !(row[x] & mask)) x++;
+      if (x > x1) break;
+      int s = x;
+      while (x <= x1 && (row[x] & mask)) x++;
+      acc_run(&a, s, x - 1, y);
+    }
+  }
+  acc_finish(&a, out);
+  return 0;
+}
+
+/* ---------------------------------------------------------------- connected regions */
+
+typedef struct run {
+  int16_t x0, x1;
+  int32_t y;
+} run;
+
+struct img_cc {
+  int max_w, max_h;
+  size_t max_runs;
+  run *runs;
+  int32_t *parent;   /* union-find over runs */
+  int32_t *regid;    /* compact region id of each run */
+  acc *accs;         /* per region */
+};
+
+img_cc *img_cc_new(int max_w, int max_h) {
+  if (max_w <= 0 || max_h <= 0 || max_w > 32767) return NULL;
+  img_cc *cc = calloc(1, sizeof *cc);
+  if (!cc) return NULL;
+  cc->max_w = max_w;
+  cc->max_h = max_h;
+  cc->max_runs = (size_t)(max_w / 2 + 1) * max_h;
+  cc->runs = malloc(cc->max_runs * sizeof *cc->runs);
+  cc->parent = malloc(cc->max_runs * sizeof *cc->parent);
+  cc->regid = malloc(cc->max_runs * sizeof *cc->regid);
+  cc->accs = malloc(cc->max_runs * sizeof *cc->accs);
+  if (!cc->runs || !cc->parent || !cc->regid || !cc->accs) { img_cc_free(cc); return NULL; }
+  return cc;
+}
+
+void img_cc_free(img_cc *cc) {
+  if (!cc) return;
+  free(cc->runs);
+  free(cc->parent);
+  free(cc->regid);
+  free(cc->accs);
+  free(cc);
+}
+
+static inline int32_t uf_find(int32_t *parent, int32_t i) {
+  while (parent[i] != i) {
+    parent[i] = parent[parent[i]];
+    i = parent[i];
+  }
+  return i;
+}
+
+static inline void uf_union(int32_t *parent, int32_t a, int32_t b) {
+  a = uf_find(parent, a);
+  b = uf_find(parent, b);
+  if (a < b) parent[b] = a;
+  else if (b < a) parent[a] = b;
+}
+
+int img_regions(img_cc *cc, const uint8_t *labels, int w, int h, uint8_t mask,
+                img_region *out, int maxn) {
+  if (!cc || !labels || w <= 0 || h <= 0 || w > cc->max_w || h > cc->max_h || maxn < 0 ||
+      (maxn > 0 && !out))
+    return IMG_EARG;
+  run *runs = cc->runs;
+  int32_t *parent = cc->parent;
+  int32_t nruns = 0, prev_start = 0, prev_end = 0;
+  for (int y = 0; y < h; y++) {
+    const uint8_t *row = labels + (size_t)y * w;
+    int32_t cur_start = nruns;
+    int x = 0;
+    while (x < w) {
+      while (x < w && !(row[x] & mask)) x++;
+      if (x >= w) break;
+      int s = x;
+      while (x < w && (row[x] & mask)) x++;
+      runs[nruns].x0 = (int16_t)s;
+      runs[nruns].x1 = (int16_t)(x - 1);
+      runs[nruns].y = y;
+      parent[nruns] = nruns;
+      nruns++;
+    }
+    /* join with the previous row's runs that touch (8-connectivity) */
+    int32_t j = prev_start;
+    for (int32_t i = cur_start; i < nruns; i++) {
+      while (j < prev_end && runs[j].x1 + 1 < runs[i].x0) j++;
+      for (int32_t k = j; k < prev_end && runs[k].x0 <= runs[i].x1 + 1; k++) uf_union(parent, i, k);
+    }
+    prev_start = cur_start;
+    prev_end = nruns;
+  }
+  /* compact region ids: a root has the smallest index of its set, so it comes first */
+  int32_t nreg = 0;
+  acc *accs = cc->accs;
+  int32_t *regid = cc->regid;
+  for (int32_t i = 0; i < nruns; i++) {
+    int32_t r = uf_find(parent, i);
+    if (r == i) {
+      regid[i] = nreg;
+      acc_init(&accs[nreg++]);
+    } else {
+      regid[i] = regid[r];
+    }
+    acc_run(&accs[regid[i]], runs[i].x0, runs[i].x1, runs[i].y);
+  }
+  /* pick the largest maxn */
+  int nout = 0;
+  for (int32_t g = 0; g < nreg; g++) {
+    int64_t area = accs[g].area;
+    if (nout == maxn && (maxn == 0 || area <= out[nout - 1].area)) continue;
+    int pos = nout < maxn ? nout++ : maxn - 1;
+    while (pos > 0 && out[pos - 1].area < area) {
+      out[pos] = out[pos - 1];
+      pos--;
+    }
+    acc_finish(&accs[g], &out[pos]);
+  }
+  return nreg;
+}
