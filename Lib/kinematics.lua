@@ -13,11 +13,13 @@
 --   local cam = model:head_fk(q2, out)             -- { x, y, z, R = {9} } camera in the torso frame
 --   local q2, flags = model:look_at({ x, y, z }, out)      -- head angles pointing the camera there
 --   local c = model:com(q, out)                    -- { x, y, z } whole-body COM, torso frame
---   local cam = model:camera_pose(q, { roll, pitch, yaw }, out)  -- { x, y, z, R = {9}, height }
+--   local cam = model:camera_pose(q, { roll, pitch }, out)  -- { x, y, z, R = {9}, height }
 --
 -- Units and frames: metres, radians. Torso frame: x forward, y left, z up, origin `kinematics.origin`
--- (between the hip joints for the OP3 and the DARwIn-OP). A foot pose is the pose of the foot
--- frame (origin at the sole point below the ankle, axes parallel to the torso's at the zero pose)
+-- (OP3 and DARwIn-OP: between the hip yaw axes at the hip yaw joints' height; for the OP3 the
+-- origin of body_link in Config/Sim/op3.urdf). `model.origin` gives it in the zero-pose frame.
+-- A foot pose is the pose of the foot frame (origin at the sole point below the ankle, axes
+-- parallel to the torso's at the zero pose)
 -- in the torso frame, as x y z roll pitch yaw with R = Rz(yaw) Ry(pitch) Rx(roll).
 -- camera_pose is in the level frame: torso origin, torso roll and pitch removed (yaw ignored);
 -- `height` is the camera's height above the lower sole. Camera frame: x = optical axis, z = image up.
@@ -187,13 +189,19 @@ function M.new(robot, kt)
   return m
 end
 
--- The model of a platform (default $PLATFORM or Sim): Config/<platform>/robot.lua, with its
--- `kinematics` entry or else Config/<platform>/kinematics.lua.
+-- The model of a platform (default $PLATFORM or Sim): Config/<platform>/robot.lua with its
+-- `kinematics` entry, or else Config/<platform>/kinematics.lua (whose `joints_order` stands in
+-- when the platform has no robot.lua yet).
 function M.load(platform)
   local Config = require('Config')
-  local robot = Config.load('robot', nil, platform)
-  local kt = rawget(robot, 'kinematics')
+  local okr, robot = pcall(Config.load, 'robot', nil, platform)
+  local kt = okr and rawget(robot, 'kinematics') or nil
   if kt == nil then kt = Config.load('kinematics', nil, platform) end
+  if not okr then
+    local order = rawget(kt, 'joints_order')
+    if order == nil then error(robot, 2) end
+    robot = { joints = order }
+  end
   local m, err = M.new(robot, kt)
   if not m then error(err, 2) end
   return m

@@ -35,9 +35,10 @@ return {
   -- kinematic and mass model (Lib/kinematics.lua), numbers from shared/robots/op3_reference.txt:
   -- per joint, in the reference frame at the zero pose (soles on z=0, x forward, y left, z up):
   -- parent joint (nil = torso), axis, anchor (a point on the axis), mass (kg) and centre of mass of
-  -- the link the joint moves. The torso frame's origin sits between the hip joints (`origin`).
+  -- the link the joint moves. Torso-frame origin (`origin`): between the hip yaw axes at their
+  -- anchor height, the origin of body_link in Config/Sim/op3.urdf.
   kinematics = {
-    origin = { 0, 0, 0.25065 },
+    origin = { 0, 0, 0.27915 },
     torso = { mass = 1.34928, com = { -0.01501, 0.00013, 0.34497 } },
     joints = {
       head_pan = { axis = { 0, 0, 1 }, anchor = { -0.001, 0, 0.41565 },

@@ -226,10 +226,11 @@ int leg_solve(const Leg &L, const Matrix3d &R, const Vector3d &F, double a, doub
   double sd = std::sin(d), cd = std::cos(d);
   double wx = L.tx + L.sx * cd + L.sz * sd;
   double wz = L.tz - L.sx * sd + L.sz * cd;
-  // u = Rx(-f) Ry(-g) w, with Ry(-g) w = (u.x, 0, -sqrt(u.y^2 + u.z^2))
-  double f = std::atan2(-u.y(), -u.z());
-  if (u.y() * u.y() + u.z() * u.z() < 1e-24) f = 0.0;
-  double wpz = -std::sqrt(u.y() * u.y() + u.z() * u.z());
+  // u = Rx(-f) Ry(-g) w with Ry(-g) w = (u.x, 0, w'z): u.y = w'z sin f, u.z = w'z cos f. Take the
+  // ankle roll branch |f| <= pi/2 (w'z of the sign of u.z; usually negative: hip above ankle).
+  double yz = std::sqrt(u.y() * u.y() + u.z() * u.z());
+  double wpz = u.z() > 0 ? yz : -yz;
+  double f = yz < 1e-12 ? 0.0 : std::atan2(u.y() / wpz, u.z() / wpz);
   double g = std::atan2(wx, wz) - std::atan2(u.x(), wpz);  // Ry adds its angle to atan2(x, z)
   g = std::remainder(g, 2.0 * M_PI);
   double e = g - d;
