@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# Runs every benchmark and prints its figures (never fails on time). `make bench`.
+# One benchmark per line below; BENCH=regex runs a subset.
+set -u
+cd "$(dirname "$0")/.."
+source Run/env.sh
+export ROBOT_ID="${ROBOT_ID_BENCH:-$((8000 + $$ % 500))}"
+FILTER="${BENCH:-.}"
+bench() {
+  local name=$1; shift
+  echo "$name" | grep -Eq "$FILTER" || return 0
+  echo "== $name"
+  "$@" || echo "(benchmark $name exited with status $?)"
+  echo
+}
+bench shm_latency luajit Tests/bench/shm_latency.lua 100000
+bench kin_leg_ik luajit Tests/bench/kin_leg_ik.lua 100000
+bench vision_pipeline build/bin/img_bench 2
