@@ -37,6 +37,7 @@ PY=python3
 py_missing=()
 $PY -c 'import numpy' 2>/dev/null || py_missing+=(numpy)
 $PY -c 'import dynamixel_sdk' 2>/dev/null || py_missing+=(dynamixel-sdk==4.1.0)
+$PY -c 'import matplotlib' 2>/dev/null || py_missing+=(matplotlib)   # walk plots (Tests/motion)
 if [ "${#py_missing[@]}" -gt 0 ]; then
   echo "deps: installing Python packages for $($PY -c 'import sys; print(sys.executable)'): ${py_missing[*]}"
   $PY -m pip install -q "${py_missing[@]}" 2>/dev/null \

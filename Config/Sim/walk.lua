@@ -1,0 +1,52 @@
+-- Walk parameters of the simulated OP3 (Player/Motion/walk.lua). Units: m, s, rad.
+-- Changeable while the robot walks: Walk.set('name', value) from the REPL (one key, checked), or
+-- edit this file and call Walk.reload(); the motion process applies either at its next tick.
+return {
+  -- timing
+  tStep = 0.25,              -- s, one step
+  tZmp = 0.165,              -- s, sqrt(COM height / g) of the linear inverted pendulum
+  phSingle = { 0.1, 0.9 },   -- phase of the step where single support begins and ends
+  -- posture
+  bodyHeight = 0.25,         -- m, torso origin (hip yaw anchors, Config/Sim/robot.lua) above the ground
+  bodyTilt = 0.08,           -- rad, torso pitch (forward positive)
+  footX = 0.0,               -- m, trim of the torso origin behind the planned COM
+  footY = 0.035,             -- m, half the lateral spacing of the feet (ankle points)
+  supportX = 0.0,            -- m, ZMP in single support, ahead of the ankle
+  supportY = 0.0,            -- m, ZMP in single support, outward from the ankle
+  stepHeight = 0.035,        -- m, swing foot lift
+  -- velocity: limits and acceleration (per second)
+  velLimitX = { -0.15, 0.40 },
+  velLimitY = { -0.15, 0.15 },
+  velLimitA = { -1.2, 1.2 },
+  accLimit = { 0.4, 0.4, 2.0 },
+  -- steps: swing foot relative to the support foot (y, a measured outward)
+  stepLimitX = { -0.06, 0.11 },
+  stepLimitY = { 0.06, 0.15 },
+  stepLimitA = { -0.05, 0.6 },
+  -- arms: shoulder pitch, shoulder roll, elbow (joint angles of this robot)
+  qLArm = { 0.0, -0.25, 0.0 },
+  qRArm = { 0.0, 0.25, 0.0 },
+  armSwing = 0.0,            -- rad of arm pitch per m of foot lead
+  hipRollCompensation = 0.0, -- rad, support hip roll added in single support
+  -- feedback: rotations about the torso's x (roll) and y (pitch) axes, restoring when positive
+  feedback = {
+    gyroTimeConstant = 0.02,    -- s, low-pass on the gyro
+    gyroDeadband = { 0.0, 0.0 },-- rad/s
+    ankle = { 0.0, 0.0 },       -- rad per rad/s: { roll, pitch }
+    knee = 0.0,                 -- pitch
+    hip = { 0.0, 0.0 },         -- { roll, pitch }
+    arm = { 0.0, 0.0 },         -- { roll, pitch }
+    torso = { 0.0, 0.0 },       -- rad per rad of torso angle error (proprioception): { roll, pitch }
+    torsoTimeConstant = 0.05,   -- s
+    maxCorrection = 0.3,        -- rad, per joint
+  },
+  -- stance and transitions
+  tStance = 1.0,             -- s, to move into the stance from the current pose
+  hardnessLegs = 1.0,
+  hardnessArms = 0.5,
+  hardnessHead = 0.5,
+  -- fall detection (torso roll/pitch from the IMU)
+  fallAngle = 0.6,           -- rad
+  fallRate = 2.5,            -- rad/s together with fallAngleRate
+  fallAngleRate = 0.35,      -- rad
+}

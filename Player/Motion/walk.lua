@@ -1,0 +1,452 @@
+-- Omnidirectional ZMP walk: velocity command (vx, vy, va) -> foot and torso trajectories -> joint angles.
+--
+-- Step by step, no preview window. At the start of every step the swing foot's landing pose is
+-- chosen from the (rate-limited) velocity, the ZMP is laid out as three linear pieces (double
+-- support: from the COM's start to the support foot; single support: on the support foot; double
+-- support: to the COM's end point midway between the feet) and the linear inverted pendulum is
+-- solved analytically for it along x and y (Player/Motion/lipm.lua). During the step the swing foot
+-- follows a quintic in the ground plane and a smooth lift. The torso origin is placed so that the
+-- whole-body centre of mass (from the mass model) follows the planned COM; leg IK gives the angles.
+-- Feedback (all gains in the config): torso rate (gyro) on ankles, knees, hips and arms; torso
+-- angle estimated from the support leg's measured joint angles (proprioception) on the hips.
+--
+-- Frames: poses u = {x, y, a} in the walk's ground frame (odometry: starts at 0 where the walk
+-- was created). Feet are the foot frames of Lib/kinematics (sole point below the ankle).
+-- Every parameter is read from the params table at each step/tick, so a change lands while walking.
+local lipm = require('Motion.lipm')
+
+local sin, cos, atan2, asin, sqrt = math.sin, math.cos, math.atan2, math.asin, math.sqrt
+local abs, pi = math.abs, math.pi
+
+local M = {}
+local Walk = {}
+Walk.__index = Walk
+
+local LEFT, RIGHT = 0, 1
+M.LEFT, M.RIGHT = LEFT, RIGHT
+
+local function clamp(x, lo, hi) if x < lo then return lo elseif x > hi then return hi end return x end
+local function wrap(a) return (a + pi) % (2 * pi) - pi end
+M.wrap = wrap
+
+-- u (+) d: d given in u's frame.
+local function pose_global(d, u)
+  local c, s = cos(u[3]), sin(u[3])
+  return { u[1] + c * d[1] - s * d[2], u[2] + s * d[1] + c * d[2], wrap(u[3] + d[3]) }
+end
+-- u expressed in the frame of u0.
+local function pose_relative(u, u0)
+  local c, s = cos(u0[3]), sin(u0[3])
+  local dx, dy = u[1] - u0[1], u[2] - u0[2]
+  return { c * dx + s * dy, -s * dx + c * dy, wrap(u[3] - u0[3]) }
+end
+local function interp(t, u1, u2)
+  return { u1[1] + t * (u2[1] - u1[1]), u1[2] + t * (u2[2] - u1[2]), wrap(u1[3] + t * wrap(u2[3] - u1[3])) }
+end
+M.pose_global, M.pose_relative, M.interp = pose_global, pose_relative, interp
+
+-- quintic 0..1 with zero velocity and acceleration at both ends
+local function smooth(t) return t * t * t * (10 + t * (-15 + 6 * t)) end
+
+-- Foot pose (ground frame, flat, height z) in the torso frame: torso at (tx, ty, tz), yaw ta,
+-- pitch tp, roll tr (small). Writes {x, y, z, roll, pitch, yaw} into out.
+local function foot_in_torso(out, fx, fy, fz, fa, tx, ty, tz, ta, tp, tr)
+  local dx, dy, dz = fx - tx, fy - ty, fz - tz
+  local c, s = cos(ta), sin(ta)
+  local x1, y1 = c * dx + s * dy, -s * dx + c * dy
+  -- undo pitch (Ry(-tp))
+  local cp, sp = cos(tp), sin(tp)
+  local x2, z2 = x1 * cp - dz * sp, x1 * sp + dz * cp
+  -- undo roll (Rx(-tr))
+  local cr, sr = cos(tr), sin(tr)
+  local y3, z3 = y1 * cr + z2 * sr, -y1 * sr + z2 * cr
+  out[1], out[2], out[3] = x2, y3, z3
+  -- orientation Rx(-tr) Ry(-tp) Rz(d) as z-y-x angles
+  local d = wrap(fa - ta)
+  local cd, sd = cos(d), sin(d)
+  -- R = Ry(-tp) Rz(d)
+  -- (first row: cp*cd, -cp*sd, -sp; second: sd, cd, 0; third: sp*cd, -sp*sd, cp)
+  local r11 = cp * cd
+  local r21, r22, r23 = sd, cd, 0
+  local r31, r32, r33 = sp * cd, -sp * sd, cp
+  -- R' = Rx(-tr) R: only rows 2 and 3 change
+  local q21 = cr * r21 + sr * r31
+  local q31, q32, q33 = -sr * r21 + cr * r31, -sr * r22 + cr * r32, -sr * r23 + cr * r33
+  out[4] = atan2(q32, q33)
+  out[5] = asin(clamp(-q31, -1, 1))
+  out[6] = atan2(q21, r11)
+  return out
+end
+M.foot_in_torso = foot_in_torso
+
+-- Creates a walk. params: the walk config table (read live); model: a Lib/kinematics model (may be
+-- nil for trajectory-only use: then joint angles are not computed).
+function M.new(params, model)
+  local w = setmetatable({ p = params, model = model }, Walk)
+  w.vel = { 0, 0, 0 }      -- current (rate-limited) velocity, m/s and rad/s
+  w.cmd = { 0, 0, 0 }      -- commanded velocity
+  w.cx, w.cy = {}, {}      -- LIPM coefficients of the current step
+  w.lpose, w.rpose = {}, {}
+  w.q = {}
+  w.com_offset = { 0, 0 }  -- whole-body COM minus torso origin, torso frame (from the mass model)
+  w.gyro_f = { 0, 0, 0 }
+  w.fb = { 0, 0, 0, 0 }    -- torso-angle feedback state (roll, pitch) filtered
+  w.stats = { steps = 0 }
+  w:reset()
+  return w
+end
+
+-- Puts the walk at stance at the origin of its ground frame (feet at the nominal spacing).
+function Walk:reset(u)
+  u = u or { 0, 0, 0 }
+  local p = self.p
+  self.uTorso = { u[1], u[2], u[3] }
+  self.uLeft = pose_global({ 0, p.footY, 0 }, u)
+  self.uRight = pose_global({ 0, -p.footY, 0 }, u)
+  self.uLeft1, self.uLeft2 = self.uLeft, self.uLeft
+  self.uRight1, self.uRight2 = self.uRight, self.uRight
+  self.uTorso1, self.uTorso2 = self.uTorso, self.uTorso
+  self.com = { self.uTorso[1], self.uTorso[2] }
+  self.comd = { 0, 0 }
+  self.zmp = { self.uTorso[1], self.uTorso[2] }
+  self.active = false
+  self.stopping = false
+  self.t = 0
+  self.support = RIGHT
+  self.ph = 0
+  self.swing_z = 0
+  self.vel[1], self.vel[2], self.vel[3] = 0, 0, 0
+end
+
+-- Clamps a velocity to the limits of the config; NaN/inf refused (returns nil, message).
+function M.clamp_velocity(p, vx, vy, va)
+  for _, v in ipairs({ vx, vy, va }) do
+    if type(v) ~= 'number' or v ~= v or v == math.huge or v == -math.huge then
+      return nil, 'walk velocity must be finite numbers'
+    end
+  end
+  vx = clamp(vx, p.velLimitX[1], p.velLimitX[2])
+  vy = clamp(vy, p.velLimitY[1], p.velLimitY[2])
+  va = clamp(va, p.velLimitA[1], p.velLimitA[2])
+  -- keep combined commands inside an ellipse-like budget (fast forward + fast turn is not possible)
+  local fx = vx >= 0 and vx / p.velLimitX[2] or vx / -p.velLimitX[1]
+  local fy = vy >= 0 and vy / p.velLimitY[2] or vy / -p.velLimitY[1]
+  local fa = va >= 0 and va / p.velLimitA[2] or va / -p.velLimitA[1]
+  local n = sqrt(fx * fx + fy * fy + fa * fa)
+  if n > 1 then vx, vy, va = vx / n, vy / n, va / n end
+  return vx, vy, va
+end
+
+function Walk:set_velocity(vx, vy, va)
+  local cx, cy, ca = M.clamp_velocity(self.p, vx, vy, va)
+  if not cx then return nil, cy end
+  self.cmd[1], self.cmd[2], self.cmd[3] = cx, cy, ca
+  return cx, cy, ca
+end
+
+function Walk:start()
+  if not self.active then
+    self.active = true
+    self.t = self.p.tStep -- a new step begins at the next update
+    self.stepping = false
+    self.support = nil
+    self.steps_still = 0
+  end
+  self.stopping = false
+end
+
+function Walk:stop() if self.active then self.stopping = true end end
+function Walk:is_active() return self.active end
+
+-- Swing foot target for the step, given the support foot and the velocity.
+function Walk:step_target(support_u, swing_left, v)
+  local p = self.p
+  local T = p.tStep
+  local sgn = swing_left and 1 or -1
+  local dx = v[1] * T
+  -- sideways and turning: the foot on the side of the motion takes the whole step, the other returns
+  local dy, da = 0, 0
+  if (v[2] > 0) == swing_left and v[2] ~= 0 then dy = 2 * v[2] * T end
+  if (v[3] > 0) == swing_left and v[3] ~= 0 then da = 2 * v[3] * T end
+  -- the support foot turned: keep forward steps along the mean heading
+  local rel = { dx, sgn * 2 * p.footY + dy, da }
+  rel[1] = clamp(rel[1], p.stepLimitX[1], p.stepLimitX[2])
+  -- lateral: never closer than the minimum spacing, never further than the maximum
+  local ay = sgn * rel[2]
+  ay = clamp(ay, p.stepLimitY[1], p.stepLimitY[2])
+  rel[2] = sgn * ay
+  local aa = sgn * rel[3]
+  aa = clamp(aa, p.stepLimitA[1], p.stepLimitA[2])
+  rel[3] = sgn * aa
+  -- turning feet: move the foot's ankle point so that the feet turn about the midpoint
+  local half = sgn * p.footY
+  rel[1] = rel[1] - half * sin(rel[3])
+  rel[2] = rel[2] - half * (1 - cos(rel[3]))
+  return pose_global(rel, support_u)
+end
+
+-- rate-limits the current velocity towards the command over one step
+function Walk:update_velocity()
+  local p = self.p
+  local T = p.tStep
+  local c = self.cmd
+  local tx, ty, ta = c[1], c[2], c[3]
+  if self.stopping then tx, ty, ta = 0, 0, 0 end
+  local acc = p.accLimit
+  local v = self.vel
+  v[1] = v[1] + clamp(tx - v[1], -acc[1] * T, acc[1] * T)
+  v[2] = v[2] + clamp(ty - v[2], -acc[2] * T, acc[2] * T)
+  v[3] = v[3] + clamp(ta - v[3], -acc[3] * T, acc[3] * T)
+end
+
+-- True when the feet stand at the nominal spacing (stop allowed).
+function Walk:feet_together()
+  local rel = pose_relative(self.uLeft2, self.uRight2)
+  local p = self.p
+  return abs(rel[1]) < 1e-3 and abs(rel[2] - 2 * p.footY) < 1e-3 and abs(rel[3]) < 1e-3
+end
+
+function Walk:begin_step()
+  local p = self.p
+  local T = p.tStep
+  self.uLeft1, self.uRight1 = self.uLeft2, self.uRight2
+  self.uTorso1 = self.uTorso2
+  self:update_velocity()
+  local v = self.vel
+  local still = abs(v[1]) < 1e-4 and abs(v[2]) < 1e-4 and abs(v[3]) < 1e-4
+  if self.stopping and still and self:feet_together() and self.support ~= nil and self.steps_still >= 1 then
+    self.active = false
+    self.stopping = false
+    self.uTorso = self.uTorso2
+    return false
+  end
+  self.steps_still = still and (self.steps_still or 0) + 1 or 0
+  -- alternate the support foot; the first step swings the foot on the side of the motion
+  if self.support == nil then
+    local lead_left = v[2] > 0 or (v[2] == 0 and self.cmd[2] > 0) or (self.cmd[2] == 0 and self.cmd[3] > 0)
+    self.support = lead_left and RIGHT or LEFT
+  else
+    self.support = 1 - self.support
+  end
+  local sY = p.supportY
+  if self.support == LEFT then
+    self.uRight2 = self:step_target(self.uLeft1, false, v)
+    self.uLeft2 = self.uLeft1
+    self.uSupport = pose_global({ p.supportX, sY, 0 }, self.uLeft1)
+  else
+    self.uLeft2 = self:step_target(self.uRight1, true, v)
+    self.uRight2 = self.uRight1
+    self.uSupport = pose_global({ p.supportX, -sY, 0 }, self.uRight1)
+  end
+  local mid = interp(0.5, self.uLeft2, self.uRight2)
+  self.uTorso2 = pose_global({ p.supportX, 0, 0 }, mid)
+  local t1, t2 = p.phSingle[1] * T, p.phSingle[2] * T
+  lipm.solve(self.uTorso1[1], self.uSupport[1], self.uTorso2[1], T, t1, t2, p.tZmp, self.cx)
+  lipm.solve(self.uTorso1[2], self.uSupport[2], self.uTorso2[2], T, t1, t2, p.tZmp, self.cy)
+  self.stats.steps = self.stats.steps + 1
+  return true
+end
+
+-- Advances the walk by dt seconds and computes the foot poses in the torso frame (self.lpose,
+-- self.rpose). Returns true while walking.
+function Walk:advance(dt)
+  local p = self.p
+  if self.active then
+    local T = p.tStep
+    self.t = self.t + dt
+    if self.t >= T - 1e-9 then
+      self.t = self.t - T
+      if self.t < 0 then self.t = 0 end
+      if not self:begin_step() then
+        self.t = 0
+      end
+    end
+  end
+  if not self.active then
+    -- stance: COM over the middle of the feet
+    local mid = interp(0.5, self.uLeft2, self.uRight2)
+    local u = pose_global({ p.supportX, 0, 0 }, mid)
+    self.uLeft, self.uRight = self.uLeft2, self.uRight2
+    self.com[1], self.com[2], self.comd[1], self.comd[2] = u[1], u[2], 0, 0
+    self.zmp[1], self.zmp[2] = u[1], u[2]
+    self.uTorso = u
+    self.ph = 0
+    self.swing_z = 0
+  else
+    local T = p.tStep
+    local t = self.t
+    local ph = t / T
+    self.ph = ph
+    local x, xd, zx = lipm.eval(self.cx, t)
+    local y, yd, zy = lipm.eval(self.cy, t)
+    self.com[1], self.com[2], self.comd[1], self.comd[2] = x, y, xd, yd
+    self.zmp[1], self.zmp[2] = zx, zy
+    local ph1, ph2 = p.phSingle[1], p.phSingle[2]
+    local phs = clamp((ph - ph1) / (ph2 - ph1), 0, 1)
+    local s = smooth(phs)
+    local lift = 16 * phs * phs * (1 - phs) * (1 - phs)
+    self.swing_z = p.stepHeight * lift
+    if self.support == LEFT then
+      self.uRight = interp(s, self.uRight1, self.uRight2)
+      self.uLeft = self.uLeft1
+    else
+      self.uLeft = interp(s, self.uLeft1, self.uLeft2)
+      self.uRight = self.uRight1
+    end
+    local a = interp(0.5, self.uLeft, self.uRight)[3]
+    self.uTorso = { x, y, a }
+  end
+  -- torso origin from the COM: subtract the COM offset (torso frame, rotated by the heading)
+  local ta = self.uTorso[3]
+  local ox, oy = self.com_offset[1] + p.footX, self.com_offset[2]
+  local c, s = cos(ta), sin(ta)
+  local tx = self.com[1] - (c * ox - s * oy)
+  local ty = self.com[2] - (s * ox + c * oy)
+  self.torso_x, self.torso_y = tx, ty
+  local lz, rz = 0, 0
+  if self.active then
+    if self.support == LEFT then rz = self.swing_z else lz = self.swing_z end
+  end
+  local tz, tp, tr = p.bodyHeight, p.bodyTilt, 0
+  local uL, uR = self.uLeft, self.uRight
+  foot_in_torso(self.lpose, uL[1], uL[2], lz, uL[3], tx, ty, tz, ta, tp, tr)
+  foot_in_torso(self.rpose, uR[1], uR[2], rz, uR[3], tx, ty, tz, ta, tp, tr)
+  return self.active
+end
+
+-- Support phase weight: 0 in double support, 1 in single support (for feedback and compensation).
+function Walk:single_support()
+  if not self.active then return 0 end
+  local p = self.p
+  local ph = self.ph
+  local ph1, ph2 = p.phSingle[1], p.phSingle[2]
+  if ph < ph1 or ph > ph2 then return 0 end
+  return 1
+end
+
+-- Leg angles into q (1-based robot joint order) from the last advance(); returns the IK flags.
+function Walk:leg_angles(q)
+  return self.model:legs_ik(self.lpose, self.rpose, q)
+end
+
+-- Joint bookkeeping from the robot config: 1-based indices by name and each joint's axis
+-- components along x and y (so feedback can be stated as rotations about the torso's axes).
+function Walk:bind(robot)
+  local ji, ax, ay = {}, {}, {}
+  local kj = robot.kinematics.joints
+  for i, name in ipairs(robot.joints) do
+    ji[name] = i
+    local a = kj[name].axis
+    ax[i], ay[i] = a[1], a[2]
+  end
+  self.ji, self.ax, self.ay = ji, ax, ay
+  self.legs = { [LEFT] = {}, [RIGHT] = {} }
+  for side, pre in pairs({ [LEFT] = 'l_', [RIGHT] = 'r_' }) do
+    for k, j in ipairs({ 'hip_yaw', 'hip_roll', 'hip_pitch', 'knee', 'ank_pitch', 'ank_roll' }) do
+      self.legs[side][k] = ji[pre .. j]
+    end
+  end
+  self.qleg = {}
+  self.pose_meas = {}
+  return self
+end
+
+local function deadband(x, d)
+  if x > d then return x - d elseif x < -d then return x + d end
+  return 0
+end
+
+-- adds a rotation (rad) about the torso's x (rx) and y (ry) axes to joint i, through its axis
+local function add_rot(self, q, i, rx, ry)
+  q[i] = q[i] + self.ax[i] * rx + self.ay[i] * ry
+end
+
+-- All joint angles of the walk into q (1-based robot order): legs by IK from the last advance(),
+-- arms from the config, then feedback. sensors: { gyro = {3} rad/s, position = joint angles
+-- (1-based, measured) } or nil (no feedback). dt: the tick. Returns the IK flags.
+function Walk:joint_angles(q, sensors, dt)
+  local p = self.p
+  local ji = self.ji
+  local flags = self.model:legs_ik(self.lpose, self.rpose, q)
+  local la, ra = p.qLArm, p.qRArm
+  q[ji.l_sho_pitch], q[ji.l_sho_roll], q[ji.l_el] = la[1], la[2], la[3]
+  q[ji.r_sho_pitch], q[ji.r_sho_roll], q[ji.r_el] = ra[1], ra[2], ra[3]
+  -- arm swing against the legs: the arm opposite to the forward foot goes forward
+  if p.armSwing ~= 0 then
+    local rel = pose_relative(self.uLeft, self.uRight)
+    add_rot(self, q, ji.l_sho_pitch, 0, p.armSwing * rel[1])
+    add_rot(self, q, ji.r_sho_pitch, 0, -p.armSwing * rel[1])
+  end
+  -- which leg carries the robot: the support leg while stepping, both at stance
+  local ss = self:single_support()
+  local sup = self.active and self.support or nil
+  -- hip roll compensation of the sag in single support
+  if sup ~= nil and ss > 0 then
+    local c = p.hipRollCompensation * (sup == LEFT and 1 or -1)
+    add_rot(self, q, self.legs[sup][2], c, 0)
+  end
+  if not sensors then return flags end
+  local fb = p.feedback
+  -- gyro: filtered, dead band, then restoring corrections on the support leg (both at stance)
+  local g, gf = sensors.gyro, self.gyro_f
+  local alpha = clamp(dt / (dt + fb.gyroTimeConstant), 0, 1)
+  gf[1] = gf[1] + alpha * (g[1] - gf[1])
+  gf[2] = gf[2] + alpha * (g[2] - gf[2])
+  local gx, gy = deadband(gf[1], fb.gyroDeadband[1]), deadband(gf[2], fb.gyroDeadband[2])
+  local lim = fb.maxCorrection
+  local function corr(k, x) return clamp(k * x, -lim, lim) end
+  local ankx, anky = corr(fb.ankle[1], gx), corr(fb.ankle[2], gy)
+  local kny = corr(fb.knee, gy)
+  local hipx, hipy = corr(fb.hip[1], gx), corr(fb.hip[2], gy)
+  -- torso angle from proprioception: the support foot is flat, so its measured pose in the torso
+  -- frame gives the torso's real tilt; the difference from the commanded tilt goes to the hips
+  local tx, ty = 0, 0
+  local pos = sensors.position
+  if pos and fb.torso[1] + fb.torso[2] ~= 0 then
+    local side = sup or (self.uLeft[1] > 0 and LEFT or RIGHT)
+    local legi = self.legs[side]
+    local qleg = self.qleg
+    for k = 1, 6 do qleg[k] = pos[legi[k]] end
+    local meas = self.model:leg_fk(side == LEFT and 'l' or 'r', qleg, self.pose_meas)
+    local cmd = side == LEFT and self.lpose or self.rpose
+    local er, ep = cmd[4] - meas[4], cmd[5] - meas[5]
+    local fs = self.fb
+    local beta = clamp(dt / (dt + fb.torsoTimeConstant), 0, 1)
+    fs[1] = fs[1] + beta * (er - fs[1])
+    fs[2] = fs[2] + beta * (ep - fs[2])
+    tx, ty = corr(fb.torso[1], fs[1]), corr(fb.torso[2], fs[2])
+  end
+  for side = LEFT, RIGHT do
+    local w = (sup == nil or sup == side) and 1 or 0
+    if w > 0 then
+      local legi = self.legs[side]
+      add_rot(self, q, legi[2], hipx + tx, 0)
+      add_rot(self, q, legi[3], 0, hipy + ty)
+      add_rot(self, q, legi[4], 0, kny)
+      add_rot(self, q, legi[5], 0, anky)
+      add_rot(self, q, legi[6], ankx, 0)
+    end
+  end
+  local armx, army = corr(fb.arm[1], gx), corr(fb.arm[2], gy)
+  add_rot(self, q, ji.l_sho_pitch, 0, army)
+  add_rot(self, q, ji.r_sho_pitch, 0, army)
+  add_rot(self, q, ji.l_sho_roll, armx, 0)
+  add_rot(self, q, ji.r_sho_roll, armx, 0)
+  return flags
+end
+
+-- Updates the COM offset (whole-body COM minus torso origin, in the heading frame) from joint
+-- angles q through the mass model; filtered so that it follows the posture, not the noise.
+function Walk:update_com_offset(q, alpha)
+  local c = self.model:com(q, self.com_buf)
+  self.com_buf = c
+  local tp = self.p.bodyTilt
+  local ox = c[1] * cos(tp) + c[3] * sin(tp)
+  local o = self.com_offset
+  alpha = alpha or 0.05
+  o[1] = o[1] + alpha * (ox - o[1])
+  o[2] = o[2] + alpha * (c[2] - o[2])
+end
+
+M.Walk = Walk
+return M

@@ -1,0 +1,157 @@
+-- The walk generator alone (no robot): LIPM solution, foot placement, limits, start and stop.
+local lipm = require('Motion.lipm')
+local Walk = require('Motion.walk')
+local Config = require('Config')
+local kin = require('kinematics')
+
+local robot = Config.load('robot')
+local params = Config.load('walk')
+local model = kin.load()
+local dt = robot.period
+
+local function copy(t)
+  local c = {}
+  for k, v in pairs(t) do c[k] = type(v) == 'table' and copy(v) or v end
+  return c
+end
+
+describe('lipm.solve', function()
+  local T, t1, t2, tz = 0.25, 0.025, 0.225, 0.165
+  local c = lipm.solve(0.01, 0.035, -0.005, T, t1, t2, tz)
+
+  it('meets the boundary conditions', function()
+    local x0 = lipm.eval(c, 0)
+    local x1 = lipm.eval(c, T)
+    assert.is_near(0.01, x0, 1e-12)
+    assert.is_near(-0.005, x1, 1e-12)
+  end)
+
+  it('obeys the pendulum equation x\'\' = (x - p) / tZmp^2 on every piece', function()
+    local h = 1e-4
+    for _, t in ipairs({ 0.01, 0.02, 0.05, 0.1, 0.2, 0.22, 0.23, 0.24 }) do
+      local xm = lipm.eval(c, t - h)
+      local x, _, p = lipm.eval(c, t)
+      local xp = lipm.eval(c, t + h)
+      local acc = (xp - 2 * x + xm) / (h * h)
+      assert.is_near((x - p) / (tz * tz), acc, 1e-3)
+    end
+  end)
+
+  it('keeps position and velocity continuous at the knots', function()
+    for _, tk in ipairs({ t1, t2 }) do
+      local xa, va = lipm.eval(c, tk - 1e-9)
+      local xb, vb = lipm.eval(c, tk + 1e-9)
+      assert.is_near(xa, xb, 1e-8)
+      assert.is_near(va, vb, 1e-6)
+    end
+  end)
+
+  it('lays out the ZMP as three linear pieces', function()
+    assert.is_near(0.01, lipm.zmp(c, 0), 1e-12)
+    assert.is_near(0.035, lipm.zmp(c, t1), 1e-12)
+    assert.is_near(0.035, lipm.zmp(c, 0.5 * (t1 + t2)), 1e-12)
+    assert.is_near(-0.005, lipm.zmp(c, T), 1e-12)
+  end)
+end)
+
+-- runs a walk for `seconds` at a velocity, returning the walk and the smallest foot spacing seen
+local function run(vx, vy, va, seconds, p)
+  local w = Walk.new(p or params, model):bind(robot)
+  local q = {}
+  for i = 1, #robot.joints do q[i] = 0 end
+  w:set_velocity(vx, vy, va)
+  w:start()
+  local flagged, min_gap, maxdv = 0, math.huge, 0
+  local last_com
+  for _ = 1, math.floor(seconds / dt + 0.5) do
+    w:advance(dt)
+    if w:joint_angles(q, nil, dt) ~= 0 then flagged = flagged + 1 end
+    w:update_com_offset(q)
+    local rel = Walk.pose_relative(w.uLeft, w.uRight)
+    min_gap = math.min(min_gap, rel[2])
+    if last_com then maxdv = math.max(maxdv, math.abs(w.com[1] - last_com) / dt) end
+    last_com = w.com[1]
+    for i = 1, #q do assert(q[i] == q[i], 'NaN joint angle') end
+  end
+  return w, { flagged = flagged, min_gap = min_gap, max_com_speed = maxdv }
+end
+
+describe('walk', function()
+  it('walks forward at the commanded speed (odometry) with every IK target reachable', function()
+    local w, s = run(0.25, 0, 0, 10)
+    local d = w.uTorso[1]
+    -- the speed ramps up at accLimit; after that it is 0.25 m/s
+    local ramp = 0.25 / params.accLimit[1]
+    assert.is_near(0.25 * (10 - ramp / 2), d, 0.08)
+    assert.is_near(0, w.uTorso[2], 0.01)
+    assert.equals(0, s.flagged)
+    assert.is_true(s.min_gap >= params.stepLimitY[1] - 1e-9)
+  end)
+
+  it('walks sideways, backwards and turns on the spot', function()
+    local w = run(0, 0.1, 0, 6)
+    assert.is_true(w.uTorso[2] > 0.4, 'sideways ' .. w.uTorso[2])
+    assert.is_near(0, w.uTorso[1], 0.02)
+    w = run(-0.1, 0, 0, 6)
+    assert.is_true(w.uTorso[1] < -0.4, 'backwards ' .. w.uTorso[1])
+    w = run(0, 0, 1.0, 3)
+    -- a short run: the heading has not wrapped yet
+    local a = w.uTorso[3]
+    assert.is_true(math.abs(a) > 1.5, 'turned ' .. a)
+    assert.is_near(0, w.uTorso[1], 0.05)
+  end)
+
+  it('clamps velocity commands to the limits and refuses NaN', function()
+    local w = Walk.new(params, model)
+    local vx, vy, va = w:set_velocity(10, 0, 0)
+    assert.is_near(params.velLimitX[2], vx, 1e-12)
+    assert.equals(0, vy)
+    assert.equals(0, va)
+    vx = w:set_velocity(-10, 0, 0)
+    assert.is_near(params.velLimitX[1], vx, 1e-12)
+    local ok, err = w:set_velocity(0 / 0, 0, 0)
+    assert.is_nil(ok)
+    assert.matches('finite', err)
+    assert.is_near(params.velLimitX[1], w.cmd[1], 1e-12) -- the refused command changed nothing
+  end)
+
+  it('starts from and stops into the stance with the feet together', function()
+    local w = Walk.new(params, model):bind(robot)
+    w:set_velocity(0.2, 0, 0.3)
+    w:start()
+    for _ = 1, 300 do w:advance(dt) end
+    w:stop()
+    local n = 0
+    while w:advance(dt) do
+      n = n + 1
+      assert.is_true(n < 600, 'did not stop within 600 ticks')
+    end
+    local rel = Walk.pose_relative(w.uLeft, w.uRight)
+    assert.is_near(0, rel[1], 1e-6)
+    assert.is_near(2 * params.footY, rel[2], 1e-6)
+    assert.is_near(0, rel[3], 1e-6)
+    assert.is_false(w:is_active())
+    -- stance: the COM sits between the feet
+    local mid = Walk.interp(0.5, w.uLeft, w.uRight)
+    assert.is_near(mid[2], w.com[2], 1e-6)
+  end)
+
+  it('keeps the COM reference continuous from step to step at a steady speed', function()
+    local _, s = run(0.25, 0, 0, 6)
+    -- a jump in position would show as a speed far above the walking speed
+    assert.is_true(s.max_com_speed < 0.6, 'COM speed ' .. s.max_com_speed)
+  end)
+
+  it('takes parameter changes while walking', function()
+    local p = copy(params)
+    local w = Walk.new(p, model):bind(robot)
+    w:set_velocity(0.1, 0, 0)
+    w:start()
+    for _ = 1, 100 do w:advance(dt) end
+    local steps = w.stats.steps
+    p.tStep = 0.5
+    for _ = 1, 250 do w:advance(dt) end
+    -- 2 s at 0.5 s per step: about 4 steps (at 0.25 s it would be 8)
+    assert.is_true(w.stats.steps - steps <= 5, 'steps ' .. (w.stats.steps - steps))
+  end)
+end)
