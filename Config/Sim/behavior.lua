@@ -1,0 +1,82 @@
+-- Behavior parameters (Player/Behavior, World, HeadFSM, BodyFSM, GameFSM) for the simulated robot.
+-- Units: metres, seconds, radians. Everything here can be changed while the robot runs (the
+-- behavior process re-reads nothing by itself; restart it, or set fields from the REPL).
+return {
+  -- the robot's team and number, as the GameController knows them
+  team_number = 1,
+  player_number = 1,
+  gamecontroller = {
+    port = 3838,
+    -- with no GameController packet ever seen, start playing this long after start-up (s)
+    start_delay = 2.0,
+  },
+  -- behavior steps: one every `step_ticks` DCM ticks
+  step_ticks = 3,
+  -- stop walking when the vision block has not been updated for this long (s, robot clock)
+  vision_stale_after = 1.0,
+
+  world = {
+    seed = 1,
+    field = { length = 9.0, width = 6.0, goal_width = 2.6 },
+    ball = {
+      process_noise = 0.5,     -- m/s^2
+      meas_noise = 0.08,       -- m per m of range
+      friction = 0.6,          -- 1/s, rolling decay of the ball's speed
+      max_speed = 5.0,         -- m/s
+      reset_after = 2.0,       -- s without a sighting: the next one restarts the filter
+      jump_distance = 0.6,     -- m: a sighting this far off restarts the filter
+    },
+    pose = {
+      particles = 300,
+      prior = { -4.5, 0.0, -3.0, 3.0 }, -- xmin, xmax, ymin, ymax: the robot starts in its own half
+      odom_trans_noise = 0.15,  -- fraction of distance walked
+      odom_rot_noise = 0.1,     -- fraction of angle turned
+      odom_rot_per_m = 0.05,    -- rad per m walked
+      post_range_noise = 0.15,  -- fraction of range
+      post_bearing_noise = 0.12, -- rad
+      outlier = 0.05,
+      inject_fraction = 0.01,
+      roughen_position = 0.03, -- m, spread added after resampling
+      roughen_angle = 0.02,     -- rad
+      reset_below = 0.5,        -- confidence under which two-post sightings re-seed particles
+      reset_fraction = 0.05,
+      margin = 0.5,             -- m the robot may be outside the field lines
+    },
+    ball_lost_after = 3.0,      -- s without a sighting: the ball is lost
+    max_odometry_step = 0.5,    -- m: a larger jump means the motion process restarted
+  },
+
+  head = {
+    scan_pan = 1.4,            -- rad, half-range of the scan
+    scan_distances = { 3.0, 0.8 }, -- m: the scan's far and near rows (ground distance looked at)
+    scan_period = 4.0,         -- s per sweep
+    track_gain = 0.6,          -- fraction of the angle error closed per step
+    look_goal_every = 6.0,     -- s between looks at the goal while tracking
+    look_goal_time = 1.2,      -- s
+    look_goal_min_distance = 0.6, -- m: do not look away when the ball is nearer than this
+    ground_z = -0.23,          -- m: the ground below the torso origin (torso frame), for look-at
+  },
+
+  body = {
+    search_turn_time = 8.0,    -- s turning on the spot before wandering
+    search_turn_speed = 0.5,   -- rad/s
+    wander_time = 6.0,         -- s walking towards the field's centre before turning again
+    approach_speed = 0.25,     -- m/s
+    approach_behind = 0.30,    -- m: aim at this point behind the ball (away from the goal)
+    align_distance = 0.45,     -- m: from here on, align precisely
+    kick_x = 0.17,             -- m: ball this far ahead of the torso when kicking
+    kick_y = 0.06,             -- m: ball this far to the side (towards the kicking foot)
+    kick_tolerance_x = 0.05,
+    kick_tolerance_y = 0.04,
+    kick_tolerance_angle = 0.25, -- rad: facing the goal within this
+    align_timeout = 12.0,      -- s: give up aligning and just walk into the ball
+    kick_timeout = 4.0,        -- s waiting for the kick to finish
+    use_kick = true,           -- false: dribble the ball into the goal
+    dribble_distance = 1.2,    -- m: nearer than this to the goal line, walk the ball in
+    follow_time = 3.0,         -- s walking after the ball following a kick
+    reposition = { -1.5, 0.0 }, -- field point to walk to when the ball is lost
+    max_vx = 0.3, max_vy = 0.1, max_va = 0.8,
+  },
+
+  ready_pose = { -1.0, 0.0, 0.0 }, -- where the robot walks in the ready state (field frame)
+}

@@ -1,0 +1,127 @@
+-- The behavior: reads vision and odometry, updates the world model, follows the game state and runs
+-- the head and body machines; writes the world and game blocks.
+--
+--   local b = require('Behavior.behavior').new(opts)   -- opts.port: GameController port override
+--   b:step()          -- one step at the current robot time
+--   b:run()           -- the process's loop (lockstep-aware), until SIGTERM
+local shm = require('shm')
+local Config = require('Config')
+local Body = require('Body')
+local fsm = require('fsm')
+local lockstep = require('lockstep')
+local World = require('World.world')
+local controller = require('GameFSM.controller')
+local packet = require('GameFSM.packet')
+local act = require('Behavior.act')
+
+local M = {}
+
+local function machine(which)
+  local def = require(which .. '.machine')
+  return fsm.new({ name = which, states = def.states, transitions = def.transitions, initial = def.initial,
+    load = function(n) return require(which .. '.' .. n) end })
+end
+
+local Behavior = {}
+Behavior.__index = Behavior
+
+function M.new(opts)
+  opts = opts or {}
+  local cfg = Config.load('behavior', {
+    team_number = 'number', player_number = 'number',
+    gamecontroller = { port = 'number', start_delay = 'number' },
+    step_ticks = 'number', vision_stale_after = 'number', world = 'table', head = 'table', body = 'table',
+    ready_pose = 'table',
+  })
+  local port = opts.port or tonumber(os.getenv('HRP_GC_PORT') or '') or nil
+  local gc = controller.new(cfg, { port = port })
+  if gc.socket_error then
+    io.stderr:write('behavior: GameController disabled: ', gc.socket_error, '\n')
+  end
+  local wcfg = setmetatable({}, { __index = cfg.world })
+  wcfg.seed = tonumber(os.getenv('HRP_SEED') or '') or cfg.world.seed
+  local self = setmetatable({
+    cfg = cfg, gc = gc, world = World.new(wcfg),
+    body = machine('BodyFSM'), head = machine('HeadFSM'), game = machine('GameFSM'),
+    blocks = { world = shm.open('world'), game = shm.open('game'), vision = shm.open('vision'),
+      motion = shm.open('motion') },
+    vision_time = -1, vision_time_changed = nil, steps = 0,
+  }, Behavior)
+  self.ctx = { cfg = cfg, world = self.world, act = act, body = self.body, head = self.head,
+    t = 0, look_goal_allowed = true }
+  return self
+end
+
+-- The vision block's detections as the world model wants them.
+local posts = { {}, {} }
+function Behavior:read_vision()
+  local v = self.blocks.vision
+  return v:read(function(b)
+    local n = math.min(2, math.max(0, b.goal_posts[0]))
+    local list = {}
+    for k = 1, n do
+      posts[k][1], posts[k][2] = b.goal_position[2 * k - 2], b.goal_position[2 * k - 1]
+      list[k] = posts[k]
+    end
+    return {
+      frame = b.frame[0], time = b.time[0], ball_detected = b.ball_detected[0] ~= 0,
+      ball = { b.ball_position[0], b.ball_position[1] }, posts = list,
+    }
+  end)
+end
+
+function Behavior:step()
+  local t = Body.get_time()
+  local ctx = self.ctx
+  ctx.t = t
+  local m = self.blocks.motion
+  local odom = { m.odometry[0], m.odometry[1], m.odometry[2] }
+  local vis = self:read_vision()
+  -- vision freshness on the robot clock: the frame counter must keep moving
+  if vis.frame ~= self.vision_frame then
+    self.vision_frame = vis.frame
+    self.vision_changed = t
+  end
+  self.vision_changed = self.vision_changed or t
+  ctx.vision_stale = (t - self.vision_changed) > self.cfg.vision_stale_after
+  self.world:update(t, odom, vis)
+  self.world:publish(self.blocks.world)
+
+  local state, penalized = self.gc:update(t, Body.get_button(1) ~= 0)
+  local want = penalized and 'penalized' or state
+  if self.game:state() ~= want or not self.game.current then self.game:event(want, ctx) end
+  self.game:update(ctx)
+
+  local gc, g = self.gc, self.blocks.game
+  g:write(function(b)
+    b.state[0] = packet.STATE[state]
+    b.penalized[0] = penalized and 1 or 0
+    b.team_color[0] = gc.team_colour
+    b.kickoff_team[0] = gc.kickoff_team
+    b.score[0], b.score[1] = gc.score[1], gc.score[2]
+    b.packets[0] = gc.packets
+    b.bad_packets[0] = gc.bad_packets
+    b.body_state[0] = self.body:index()
+    b.head_state[0] = self.head:index()
+  end)
+  self.steps = self.steps + 1
+end
+
+-- The process loop: one step per `step_ticks` ticks, reporting to the lockstep.
+function Behavior:run()
+  local participant = lockstep.join()
+  local n = math.max(1, math.floor(self.cfg.step_ticks))
+  local tick = Body.get_tick()
+  local wake = tick
+  while true do
+    if tick >= wake then
+      self:step()
+      wake = tick + n
+      participant:done(tick, wake)
+    end
+    local t = Body.wait_tick(tick, 1.0)
+    if t then tick = t end
+  end
+end
+
+return M

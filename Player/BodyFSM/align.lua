@@ -1,0 +1,34 @@
+-- Fine positioning: the ball just ahead of one foot, facing the opponent goal.
+local nav = require('BodyFSM.nav')
+
+local M = {}
+local t0, good, side
+
+function M.entry(ctx)
+  t0, good = ctx.t, 0
+  side = ctx.world.ball.y >= 0 and 1 or -1
+end
+
+function M.update(ctx)
+  local cfg = ctx.cfg.body
+  if not ctx.world:ball_known() then return 'lost' end
+  local bx, by, ux, uy = nav.attack(ctx)
+  local dist = math.sqrt(bx * bx + by * by)
+  if dist > cfg.align_distance + 0.3 then return 'far' end
+  -- keep the kicking side unless the ball moved clearly to the other one
+  if by * side < -0.05 then side = -side end
+  local ex, ey = bx - cfg.kick_x, by - side * cfg.kick_y
+  local ea = nav.wrap(math.atan2(uy, ux))
+  -- turn around the ball: sideways motion couples with the turn
+  local vx = nav.clamp(0.7 * ex, -0.06, 0.12)
+  local vy = nav.clamp(0.7 * ey - 0.15 * ea, -cfg.max_vy, cfg.max_vy)
+  local va = nav.clamp(0.8 * ea, -0.5, 0.5)
+  ctx.act.walk(vx, vy, va)
+  local ok = math.abs(ex) < cfg.kick_tolerance_x and math.abs(ey) < cfg.kick_tolerance_y
+    and math.abs(ea) < cfg.kick_tolerance_angle
+  good = ok and good + 1 or 0
+  ctx.kick_side = side > 0 and 'left' or 'right'
+  if good >= 3 or ctx.t - t0 > cfg.align_timeout then return 'done' end
+end
+
+return M

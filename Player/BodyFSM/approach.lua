@@ -1,0 +1,15 @@
+-- Walk to the point behind the ball on the line from the opponent goal.
+local nav = require('BodyFSM.nav')
+
+local M = {}
+
+function M.update(ctx)
+  local cfg = ctx.cfg.body
+  if not ctx.world:ball_known() then return 'lost' end
+  local tx, ty, ha = nav.behind_ball(ctx)
+  local vx, vy, va, d = nav.go_to(ctx, tx, ty, ha)
+  ctx.act.walk(vx, vy, va)
+  if d < cfg.align_distance - 0.1 then return 'near' end
+end
+
+return M

@@ -1,0 +1,16 @@
+-- After a kick: walk after the ball along the attack direction until it is seen again.
+local M = {}
+local t0
+
+function M.entry(ctx) t0 = ctx.t end
+
+function M.update(ctx)
+  local cfg = ctx.cfg.body
+  if ctx.t - t0 > 0.5 and ctx.world:ball_age() < 0.3 then return 'ball' end
+  local b = ctx.world.ball
+  local bearing = math.atan2(b.y, b.x)
+  ctx.act.walk(cfg.approach_speed * math.max(0, math.cos(bearing)), 0, 0.8 * bearing)
+  if ctx.t - t0 > cfg.follow_time then return 'timeout' end
+end
+
+return M

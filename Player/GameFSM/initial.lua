@@ -1,0 +1,14 @@
+-- Initial: stand still, head straight ahead.
+local M = {}
+
+function M.entry(ctx)
+  ctx.body:event('stop', ctx)
+  ctx.head:event('reset', ctx)
+end
+
+function M.update(ctx)
+  ctx.act.stop()
+  ctx.act.head(0, 0)
+end
+
+return M

@@ -1,0 +1,19 @@
+-- Ready: walk to the kick-off position in the own half, looking around to localize.
+local nav = require('BodyFSM.nav')
+
+local M = {}
+
+function M.entry(ctx)
+  ctx.body:event('stop', ctx)
+end
+
+function M.update(ctx)
+  local p = ctx.cfg.ready_pose
+  local tx, ty = ctx.world:to_robot(p[1], p[2])
+  local ha = nav.wrap(p[3] - ctx.world.pose.a)
+  local vx, vy, va, d = nav.go_to(ctx, tx, ty, ha)
+  if d < 0.2 and math.abs(ha) < 0.2 then ctx.act.stop() else ctx.act.walk(vx, vy, va) end
+  ctx.head:update(ctx)
+end
+
+return M

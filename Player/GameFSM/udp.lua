@@ -1,0 +1,86 @@
+-- Non-blocking UDP through the FFI: a receiver bound to a port on every interface (several robots
+-- on one machine can bind the same port: SO_REUSEADDR, so each gets the broadcasts) and a sender.
+local ffi = require('ffi')
+
+ffi.cdef [[
+struct hrp_sockaddr_in { uint16_t family; uint16_t port; uint32_t addr; uint8_t zero[8]; };
+int socket(int domain, int type, int protocol);
+int bind(int fd, const struct hrp_sockaddr_in *addr, uint32_t len);
+int setsockopt(int fd, int level, int optname, const void *optval, uint32_t optlen);
+long recvfrom(int fd, void *buf, size_t len, int flags, struct hrp_sockaddr_in *src, uint32_t *srclen);
+long sendto(int fd, const void *buf, size_t len, int flags, const struct hrp_sockaddr_in *dst,
+           uint32_t dstlen);
+int close(int fd);
+uint16_t htons(uint16_t v);
+uint32_t inet_addr(const char *cp);
+char *strerror(int errnum);
+]]
+local C = ffi.C
+
+local AF_INET, SOCK_DGRAM, SOCK_NONBLOCK = 2, 2, 2048
+local SOL_SOCKET, SO_REUSEADDR, SO_BROADCAST = 1, 2, 6
+local MSG_DONTWAIT = 64
+
+local M = {}
+
+local one = ffi.new('int[1]', 1)
+local buf_size = 4096
+local buf = ffi.new('uint8_t[?]', buf_size)
+local src = ffi.new('struct hrp_sockaddr_in')
+local srclen = ffi.new('uint32_t[1]')
+
+local function errstr() return ffi.string(C.strerror(ffi.errno())) end
+
+local Socket = {}
+Socket.__index = Socket
+
+-- A receiver on `port` (all interfaces); nil and a message on failure.
+function M.listen(port)
+  local fd = C.socket(AF_INET, SOCK_DGRAM + SOCK_NONBLOCK, 0)
+  if fd < 0 then return nil, 'socket: ' .. errstr() end
+  C.setsockopt(fd, SOL_SOCKET, SO_REUSEADDR, one, 4)
+  C.setsockopt(fd, SOL_SOCKET, SO_BROADCAST, one, 4)
+  local addr = ffi.new('struct hrp_sockaddr_in')
+  addr.family = AF_INET
+  addr.port = C.htons(port)
+  addr.addr = 0
+  if C.bind(fd, addr, ffi.sizeof(addr)) < 0 then
+    local e = errstr()
+    C.close(fd)
+    return nil, string.format('bind UDP port %d: %s', port, e)
+  end
+  return setmetatable({ fd = fd, port = port }, Socket)
+end
+
+-- A sender (for tests and tools).
+function M.sender()
+  local fd = C.socket(AF_INET, SOCK_DGRAM, 0)
+  if fd < 0 then return nil, 'socket: ' .. errstr() end
+  C.setsockopt(fd, SOL_SOCKET, SO_BROADCAST, one, 4)
+  return setmetatable({ fd = fd }, Socket)
+end
+
+-- Next pending datagram as a string, or nil when none is waiting.
+function Socket:receive()
+  srclen[0] = ffi.sizeof(src)
+  local n = C.recvfrom(self.fd, buf, buf_size, MSG_DONTWAIT, src, srclen)
+  if n < 0 then return nil end
+  return ffi.string(buf, n)
+end
+
+-- Sends `data` to host:port (host as dotted quad); true or nil and a message.
+function Socket:send(data, host, port)
+  local dst = ffi.new('struct hrp_sockaddr_in')
+  dst.family = AF_INET
+  dst.port = C.htons(port)
+  dst.addr = C.inet_addr(host)
+  local n = C.sendto(self.fd, data, #data, 0, dst, ffi.sizeof(dst))
+  if n < 0 then return nil, 'sendto: ' .. errstr() end
+  return true
+end
+
+function Socket:close()
+  if self.fd >= 0 then C.close(self.fd) self.fd = -1 end
+end
+
+return M

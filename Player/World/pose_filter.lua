@@ -1,0 +1,241 @@
+-- The robot's pose on the field (x, y, yaw; origin at the centre, x towards the opponent goal): a
+-- particle filter moved by odometry and weighted by goal-post sightings. The two goals look alike,
+-- so a post sighting is matched to the nearest of the four real posts for each particle; the prior
+-- (the robot starts in its own half) and the field's bounds break the symmetry.
+local M = {}
+
+local sqrt, cos, sin, atan2, exp, floor = math.sqrt, math.cos, math.sin, math.atan2, math.exp, math.floor
+local pi = math.pi
+
+local function wrap(a)
+  a = a % (2 * pi)
+  if a > pi then a = a - 2 * pi end
+  return a
+end
+M.wrap = wrap
+
+local Filter = {}
+Filter.__index = Filter
+
+-- field: { length, width, goal_width }; cfg: particles, odometry noise, post noise, prior
+-- rng: a function returning uniform [0, 1) (seeded by the caller for reproducible runs)
+function M.new(field, cfg, rng)
+  local f = setmetatable({ field = field, cfg = cfg, rng = rng or math.random }, Filter)
+  local hx, hw = field.length / 2, field.goal_width / 2
+  f.posts = { { hx, hw }, { hx, -hw }, { -hx, hw }, { -hx, -hw } }
+  f.n = cfg.particles
+  f.px, f.py, f.pa, f.w = {}, {}, {}, {}
+  f:init_prior()
+  return f
+end
+
+function Filter:gauss()
+  local u1, u2 = math.max(1e-12, self.rng()), self.rng()
+  return sqrt(-2 * math.log(u1)) * cos(2 * pi * u2)
+end
+
+-- Uniform over the prior region (own half by default), any heading.
+function Filter:sample_prior(i)
+  local r = self.cfg.prior -- { xmin, xmax, ymin, ymax }
+  self.px[i] = r[1] + (r[2] - r[1]) * self.rng()
+  self.py[i] = r[3] + (r[4] - r[3]) * self.rng()
+  self.pa[i] = wrap(2 * pi * self.rng())
+end
+
+function Filter:init_prior()
+  for i = 1, self.n do
+    self:sample_prior(i)
+    self.w[i] = 1 / self.n
+  end
+  self:estimate()
+end
+
+-- Puts every particle near a known pose (e.g. placed by the referee).
+function Filter:set_pose(x, y, a, spread)
+  spread = spread or 0.05
+  for i = 1, self.n do
+    self.px[i] = x + spread * self:gauss()
+    self.py[i] = y + spread * self:gauss()
+    self.pa[i] = wrap(a + spread * self:gauss())
+    self.w[i] = 1 / self.n
+  end
+  self:estimate()
+end
+
+-- Odometry: the robot moved (dx, dy) and turned da in its previous frame.
+function Filter:move(dx, dy, da)
+  local c = self.cfg
+  local dist = sqrt(dx * dx + dy * dy)
+  local st = c.odom_trans_noise * dist + 1e-4
+  local sa = c.odom_rot_noise * math.abs(da) + c.odom_rot_per_m * dist + 1e-4
+  local hl, hw = self.field.length / 2 + c.margin, self.field.width / 2 + c.margin
+  for i = 1, self.n do
+    local a = self.pa[i]
+    local ndx = dx + st * self:gauss()
+    local ndy = dy + st * self:gauss()
+    local ca, sa_ = cos(a), sin(a)
+    local x = self.px[i] + ca * ndx - sa_ * ndy
+    local y = self.py[i] + sa_ * ndx + ca * ndy
+    -- the robot never leaves the field by much
+    if x > hl then x = hl elseif x < -hl then x = -hl end
+    if y > hw then y = hw elseif y < -hw then y = -hw end
+    self.px[i], self.py[i] = x, y
+    self.pa[i] = wrap(a + da + sa * self:gauss())
+  end
+end
+
+-- Likelihood of seeing a post at range r, bearing b (robot frame) from particle i.
+function Filter:post_likelihood(i, r, b)
+  local c = self.cfg
+  local x, y, a = self.px[i], self.py[i], self.pa[i]
+  local best = 0
+  local sr = c.post_range_noise * math.max(0.5, r)
+  local sb = c.post_bearing_noise
+  for k = 1, 4 do
+    local p = self.posts[k]
+    local ddx, ddy = p[1] - x, p[2] - y
+    local er = sqrt(ddx * ddx + ddy * ddy) - r
+    local eb = wrap(atan2(ddy, ddx) - a - b)
+    local l = exp(-0.5 * (er * er / (sr * sr) + eb * eb / (sb * sb)))
+    if l > best then best = l end
+  end
+  return best
+end
+
+-- Poses from which two posts seen at o1, o2 (robot frame) are the posts of one goal: one per goal
+-- (the post order that puts the robot behind a goal is dropped). Sensor resetting uses them.
+function Filter:poses_from_two_posts(o1, o2)
+  local out = {}
+  local hl, hw = self.field.length / 2 + self.cfg.margin, self.field.width / 2 + self.cfg.margin
+  local P = self.posts
+  for _, pair in ipairs({ { P[1], P[2] }, { P[2], P[1] }, { P[3], P[4] }, { P[4], P[3] } }) do
+    local f1, f2 = pair[1], pair[2]
+    local a = wrap(atan2(f2[2] - f1[2], f2[1] - f1[1]) - atan2(o2[2] - o1[2], o2[1] - o1[1]))
+    local c, s = cos(a), sin(a)
+    local x = f1[1] - (c * o1[1] - s * o1[2])
+    local y = f1[2] - (s * o1[1] + c * o1[2])
+    if x > -hl and x < hl and y > -hw and y < hw and math.abs(x) < self.field.length / 2 then
+      out[#out + 1] = { x, y, a }
+    end
+  end
+  return out
+end
+
+-- Goal posts seen: list of {x, y} in the robot frame.
+function Filter:observe_posts(posts)
+  if #posts == 0 then return end
+  if #posts == 2 and (self.confidence or 0) < self.cfg.reset_below then
+    -- sensor resetting: a few particles jump to the poses this sighting implies
+    local cands = self:poses_from_two_posts(posts[1], posts[2])
+    -- each candidate in proportion to how well the current belief supports it (the history
+    -- decides between the two mirror poses)
+    local support, total_support = {}, 0
+    for ci, c in ipairs(cands) do
+      local sum = 1e-6
+      for i = 1, self.n do
+        local ddx, ddy, dda = self.px[i] - c[1], self.py[i] - c[2], wrap(self.pa[i] - c[3])
+        sum = sum + self.w[i] * exp(-(ddx * ddx + ddy * ddy) / 0.5 - dda * dda / 0.5)
+      end
+      support[ci] = sum
+      total_support = total_support + sum
+    end
+    if #cands > 0 then
+      local k = floor(self.n * self.cfg.reset_fraction)
+      for _ = 1, k do
+        local u, ci = self.rng() * total_support, 1
+        while ci < #cands and u > support[ci] do u = u - support[ci] ci = ci + 1 end
+        local c = cands[ci]
+        local i = 1 + floor(self.rng() * self.n)
+        if i > self.n then i = self.n end
+        local r = sqrt(posts[1][1] ^ 2 + posts[1][2] ^ 2)
+        self.px[i] = c[1] + 0.05 * r * self:gauss()
+        self.py[i] = c[2] + 0.05 * r * self:gauss()
+        self.pa[i] = wrap(c[3] + 0.05 * self:gauss())
+      end
+    end
+  end
+  local total = 0
+  local floor_l = self.cfg.outlier -- a sighting may be false: never weight a particle to zero
+  for i = 1, self.n do
+    local l = 1
+    for _, p in ipairs(posts) do
+      local r = sqrt(p[1] * p[1] + p[2] * p[2])
+      local b = atan2(p[2], p[1])
+      l = l * (floor_l + (1 - floor_l) * self:post_likelihood(i, r, b))
+    end
+    -- two posts of one goal: their separation must fit a goal's width
+    if #posts == 2 then
+      local ddx, ddy = posts[1][1] - posts[2][1], posts[1][2] - posts[2][2]
+      local sep = sqrt(ddx * ddx + ddy * ddy)
+      local e = sep - self.field.goal_width
+      l = l * (floor_l + exp(-0.5 * e * e / 0.3 ^ 2))
+    end
+    self.w[i] = self.w[i] * l
+    total = total + self.w[i]
+  end
+  self.last_likelihood = total
+  if total <= 1e-300 then
+    for i = 1, self.n do self.w[i] = 1 / self.n end
+  else
+    for i = 1, self.n do self.w[i] = self.w[i] / total end
+  end
+  self:resample_if_needed()
+end
+
+function Filter:resample_if_needed()
+  local s2 = 0
+  for i = 1, self.n do s2 = s2 + self.w[i] * self.w[i] end
+  local neff = 1 / s2
+  if neff > self.n * 0.5 then return end
+  -- low-variance resampling
+  local n = self.n
+  local nx, ny, na = {}, {}, {}
+  local step = 1 / n
+  local u = self.rng() * step
+  local c, k = self.w[1], 1
+  for i = 1, n do
+    while u > c and k < n do k = k + 1 c = c + self.w[k] end
+    nx[i], ny[i], na[i] = self.px[k], self.py[k], self.pa[k]
+    u = u + step
+  end
+  -- roughening: copies of one particle spread out a little, so the cloud can still move
+  local rp, ra = self.cfg.roughen_position, self.cfg.roughen_angle
+  for i = 1, n do
+    nx[i] = nx[i] + rp * self:gauss()
+    ny[i] = ny[i] + rp * self:gauss()
+    na[i] = wrap(na[i] + ra * self:gauss())
+  end
+  self.px, self.py, self.pa = nx, ny, na
+  for i = 1, n do self.w[i] = 1 / n end
+  -- a few fresh particles keep the filter able to recover from a wrong lock
+  local inject = floor(n * self.cfg.inject_fraction)
+  for _ = 1, inject do
+    local i = 1 + floor(self.rng() * n)
+    if i > n then i = n end
+    self:sample_prior(i)
+  end
+end
+
+-- Weighted mean pose and a confidence in [0, 1] from the particles' spread.
+function Filter:estimate()
+  local sx, sy, sc, ss, sw = 0, 0, 0, 0, 0
+  for i = 1, self.n do
+    local w = self.w[i]
+    sx, sy = sx + w * self.px[i], sy + w * self.py[i]
+    sc, ss = sc + w * cos(self.pa[i]), ss + w * sin(self.pa[i])
+    sw = sw + w
+  end
+  local x, y, a = sx / sw, sy / sw, atan2(ss, sc)
+  local var = 0
+  for i = 1, self.n do
+    local ddx, ddy = self.px[i] - x, self.py[i] - y
+    var = var + self.w[i] * (ddx * ddx + ddy * ddy)
+  end
+  var = var / sw
+  local rlen = sqrt(sc * sc + ss * ss) / sw -- 1 when all headings agree
+  self.x, self.y, self.a = x, y, a
+  self.confidence = math.max(0, math.min(1, rlen * exp(-var / 0.5)))
+  return x, y, a, self.confidence
+end
+
+return M

@@ -1,0 +1,119 @@
+-- The world model: ball (robot frame) and the robot's pose on the field, from the vision block's
+-- detections and the walk's odometry (motion block); written to the world block.
+--
+--   local world = require('World.world').new(cfg)     -- cfg = Config behavior.lua's `world` part
+--   world:update(t, odometry, vision)                 -- once per behavior step
+--   world.ball.x ... ; world:ball_field(); world:goal_in_robot_frame()
+local ball_filter = require('World.ball_filter')
+local pose_filter = require('World.pose_filter')
+
+local M = {}
+
+local cos, sin, atan2, sqrt = math.cos, math.sin, math.atan2, math.sqrt
+local wrap = pose_filter.wrap
+
+local World = {}
+World.__index = World
+
+-- A small deterministic generator (xorshift) so that runs with the same seed agree.
+local function make_rng(seed)
+  local state = bit.tobit(seed * 2654435761 % 4294967296)
+  if state == 0 then state = 1 end
+  return function()
+    state = bit.bxor(state, bit.lshift(state, 13))
+    state = bit.bxor(state, bit.rshift(state, 17))
+    state = bit.bxor(state, bit.lshift(state, 5))
+    return (state % 4294967296) / 4294967296
+  end
+end
+M.make_rng = make_rng
+
+-- cfg: { field = {...}, ball = {...}, pose = {...}, seed = n }
+function M.new(cfg)
+  local w = setmetatable({ cfg = cfg }, World)
+  w.ball = ball_filter.new(cfg.ball)
+  w.pose = pose_filter.new(cfg.field, cfg.pose, make_rng(cfg.seed or 1))
+  w.t = nil
+  w.odom = nil
+  w.frame = nil
+  w.odometry_jumps = 0
+  return w
+end
+
+-- Odometry delta (dx, dy in the old robot frame, da) between two odometry readings {x, y, a}.
+local function odom_delta(o0, o1)
+  local ddx, ddy = o1[1] - o0[1], o1[2] - o0[2]
+  local c, s = cos(-o0[3]), sin(-o0[3])
+  return c * ddx - s * ddy, s * ddx + c * ddy, wrap(o1[3] - o0[3])
+end
+M.odom_delta = odom_delta
+
+-- One step at robot time t. odometry = {x, y, yaw} (cumulative, from the motion block);
+-- vision = { frame, time, ball_detected, ball = {x, y}, posts = {{x, y}, ...} } or nil.
+function World:update(t, odometry, vision)
+  local dt = self.t and (t - self.t) or 0
+  self.t = t
+  if self.odom then
+    local dx, dy, da = odom_delta(self.odom, odometry)
+    if dx * dx + dy * dy > self.cfg.max_odometry_step ^ 2 or math.abs(da) > 1.0 then
+      -- the motion process restarted (its odometry began again): skip this step
+      self.odometry_jumps = self.odometry_jumps + 1
+    elseif dx ~= 0 or dy ~= 0 or da ~= 0 then
+      self.ball:move_robot(dx, dy, da)
+      self.pose:move(dx, dy, da)
+    end
+  end
+  self.odom = { odometry[1], odometry[2], odometry[3] }
+  self.ball:predict(dt)
+  if vision and vision.frame ~= self.frame then
+    self.frame = vision.frame
+    if vision.ball_detected then self.ball:observe(vision.ball[1], vision.ball[2], t) end
+    if vision.posts and #vision.posts > 0 then self.pose:observe_posts(vision.posts) end
+  end
+  self.pose:estimate()
+end
+
+-- Seconds since the ball was last seen.
+function World:ball_age()
+  return (self.t or 0) - self.ball.t_seen
+end
+
+function World:ball_known()
+  return self:ball_age() < self.cfg.ball_lost_after
+end
+
+-- The ball in the field frame (from the pose estimate).
+function World:ball_field()
+  local p = self.pose
+  local c, s = cos(p.a), sin(p.a)
+  return p.x + c * self.ball.x - s * self.ball.y, p.y + s * self.ball.x + c * self.ball.y
+end
+
+-- A field point in the robot frame.
+function World:to_robot(fx, fy)
+  local p = self.pose
+  local ddx, ddy = fx - p.x, fy - p.y
+  local c, s = cos(-p.a), sin(-p.a)
+  return c * ddx - s * ddy, s * ddx + c * ddy
+end
+
+-- Centre of the opponent goal (x = +length/2) in the robot frame.
+function World:goal_in_robot_frame()
+  return self:to_robot(self.cfg.field.length / 2, 0)
+end
+
+-- Writes the world block (one locked write).
+function World:publish(block)
+  local b, p = self.ball, self.pose
+  block:write(function(w)
+    w.ball[0], w.ball[1], w.ball[2], w.ball[3] = b.x, b.y, b.vx, b.vy
+    w.ball_time[0] = b.seen and b.t_seen or -1
+    w.pose[0], w.pose[1], w.pose[2] = p.x, p.y, p.a
+    w.pose_confidence[0] = p.confidence
+  end)
+end
+
+-- Bearing and distance of a robot-frame point.
+function M.polar(x, y) return sqrt(x * x + y * y), atan2(y, x) end
+
+return M

@@ -1,0 +1,95 @@
+-- The world model: ball filter moved by odometry; pose particle filter from goal posts.
+local ball_filter = require('World.ball_filter')
+local pose_filter = require('World.pose_filter')
+local World = require('World.world')
+
+local bcfg = { process_noise = 0.5, meas_noise = 0.08, friction = 0.6, max_speed = 5,
+  reset_after = 2, jump_distance = 0.6 }
+local field = { length = 9, width = 6, goal_width = 2.6 }
+local pcfg = { particles = 300, prior = { -4.5, 0, -3, 3 }, odom_trans_noise = 0.15, odom_rot_noise = 0.1,
+  odom_rot_per_m = 0.05, post_range_noise = 0.15, post_bearing_noise = 0.12, outlier = 0.05,
+  inject_fraction = 0.01, margin = 0.5, roughen_position = 0.03, roughen_angle = 0.02,
+  reset_below = 0.5, reset_fraction = 0.05 }
+
+describe('ball filter', function()
+  it('keeps a still ball in place while the robot walks and turns', function()
+    local f = ball_filter.new(bcfg)
+    f:observe(2.0, 0.0, 0)
+    -- the robot walks 1 m forward then turns 90 degrees left: the ball is 1 m ahead, then to the right
+    for _ = 1, 100 do f:move_robot(0.01, 0, 0) f:predict(0.01) end
+    assert.is_near(1.0, f.x, 1e-6)
+    f:move_robot(0, 0, math.pi / 2)
+    assert.is_near(0.0, f.x, 1e-6)
+    assert.is_near(-1.0, f.y, 1e-6)
+  end)
+
+  it('estimates a rolling ball\'s velocity from sightings', function()
+    local f = ball_filter.new(bcfg)
+    local t = 0
+    for k = 0, 30 do
+      t = k * 0.033
+      local v = 1.0 * math.exp(-0.6 * t)
+      local x = 1.0 + (1 - math.exp(-0.6 * t)) / 0.6 * 1.0
+      if k > 0 then f:predict(0.033) end
+      f:observe(x, 0.5, t)
+      assert.is_true(v > 0)
+    end
+    assert.is_near(math.exp(-0.6 * t), f.vx, 0.25)
+    assert.is_near(0, f.vy, 0.1)
+  end)
+end)
+
+describe('pose filter', function()
+  local posts = { { 4.5, 1.3 }, { 4.5, -1.3 }, { -4.5, 1.3 }, { -4.5, -1.3 } }
+  local function seen(x, y, a, idx)
+    local list = {}
+    for _, k in ipairs(idx) do
+      local dx, dy = posts[k][1] - x, posts[k][2] - y
+      local c, s = math.cos(-a), math.sin(-a)
+      list[#list + 1] = { c * dx - s * dy, s * dx + c * dy }
+    end
+    return list
+  end
+
+  it('localizes from the own half by turning and seeing both goals', function()
+    local f = pose_filter.new(field, pcfg, World.make_rng(3))
+    local x, y, a = -2.0, 1.0, 2.0
+    -- turn on the spot in steps, seeing whichever goal is ahead (within +-0.8 rad)
+    for _ = 1, 3 do
+      for _ = 1, 63 do
+        a = pose_filter.wrap(a + 0.1)
+        f:move(0, 0, 0.1)
+        local vis = {}
+        for k, p in ipairs(posts) do
+          local b = pose_filter.wrap(math.atan2(p[2] - y, p[1] - x) - a)
+          if math.abs(b) < 0.8 then vis[#vis + 1] = k end
+        end
+        if #vis > 0 then f:observe_posts(seen(x, y, a, vis)) end
+      end
+    end
+    local ex, ey, ea, conf = f:estimate()
+    assert.is_near(x, ex, 0.4)
+    assert.is_near(y, ey, 0.4)
+    assert.is_near(0, pose_filter.wrap(ea - a), 0.15)
+    assert.is_true(conf > 0.3)
+  end)
+
+  it('follows odometry once localized', function()
+    local f = pose_filter.new(field, pcfg, World.make_rng(5))
+    f:set_pose(-1, 0, 0, 0.02)
+    for _ = 1, 100 do f:move(0.01, 0, 0.005) end
+    local ex, ey, ea = f:estimate()
+    assert.is_true(ex > -0.2 and ex < 0.1)
+    assert.is_true(ey > 0.05 and ey < 0.4)
+    assert.is_near(0.5, ea, 0.1)
+  end)
+end)
+
+describe('world', function()
+  it('turns odometry readings into steps in the robot frame', function()
+    local dx, dy, da = World.odom_delta({ 1, 1, math.pi / 2 }, { 1, 2, math.pi / 2 + 0.1 })
+    assert.is_near(1, dx, 1e-9)
+    assert.is_near(0, dy, 1e-9)
+    assert.is_near(0.1, da, 1e-9)
+  end)
+end)
