@@ -40,6 +40,18 @@ return {
     torsoTimeConstant = 0.05,   -- s
     maxCorrection = 0.3,        -- rad, per joint
   },
+  -- kick (Player/Motion/kick.lua): phases reached one after the other, each over its duration
+  kick = {
+    supportY = 0.01,         -- m, COM over the support foot: outward from its ankle
+    phases = {
+      { duration = 0.6, shift = 1 },                        -- weight onto the support foot
+      { duration = 0.3, shift = 1, x = -0.04, z = 0.04 },   -- lift and draw back
+      { duration = 0.1, shift = 1, x = 0.10, z = 0.035 },   -- swing through
+      { duration = 0.3, shift = 1, x = 0.0, z = 0.03 },     -- back
+      { duration = 0.3, shift = 1, x = 0.0, z = 0.0 },      -- down
+      { duration = 0.5, shift = 0 },                        -- weight back to the middle
+    },
+  },
   -- stance and transitions
   tStance = 1.0,             -- s, to move into the stance from the current pose
   hardnessLegs = 1.0,
@@ -49,4 +61,8 @@ return {
   fallAngle = 0.6,           -- rad
   fallRate = 2.5,            -- rad/s together with fallAngleRate
   fallAngleRate = 0.35,      -- rad
+  fallHardness = 0.15,       -- hardness while falling (soft)
+  fallStillRate = 0.4,       -- rad/s: lying still below this (sum of |gyro|)
+  fallSettleTime = 0.8,      -- s in falling before a stand-up
+  initialState = 'stance',   -- state the motion process starts in
 }

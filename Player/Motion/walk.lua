@@ -363,8 +363,9 @@ end
 
 -- All joint angles of the walk into q (1-based robot order): legs by IK from the last advance(),
 -- arms from the config, then feedback. sensors: { gyro = {3} rad/s, position = joint angles
--- (1-based, measured) } or nil (no feedback). dt: the tick. Returns the IK flags.
-function Walk:joint_angles(q, sensors, dt)
+-- (1-based, measured) } or nil (no feedback). dt: the tick. support: LEFT/RIGHT to name the leg that
+-- carries the robot in single support when the walk is not stepping (kick). Returns the IK flags.
+function Walk:joint_angles(q, sensors, dt, support)
   local p = self.p
   local ji = self.ji
   local flags = self.model:legs_ik(self.lpose, self.rpose, q)
@@ -378,8 +379,8 @@ function Walk:joint_angles(q, sensors, dt)
     add_rot(self, q, ji.r_sho_pitch, 0, -p.armSwing * rel[1])
   end
   -- which leg carries the robot: the support leg while stepping, both at stance
-  local ss = self:single_support()
-  local sup = self.active and self.support or nil
+  local ss = support and 1 or self:single_support()
+  local sup = support or (self.active and self.support or nil)
   -- hip roll compensation of the sag in single support
   if sup ~= nil and ss > 0 then
     local c = p.hipRollCompensation * (sup == LEFT and 1 or -1)

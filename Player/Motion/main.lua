@@ -1,0 +1,134 @@
+-- The motion process: once per DCM tick, on the robot's clock, read the sensors, run the motion
+-- state machine (Player/Motion/control.lua) and write joint commands and hardness. Takes part in
+-- the sim's lockstep (each tick is finished before the DCM steps). `./run_main motion` starts it
+-- alone; `luajit Player/Motion/main.lua [--initial STATE]` with the env of Run/env.sh too.
+--
+-- Inputs through the `motion` shm block (Lib/Motion.lua, Lib/Walk.lua): request/request_seq,
+-- velocity, param_* (walk parameter changes and config re-reads). Outputs: state, walking, fallen,
+-- falls, fall_time, odometry, walk_velocity, tick.
+local ffi = require('ffi')
+local shm = require('shm')
+local Config = require('Config')
+local Body = require('Body')
+local lockstep = require('lockstep')
+local Motion = require('Motion')
+local WalkAPI = require('Walk')
+local kin = require('kinematics')
+local control = require('Motion.control')
+
+ffi.cdef [[ int getpid(void); ]]
+
+local args = { ... }
+local initial
+for i = 1, #args do
+  if args[i] == '--initial' then initial = args[i + 1] end
+end
+
+local robot = Config.load('robot')
+local params = Config.load('walk')
+initial = initial or Config.optional(params, 'initialState', 'stance')
+
+local ctl = control.new({ robot = robot, params = params, model = kin.load(), initial = initial })
+if initial == 'relax' or initial == 'sit' then ctl.want = initial end
+local n = ctl.n
+
+local sensor, actuator = Body.sensor, Body.actuator
+local motion = shm.open('motion')
+
+-- start from what the actuators hold now (no jump when the process restarts)
+for i = 1, n do
+  ctl.q[i] = actuator.command[i - 1]
+  ctl.h[i] = actuator.hardness[i - 1]
+end
+
+motion.pid[0] = ffi.C.getpid()
+local last_request = motion.request_seq[0]
+local last_param = motion.param_seq[0]
+
+-- Applies a walk parameter change or a config re-read from the motion block.
+local function apply_param()
+  local name = ffi.string(motion.param_name, 64):gsub('%z.*$', '')
+  local status = 0
+  if name == '' then
+    Config.reload()
+    local ok, fresh = pcall(Config.load, 'walk')
+    if ok then
+      for k, v in pairs(fresh) do rawset(params, k, v) end
+    else
+      io.stderr:write('motion: walk config reload failed: ', tostring(fresh), '\n')
+      status = -3
+    end
+  else
+    local count = motion.param_count[0]
+    local value
+    if count == 1 then value = motion.param_value[0]
+    else
+      value = {}
+      for i = 1, math.max(0, math.min(count, 4)) do value[i] = motion.param_value[i - 1] end
+    end
+    local values, code = WalkAPI.check(params, name, value)
+    if values then
+      local parent, key, cur = WalkAPI.lookup(params, name)
+      if type(cur) == 'number' then rawset(parent, key, values[1])
+      else for i = 1, #values do cur[i] = values[i] end end
+    else
+      status = code
+    end
+  end
+  motion.param_status[0] = status
+  motion.param_ack[0] = motion.param_seq[0]
+end
+
+local participant = lockstep.join()
+local tick = Body.get_tick()
+local pos, gyro, angle = ctl.pos, ctl.gyro, ctl.angle
+local hardness = actuator.hardness
+
+while true do
+  local t = Body.wait_tick(tick, 1.0)
+  if t then
+    tick = t
+    -- sensors (one consistent snapshot)
+    local time = sensor:read(function(s)
+      for i = 1, n do pos[i] = s.position[i - 1] end
+      gyro[1], gyro[2], gyro[3] = s.gyro[0], s.gyro[1], s.gyro[2]
+      angle[1], angle[2], angle[3] = s.angle[0], s.angle[1], s.angle[2]
+      return s.time[0]
+    end)
+    -- requests and parameters
+    if motion.request_seq[0] ~= last_request then
+      last_request = motion.request_seq[0]
+      local s = Motion.STATES[motion.request[0] + 1]
+      for name, state in pairs(Motion.REQUESTS) do
+        if state == s then ctl:request(name) end
+      end
+    end
+    if motion.param_seq[0] ~= last_param then
+      last_param = motion.param_seq[0]
+      apply_param()
+    end
+    local v = ctl.vel_cmd
+    v[1], v[2], v[3] = motion.velocity[0], motion.velocity[1], motion.velocity[2]
+    ctl.head[1], ctl.head[2] = motion.head_command[0], motion.head_command[1]
+    ctl:tick(time)
+    -- commands (Body clamps to the limits and refuses NaN)
+    Body.set_commands(ctl.q)
+    for i = 1, n do
+      local h = ctl.h[i]
+      if hardness[i - 1] ~= h then Body.set_hardness(i, h) end
+    end
+    actuator.tick_ack[0] = tick
+    local w = ctl.walk
+    motion:write(function(m)
+      m.state[0] = ctl:state_index()
+      m.walking[0] = w:is_active() and 1 or 0
+      m.fallen[0] = (ctl:state() == 'falling' or ctl:state():match('^standup')) and 1 or 0
+      m.falls[0] = ctl.falls
+      m.fall_time[0] = ctl.fall_time
+      m.odometry[0], m.odometry[1], m.odometry[2] = w.uTorso[1], w.uTorso[2], w.uTorso[3]
+      m.walk_velocity[0], m.walk_velocity[1], m.walk_velocity[2] = w.vel[1], w.vel[2], w.vel[3]
+      m.tick[0] = tick
+    end)
+    participant:done(tick, tick + 1)
+  end
+end

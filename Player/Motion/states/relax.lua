@@ -1,0 +1,13 @@
+-- relax: no torque; the commands follow the measured angles so that stiffening again is smooth.
+local M = {}
+
+function M.entry(c)
+  for i = 1, c.n do c.h[i] = 0 end
+end
+
+function M.update(c)
+  for i = 1, c.n do c.q[i] = c.pos[i] end
+  if c.want ~= 'relax' then return c.want == 'sit' and 'sit' or 'stand' end
+end
+
+return M
