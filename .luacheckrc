@@ -1,6 +1,6 @@
 std = "luajit"
 codes = true
-max_line_length = 110
+max_line_length = 120
 -- busted's globals only in specs
 files["Tests/**/*_spec.lua"] = { std = "+busted" }
 exclude_files = { "build/**" }

@@ -11,6 +11,11 @@ local native = require('native')
 local M = {}
 
 local cache = {}
+local root -- nil: the project's root
+
+-- Reads configs from another tree (tests); nil restores the project's root.
+function M.use_root(dir) root = dir cache = {} end
+local function config_root() return root or native.root() end
 
 function M.platform()
   local p = os.getenv('PLATFORM')
@@ -19,7 +24,7 @@ function M.platform()
 end
 
 function M.dir(platform)
-  return native.root() .. '/Config/' .. (platform or M.platform())
+  return config_root() .. '/Config/' .. (platform or M.platform())
 end
 
 local function is_dir(path)
@@ -67,7 +72,7 @@ function M.load(concern, spec, platform)
   local file = 'Config/' .. platform .. '/' .. concern .. '.lua'
   local cfg = cache[file]
   if not cfg then
-    local chunk, err = loadfile(native.root() .. '/' .. file)
+    local chunk, err = loadfile(config_root() .. '/' .. file)
     if not chunk then
       if err:find('No such file') or err:find('cannot open') then
         error(string.format("%s: missing config file for '%s' on platform %s", file, concern, platform), 2)

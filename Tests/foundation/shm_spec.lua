@@ -1,0 +1,101 @@
+-- Shared memory across processes and languages: C writer / Lua reader and the reverse,
+-- consistency under concurrent writing, the Python reader, layout errors.
+local shm = require('shm')
+local native = require('native')
+
+local peer = native.root() .. '/build/bin/shm_c_peer'
+
+local function run(cmd)
+  local h = io.popen(cmd .. ' 2>&1; echo "rc=$?"')
+  local out = h:read('*a')
+  h:close()
+  local rc = tonumber(out:match('rc=(%d+)%s*$'))
+  return out:gsub('rc=%d+%s*$', ''), rc
+end
+
+describe('shm', function()
+  local sensor = shm.open('dcm.sensor')
+
+  it('gives typed arrays straight into the segment', function()
+    assert.equal('cdata', type(sensor.position))
+    sensor.position[3] = 1.25
+    assert.equal(1.25, sensor:get('position')[4])
+    assert.equal(20, sensor:count('position'))
+    assert.has_error(function() sensor:get('nope') end, "shm block 'dcm.sensor' has no field 'nope'")
+  end)
+
+  it('a C writer in another process is seen by Lua', function()
+    local out, rc = run(peer .. ' write dcm.sensor gyro 0.5 -1.5 2.25')
+    assert.equal(0, rc, out)
+    assert.same({ 0.5, -1.5, 2.25 }, sensor:get('gyro'))
+  end)
+
+  it('a Lua write is seen by a C reader in another process', function()
+    sensor:write(function(s) s.accelerometer[0] = 0.125; s.accelerometer[2] = 9.81 end)
+    local out, rc = run(peer .. ' read dcm.sensor accelerometer')
+    assert.equal(0, rc)
+    assert.equal('0.125 0 9.8100000000000005', out:match('[^\n]+'))
+  end)
+
+  it('a Lua reader never sees a half-done multi-field update of a C writer', function()
+    sensor:write(function(s) s:set('gyro', 0); s.tick[0] = 0 end)   -- a consistent start
+    local writer = io.popen(peer .. ' stream dcm.sensor 400000 2>&1')
+    local reads, torn = 0, 0
+    local t_end = shm.C.shm_now() + 20
+    repeat
+      local g0, g1, g2, tick = sensor:read(function(s) return s.gyro[0], s.gyro[1], s.gyro[2], s.tick[0] end)
+      reads = reads + 1
+      if g1 ~= 2 * g0 or g2 ~= 3 * g0 or tick ~= g0 then torn = torn + 1 end
+    until tick == 400000 or shm.C.shm_now() > t_end
+    writer:close()
+    print(string.format('# %d Lua reads during 400000 C writes, %d torn', reads, torn))
+    assert.equal(0, torn)
+    assert.equal(400000, sensor.tick[0])
+  end)
+
+  it('a C reader never sees a half-done multi-field update of a Lua writer', function()
+    local checker = io.popen(peer .. ' check dcm.sensor 1.5 2>&1; echo "rc=$?"')
+    local t_end = shm.C.shm_now() + 1.6
+    local k = 0
+    while shm.C.shm_now() < t_end do
+      k = k + 1
+      sensor:write(function(s) s.gyro[0] = k; s.gyro[1] = 2 * k; s.gyro[2] = 3 * k; s.tick[0] = k end)
+    end
+    local out = checker:read('*a')
+    checker:close()
+    print('# C checker: ' .. out:gsub('\n', ' ') .. ' during ' .. k .. ' Lua writes')
+    assert.truthy(out:find('torn 0', 1, true), out)
+    assert.truthy(out:find('rc=0', 1, true), out)
+  end)
+
+  it('the Python reader finds fields by name from the segment alone', function()
+    sensor:write(function(s) s.time[0] = 3.5; s.angle[0] = -0.25; s.tick[0] = 77 end)
+    local out, rc = run('python3 ' .. native.root() .. '/Run/shm_read.py dcm.sensor angle')
+    assert.equal(0, rc, out)
+    assert.truthy(out:find('angle -0.25 0.0 0.0', 1, true), out)
+    out = run('python3 ' .. native.root() .. '/Run/shm_read.py dcm.sensor tick')
+    assert.truthy(out:find('tick 77', 1, true), out)
+  end)
+
+  it('an unknown block is an error that names it', function()
+    local ok, err = pcall(shm.open, 'no.such.block')
+    assert.is_false(ok)
+    assert.truthy(err:find("unknown block 'no.such.block'", 1, true))
+  end)
+
+  it('the shm tool lists, dumps, sets and removes a robot\'s blocks', function()
+    local robot = shm.robot_id() + 50000
+    local tool = native.root() .. '/Run/shm --robot ' .. robot
+    local b = shm.open('world', { robot = robot })
+    b:set('pose', { 1, 2, 3 })
+    local out = run(tool .. ' list')
+    assert.truthy(out:find('world', 1, true), out)
+    run(tool .. ' set world pose_confidence 0.75')
+    assert.equal(0.75, b.pose_confidence[0])
+    out = run(tool .. ' dump world pose')
+    assert.truthy(out:find('pose%s+f64%s*%[3%]%s+1 2 3'), out)
+    out = run(tool .. ' remove')
+    assert.truthy(out:find('removed 1 blocks', 1, true), out)
+    assert.is_nil((shm.open('world', { robot = robot + 1, attach = true, try = true })))
+  end)
+end)
