@@ -54,7 +54,8 @@ end
 
 -- One step at robot time t; returns the state's name and whether the robot is penalized.
 function Controller:update(t, button)
-  self.t_start = self.t_start or t
+  if not self.t_start or t < (self.t_last or t) then self.t_start = t end -- first call, or the clock restarted
+  self.t_last = t
   if self.sock then
     for _ = 1, 64 do -- bounded: a flood cannot stall the behavior
       local data = self.sock:receive()
