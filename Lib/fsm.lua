@@ -61,7 +61,9 @@ function M.new(def)
     if type(events) ~= 'table' then
       error(string.format("fsm '%s': transitions.%s must be a table of event = state", name, from), 2)
     end
-    for ev, to in pairs(events) do check_state(def, to, "event '" .. tostring(ev) .. "' from '" .. from .. "'") end
+    for ev, to in pairs(events) do
+      check_state(def, to, "event '" .. tostring(ev) .. "' from '" .. from .. "'")
+    end
   end
   return setmetatable({
     name = name, states = def.states, index_of = index, modules = modules, initial = initial,
@@ -114,7 +116,9 @@ end
 
 -- Forces the machine into state `s` (exit/entry run); for resets.
 function Machine:set(s, ctx)
-  if self.index_of[s] == nil then error("fsm '" .. self.name .. "': unknown state '" .. tostring(s) .. "'", 2) end
+  if self.index_of[s] == nil then
+    error("fsm '" .. self.name .. "': unknown state '" .. tostring(s) .. "'", 2)
+  end
   if self.current then
     local mod = self.modules[self.current]
     if mod.exit then mod.exit(ctx) end
