@@ -1,0 +1,276 @@
+-- Walking scenarios in the sim's lockstep, run by ./run_repl (see sim_walk_test.sh):
+--   ./run_repl Tests/motion/sim_scenarios.lua NAME [ARGS...]
+-- NAME: forward, sideways, turn, backward, random, push, kick, pushmax, speed. Prints TAP lines
+-- ("ok N - ..." / "not ok N - ...") and "# " figures; measured from the sim's truth (Sim.truth()).
+-- luacheck: globals Sim Motion Walk wait arg shm Body
+local name = arg[1]
+local count = 0
+local function tap(ok, msg)
+  count = count + 1
+  print(string.format('%s %d - %s', ok and 'ok' or 'not ok', count, msg))
+  io.stdout:flush()
+  return ok
+end
+local function note(fmt, ...) print('# ' .. string.format(fmt, ...)) io.stdout:flush() end
+local function wrap(a) return (a + math.pi) % (2 * math.pi) - math.pi end
+local deg = 180 / math.pi
+
+if not Sim or not Motion or not Walk then
+  tap(false, 'scenario ' .. tostring(name) .. ': Sim, Motion or Walk API missing')
+  os.exit(1)
+end
+
+-- waits (robot time) until the motion process runs: its tick follows the DCM's
+local motion = shm.open('motion')
+for _ = 1, 300 do
+  if motion.tick[0] ~= 0 and Body.get_tick() - motion.tick[0] <= 2 then break end
+  wait(0.1)
+end
+if Body.get_tick() - motion.tick[0] > 2 then
+  tap(false, 'the motion process is not running')
+  os.exit(1)
+end
+
+-- until(pred, timeout): waits in steps of 0.05 s until pred() is true; returns true or false
+local function wait_until(pred, timeout)
+  local t0 = Body.get_time()
+  while Body.get_time() - t0 < timeout do
+    if pred() then return true end
+    wait(0.05)
+  end
+  return pred()
+end
+
+local function stand(timeout)
+  Walk.set_velocity(0, 0, 0)
+  Motion.request('stand')
+  local ok = wait_until(function() return Motion.state() == 'stance' end, timeout or 10)
+  wait(1.5)
+  return ok
+end
+
+-- walks at (vx, vy, va) for `seconds` after `ramp` seconds; returns the measured velocity in the
+-- robot's start frame (m/s, m/s, rad/s), whether it fell, and the truth at start and end
+local function walk_for(vx, vy, va, seconds, ramp)
+  Motion.request('walk')
+  Walk.set_velocity(vx, vy, va)
+  wait(ramp or 2)
+  local a = Sim.truth()
+  local fell = false
+  local yaw, last = 0, a.yaw
+  local t0 = Body.get_time()
+  while Body.get_time() - t0 < seconds do
+    wait(0.1)
+    local s = Sim.truth()
+    yaw = yaw + wrap(s.yaw - last)
+    last = s.yaw
+    if s.fallen or Motion.falls() > 0 and Motion.state() ~= 'walk' then fell = true break end
+  end
+  local b = Sim.truth()
+  local dt = Body.get_time() - t0
+  local c, s = math.cos(a.yaw), math.sin(a.yaw)
+  local dx, dy = b.x - a.x, b.y - a.y
+  return { (c * dx + s * dy) / dt, (-s * dx + c * dy) / dt, yaw / dt }, fell, a, b, yaw
+end
+
+local function start_clean()
+  Sim.reset()
+  wait(0.2)
+  return stand()
+end
+
+local scenarios = {}
+
+function scenarios.forward(v)
+  v = tonumber(v) or 0.3
+  start_clean()
+  local t0 = Sim.truth()
+  local vel, fell, _, _, yaw = walk_for(v, 0, 0, 30, 3)
+  note('forward: commanded %.2f m/s, measured %.3f m/s over 30 s, sideways %.3f m/s, heading drift %.1f deg',
+    v, vel[1], vel[2], yaw * deg)
+  tap(not fell, 'forward walk: no fall in 30 s')
+  tap(vel[1] >= 0.25, string.format('forward walk at >= 0.25 m/s (measured %.3f)', vel[1]))
+  tap(math.abs(yaw) * deg < 10, string.format('heading drift below 10 deg (%.1f)', yaw * deg))
+  -- stop into stance: the walk finishes its step and the torso comes to rest
+  Walk.set_velocity(0, 0, 0)
+  Motion.request('stand')
+  local stopped = wait_until(function() return Motion.state() == 'stance' end, 3)
+  wait(1.0)
+  local a = Sim.truth()
+  wait(1.0)
+  local b = Sim.truth()
+  local still = math.sqrt((b.x - a.x) ^ 2 + (b.y - a.y) ^ 2)
+  tap(stopped and not b.fallen and still < 0.005,
+    string.format('stops into stance within 3 s and stands still (moved %.4f m in 1 s)', still))
+  note('start to stop: %.2f m', math.sqrt((b.x - t0.x) ^ 2 + (b.y - t0.y) ^ 2))
+end
+
+function scenarios.sideways(v)
+  v = tonumber(v) or 0.1
+  start_clean()
+  local vel, fell = walk_for(0, v, 0, 15, 2)
+  note('sideways: commanded %.3f m/s, measured %.3f m/s (forward %.3f)', v, vel[2], vel[1])
+  tap(not fell and vel[2] >= 0.1, string.format('sideways 0.1 m/s for 15 s (measured %.3f)', vel[2]))
+  vel, fell = walk_for(0, -v, 0, 8, 2)
+  tap(not fell and vel[2] <= -0.1, string.format('sideways right 0.1 m/s (measured %.3f)', vel[2]))
+  tap(stand(5) and not Sim.truth().fallen, 'stops into stance')
+end
+
+function scenarios.turn(v)
+  v = tonumber(v) or 1.0
+  start_clean()
+  local a0 = Sim.truth()
+  local vel, fell, _, b = walk_for(0, 0, v, 10, 2)
+  local drift = math.sqrt((b.x - a0.x) ^ 2 + (b.y - a0.y) ^ 2)
+  note('turn: commanded %.2f rad/s, measured %.3f rad/s, position drift %.2f m', v, vel[3], drift)
+  tap(not fell and vel[3] >= 1.0, string.format('turning on the spot at 1 rad/s (measured %.3f)', vel[3]))
+  vel, fell = walk_for(0, 0, -v, 6, 2)
+  tap(not fell and vel[3] <= -1.0, string.format('turning right at 1 rad/s (measured %.3f)', vel[3]))
+  tap(stand(5) and not Sim.truth().fallen, 'stops into stance')
+end
+
+function scenarios.backward(v)
+  v = tonumber(v) or 0.1
+  start_clean()
+  local vel, fell = walk_for(-v, 0, 0, 15, 2)
+  note('backward: commanded %.3f m/s, measured %.3f m/s', -v, vel[1])
+  tap(not fell and vel[1] <= -0.1, string.format('backwards 0.1 m/s for 15 s (measured %.3f)', vel[1]))
+  tap(stand(5) and not Sim.truth().fallen, 'stops into stance')
+end
+
+function scenarios.random(seconds, seed)
+  seconds = tonumber(seconds) or 60
+  local s = (tonumber(seed) or 1) * 7919 + 11
+  local function rnd()
+    s = (s * 1103515245 + 12345) % 2147483648
+    return s / 2147483648
+  end
+  start_clean()
+  Motion.request('walk')
+  local lim = { Walk.get('velLimitX'), Walk.get('velLimitY'), Walk.get('velLimitA') }
+  local t0 = Body.get_time()
+  local fell, changes = false, 0
+  while Body.get_time() - t0 < seconds and not fell do
+    local v = {}
+    for k = 1, 3 do v[k] = lim[k][1] + rnd() * (lim[k][2] - lim[k][1]) end
+    Walk.set_velocity(v[1], v[2], v[3])
+    changes = changes + 1
+    local hold = 1 + 3 * rnd()
+    local t1 = Body.get_time()
+    while Body.get_time() - t1 < hold do
+      wait(0.1)
+      if Sim.truth().fallen or Motion.falls() > 0 then fell = true break end
+    end
+  end
+  note('random: %d commands in %.0f s', changes, Body.get_time() - t0)
+  tap(not fell, string.format('%.0f s of random velocity commands without a fall', seconds))
+end
+
+-- pushes the walking robot over (fx along its heading) and follows the recovery
+local function push_over(dir)
+  start_clean()
+  Motion.request('walk')
+  Walk.set_velocity(0.1, 0, 0)
+  wait(3)
+  local falls0 = Motion.falls()
+  local a = Sim.truth()
+  local f = 60 * dir
+  Sim.push(f * math.cos(a.yaw), f * math.sin(a.yaw), 0.15)
+  local t_push = Body.get_time()
+  local t_fallen, t_detect
+  wait_until(function()
+    if not t_fallen and Sim.truth().fallen then t_fallen = Body.get_time() end
+    if not t_detect and Motion.falls() > falls0 then t_detect = motion.fall_time[0] end
+    return t_fallen and t_detect
+  end, 4)
+  local what = dir > 0 and 'forwards' or 'backwards'
+  if not t_fallen then
+    tap(false, 'pushed ' .. what .. ': the robot did not fall (push too weak)')
+    return
+  end
+  local lag = t_detect and (t_detect - t_fallen) or math.huge
+  note('pushed %s: fallen (truth) %.2f s after the push; detected %.2f s after the push (%.2f s after truth)',
+    what, t_fallen - t_push, (t_detect or math.huge) - t_push, lag)
+  tap(t_detect ~= nil and lag <= 0.3, string.format('pushed %s: fall detected within 0.3 s (%.2f s)', what, lag))
+  local up = wait_until(function() return Motion.state() == 'walk' and not Sim.truth().fallen end, 25)
+  note('pushed %s: state %s, falls %d', what, Motion.state(), Motion.falls() - falls0)
+  tap(up, string.format('pushed %s: stands up by itself (%d attempts)', what, Motion.falls() - falls0))
+  local b = Sim.truth()
+  wait(4)
+  local c = Sim.truth()
+  local d = math.sqrt((c.x - b.x) ^ 2 + (c.y - b.y) ^ 2)
+  tap(up and not c.fallen and d > 0.15, string.format('pushed %s: walks again (%.2f m in 4 s)', what, d))
+end
+
+function scenarios.push()
+  push_over(1)
+  push_over(-1)
+end
+
+function scenarios.kick(side)
+  side = side or 'left'
+  start_clean()
+  local r = Sim.truth()
+  -- ball centre 0.1 m ahead of the kicking foot's toe, in line with the foot's centre
+  local sgn = side == 'left' and 1 or -1
+  local toe, foot_y = 0.0635, 0.048
+  local bx, by = 0.0 + toe + 0.1, sgn * foot_y
+  local c, s = math.cos(r.yaw), math.sin(r.yaw)
+  Sim.teleport_ball(r.x + c * bx - s * by, r.y + s * bx + c * by)
+  wait(0.5)
+  local b0 = Sim.truth().ball
+  Motion.request('kick_' .. side)
+  wait(8)
+  local b1 = Sim.truth().ball
+  local d = math.sqrt((b1.x - b0.x) ^ 2 + (b1.y - b0.y) ^ 2)
+  note('kick %s: ball travelled %.2f m (speed now %.2f m/s)', side, d, math.sqrt(b1.vx ^ 2 + b1.vy ^ 2))
+  tap(d >= 2.0, string.format('kick %s: a ball 0.1 m ahead of the foot travels >= 2 m (%.2f m)', side, d))
+  tap(not Sim.truth().fallen and Motion.state() == 'stance', 'kick ' .. side .. ': stays up, back in stance')
+end
+
+-- largest sideways push (N for 0.1 s) survived while walking in place at 0.1 m/s forward
+function scenarios.pushmax(label)
+  local lo, hi = 0, 80
+  local function survives(f)
+    start_clean()
+    Motion.request('walk')
+    Walk.set_velocity(0.1, 0, 0)
+    wait(3)
+    local a = Sim.truth()
+    Sim.push(-f * math.sin(a.yaw), f * math.cos(a.yaw), 0.1)
+    local fell = wait_until(function() return Sim.truth().fallen or Motion.falls() > 0 end, 4)
+    return not fell
+  end
+  for _ = 1, 6 do
+    local mid = 0.5 * (lo + hi)
+    if survives(mid) then lo = mid else hi = mid end
+  end
+  note('pushmax %s: largest sideways push survived while walking: %.1f N x 0.1 s = %.2f N s', label or '', lo,
+    lo * 0.1)
+  print(string.format('pushmax %s %.3f', label or '', lo * 0.1))
+end
+
+-- top sustained speed along one axis: the fastest command (in steps) walked for 30 s with no fall
+function scenarios.speed(axis, ...)
+  local k = ({ x = 1, y = 2, a = 3 })[axis]
+  local best = 0
+  for _, v in ipairs({ ... }) do
+    v = tonumber(v)
+    start_clean()
+    local cmd = { 0, 0, 0 }
+    cmd[k] = v
+    local vel, fell = walk_for(cmd[1], cmd[2], cmd[3], 30, 3)
+    note('speed %s: command %.3f -> measured %.3f %s', axis, v, vel[k], fell and '(fell)' or '')
+    if fell then break end
+    best = math.max(best, math.abs(vel[k]))
+  end
+  print(string.format('speed %s %.3f', axis, best))
+end
+
+local f = scenarios[name]
+if not f then
+  tap(false, 'unknown scenario ' .. tostring(name))
+  os.exit(1)
+end
+f(select(2, unpack(arg)))
+Walk.set_velocity(0, 0, 0)
