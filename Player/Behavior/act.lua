@@ -47,7 +47,9 @@ end
 -- Walk with (vx, vy, va); starts the walk when the robot stands.
 function M.walk(vx, vy, va)
   set_velocity(vx, vy, va)
-  if Motion and not M.busy() and M.motion_state() ~= 'walk' then Motion.request('walk') end
+  if Motion and not M.busy() and M.motion_state() ~= 'walk' and Motion.requested() ~= 'walk' then
+    Motion.request('walk')
+  end
 end
 
 -- Stop walking and stand.
@@ -55,7 +57,7 @@ function M.stop()
   set_velocity(0, 0, 0)
   if Motion and not M.busy() then
     local s = M.motion_state()
-    if s ~= 'stand' and s ~= 'stance' then Motion.request('stand') end
+    if s ~= 'stance' and Motion.requested() ~= 'stance' then Motion.request('stand') end
   end
 end
 

@@ -124,7 +124,17 @@ end
 -- Goal posts seen: list of {x, y} in the robot frame.
 function Filter:observe_posts(posts)
   if #posts == 0 then return end
-  if #posts == 2 and (self.confidence or 0) < self.cfg.reset_below then
+  -- how well the belief explains this sighting (the mean likelihood over the particles)
+  local fit = 0
+  for i = 1, self.n do
+    local l = 1
+    for _, p in ipairs(posts) do
+      l = l * self:post_likelihood(i, sqrt(p[1] * p[1] + p[2] * p[2]), atan2(p[2], p[1]))
+    end
+    fit = fit + self.w[i] * l
+  end
+  self.fit = 0.8 * (self.fit or 1) + 0.2 * math.min(1, fit / 0.3)
+  if #posts == 2 and ((self.confidence or 0) < self.cfg.reset_below or fit < 0.05) then
     -- sensor resetting: a few particles jump to the poses this sighting implies
     local cands = self:poses_from_two_posts(posts[1], posts[2])
     -- each candidate in proportion to how well the current belief supports it (the history
@@ -140,7 +150,7 @@ function Filter:observe_posts(posts)
       total_support = total_support + sum
     end
     if #cands > 0 then
-      local k = floor(self.n * self.cfg.reset_fraction)
+      local k = floor(self.n * (fit < 0.05 and 0.3 or self.cfg.reset_fraction))
       for _ = 1, k do
         local u, ci = self.rng() * total_support, 1
         while ci < #cands and u > support[ci] do u = u - support[ci] ci = ci + 1 end
@@ -234,7 +244,8 @@ function Filter:estimate()
   var = var / sw
   local rlen = sqrt(sc * sc + ss * ss) / sw -- 1 when all headings agree
   self.x, self.y, self.a = x, y, a
-  self.confidence = math.max(0, math.min(1, rlen * exp(-var / 0.5)))
+  -- spread of the cloud, and how well it has explained recent sightings
+  self.confidence = math.max(0, math.min(1, rlen * exp(-var / 0.5) * (self.fit or 1)))
   return x, y, a, self.confidence
 end
 
