@@ -1,0 +1,470 @@
+/* dxl_emulator: a virtual Dynamixel bus on a pseudo-terminal, for tests and bring-up without
+ * hardware.
+ *
+ *   dxl_emulator [--link PATH] [--protocol 1|2] [--ids A-B] [--baud N] [--timing]
+ *                [--drop P] [--corrupt P] [--delay S] [--dead ID]... [--tau S] [--seed N]
+ *                [--stdin] [--quiet]
+ *
+ * --protocol 1 (default): a DARwIn-OP chain: MX-28 servos (ids 1-20) and the CM-730 (id 200).
+ * --protocol 2: an OP3 chain: XM430-W350 servos (ids 1-20) and the OpenCR (id 200).
+ * Servos move first-order towards the goal (time constant --tau, capped at the servo's no-load
+ * speed). --timing adds the wire time of every packet at --baud (10 bits a byte) and each
+ * device's return delay time. Faults: --drop P (no answer), --corrupt P (one byte of an answer
+ * flipped), --delay S (extra latency before every answer), --dead ID (never answers).
+ * --stdin reads commands, one per line:  button MASK | gyro X Y Z (rad/s) | accel X Y Z (m/s^2)
+ *   | dead ID | alive ID | stats | quit.
+ * Prints "dxl_emulator: ready <pty>" on stderr when the port can be opened.
+ */
+#include "dynamixel/dynamixel.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <math.h>
+#include <poll.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <termios.h>
+#include <time.h>
+#include <unistd.h>
+
+enum { MX28, XM430, CM730, OPENCR };
+
+#define TABLE 256
+#define MAXDEV 32
+#define PI 3.14159265358979323846
+
+typedef struct device {
+  int kind;
+  uint8_t id;
+  uint8_t t[TABLE];        /* control table */
+  double pos;              /* counts */
+  double vel;              /* counts/s */
+  int dead;
+} device;
+
+static device dev[MAXDEV];
+static int ndev;
+static int protocol = 1;
+static int baud = 1000000;
+static int timing;
+static double p_drop, p_corrupt, extra_delay, tau = 0.03;
+static int quiet;
+static volatile sig_atomic_t stop;
+static double last_update;
+/* IMU truth in SI, torso frame; buttons bit mask */
+static double gyro[3], accel[3] = { 0, 0, 9.81 };
+static int buttons;
+static unsigned long n_rx, n_tx, n_dropped, n_corrupted, n_bad;
+
+/* ---------------------------------------------------------------- control tables */
+
+/* Address ranges that a WRITE may touch, per kind (others: access error). */
+static int writable(int kind, int addr, int len) {
+  int end = addr + len;
+  switch (kind) {
+  case MX28:   /* EEPROM 3..18, RAM 24..35 (torque..torque limit), 47..49 (lock, punch), 73 */
+    return (addr >= 3 && end <= 19) || (addr >= 24 && end <= 36) || (addr >= 47 && end <= 50) ||
+           (addr == 73 && end == 74);
+  case XM430:  /* EEPROM 7..63, RAM 64..68, 76..119 (gains, profiles, goals) */
+    return (addr >= 7 && end <= 69) || (addr >= 76 && end <= 120);
+  case CM730:
+  case OPENCR: /* power, LEDs */
+    return addr >= 24 && end <= 30;
+  default: return 0;
+  }
+}
+
+static void put16(device *d, int a, int v) { dxl_put16(d->t + a, (uint16_t)v); }
+static void put32(device *d, int a, long v) { dxl_put32(d->t + a, (uint32_t)v); }
+
+static void add_device(int kind, uint8_t id) {
+  if (ndev >= MAXDEV) return;
+  device *d = &dev[ndev++];
+  memset(d, 0, sizeof *d);
+  d->kind = kind;
+  d->id = id;
+  switch (kind) {
+  case MX28:
+    put16(d, 0, 29); d->t[2] = 30; d->t[3] = id; d->t[4] = 1; d->t[5] = 0;   /* return delay 0 */
+    put16(d, 6, 0); put16(d, 8, 4095); d->t[11] = 80; d->t[12] = 60; d->t[13] = 160;
+    put16(d, 14, 1023); d->t[16] = 2; d->t[17] = 36; d->t[18] = 36;
+    d->t[28] = 32; put16(d, 30, 2048); put16(d, 34, 1023); put16(d, 36, 2048);
+    d->t[42] = 120; d->t[43] = 40; put16(d, 48, 0);
+    d->pos = 2048;
+    break;
+  case XM430:
+    put16(d, 0, 1020); d->t[6] = 45; d->t[7] = id; d->t[8] = 3; d->t[9] = 0; d->t[11] = 3;
+    d->t[13] = 2; d->t[31] = 80; put16(d, 32, 160); put16(d, 34, 95); put16(d, 36, 885);
+    put16(d, 38, 1193); put32(d, 44, 200); put32(d, 48, 4095); put32(d, 52, 0);
+    d->t[68] = 2; put16(d, 84, 800); put32(d, 116, 2048); put32(d, 132, 2048);
+    put16(d, 144, 120); d->t[146] = 40;
+    d->pos = 2048;
+    break;
+  case CM730:
+    put16(d, 0, 0x7300); d->t[2] = 0x11; d->t[3] = id; d->t[4] = 1; d->t[16] = 2; d->t[24] = 1;
+    break;
+  case OPENCR:
+    put16(d, 0, 0x7400); d->t[6] = 0x11; d->t[7] = id; d->t[8] = 3; d->t[16] = 2; d->t[24] = 1;
+    break;
+  }
+}
+
+static device *find(uint8_t id) {
+  for (int i = 0; i < ndev; i++) if (dev[i].id == id) return &dev[i];
+  return NULL;
+}
+
+static int clampi(double v, int lo, int hi) { return v < lo ? lo : v > hi ? hi : (int)lround(v); }
+
+/* Sensor registers of the sub-controller from the IMU truth. CM-730: 10-bit, 512 = 0,
+ * gyro +-1600 deg/s and accelerometer +-4 g over the range (order Z Y X for the gyro).
+ * OpenCR (as emulated here): signed 16-bit, gyro 0.06103 deg/s and accel 1/2048 g per count. */
+static void update_board(device *d) {
+  if (d->kind == CM730) {
+    double gs = 512.0 / (1600.0 * PI / 180.0), as = 512.0 / (4 * 9.80665);
+    d->t[30] = (uint8_t)buttons;
+    put16(d, 38, clampi(512 + gyro[2] * gs, 0, 1023));
+    put16(d, 40, clampi(512 + gyro[1] * gs, 0, 1023));
+    put16(d, 42, clampi(512 + gyro[0] * gs, 0, 1023));
+    put16(d, 44, clampi(512 + accel[0] * as, 0, 1023));
+    put16(d, 46, clampi(512 + accel[1] * as, 0, 1023));
+    put16(d, 48, clampi(512 + accel[2] * as, 0, 1023));
+    d->t[50] = 121;
+  } else if (d->kind == OPENCR) {
+    double gs = 1.0 / (0.06103 * PI / 180.0), as = 2048.0 / 9.80665;
+    d->t[30] = (uint8_t)buttons;
+    for (int k = 0; k < 3; k++) {
+      put16(d, 38 + 2 * k, (uint16_t)(int16_t)clampi(gyro[k] * gs, -32768, 32767));
+      put16(d, 44 + 2 * k, (uint16_t)(int16_t)clampi(accel[k] * as, -32768, 32767));
+    }
+    put16(d, 50, 121);
+  }
+}
+
+/* First-order motion of every servo towards its goal since the last update. */
+static void update_motion(double now) {
+  double dt = now - last_update;
+  last_update = now;
+  if (dt <= 0) return;
+  if (dt > 0.5) dt = 0.5;
+  for (int i = 0; i < ndev; i++) {
+    device *d = &dev[i];
+    if (d->kind == MX28 || d->kind == XM430) {
+      int mx = d->kind == MX28;
+      int torque = mx ? d->t[24] : d->t[64];
+      double goal = mx ? dxl_get16(d->t + 30) : (double)(int32_t)dxl_get32(d->t + 116);
+      /* no-load speed: MX-28 55 rpm, XM430-W350 46 rpm; moving speed / profile velocity cap */
+      double vmax = (mx ? 55.0 : 46.0) / 60.0 * 4096.0;
+      if (mx && dxl_get16(d->t + 32)) vmax = fmin(vmax, dxl_get16(d->t + 32) * 0.114 / 60 * 4096);
+      if (!mx && dxl_get32(d->t + 112)) vmax = fmin(vmax, dxl_get32(d->t + 112) * 0.229 / 60 * 4096);
+      double before = d->pos;
+      if (torque) {
+        double step = (goal - d->pos) * (1.0 - exp(-dt / tau));
+        double lim = vmax * dt;
+        if (step > lim) step = lim;
+        if (step < -lim) step = -lim;
+        d->pos += step;
+      }
+      d->vel = (d->pos - before) / dt;
+      double err = torque ? goal - d->pos : 0;
+      if (mx) {
+        put16(d, 36, clampi(d->pos, 0, 4095));
+        double rpm = d->vel / 4096.0 * 60.0;
+        int sp = clampi(fabs(rpm) / 0.114, 0, 1023) | (rpm < 0 ? 1024 : 0);
+        put16(d, 38, sp);
+        int ld = clampi(fabs(err) * 4, 0, dxl_get16(d->t + 34)) | (err < 0 ? 1024 : 0);
+        put16(d, 40, ld);
+        d->t[46] = fabs(goal - d->pos) > 1.0;
+      } else {
+        put32(d, 132, (long)lround(d->pos));
+        put32(d, 128, (long)lround(d->vel / 4096.0 * 60.0 / 0.229));
+        put16(d, 126, (uint16_t)(int16_t)clampi(err * 2, -1193, 1193));
+        d->t[122] = fabs(goal - d->pos) > 1.0;
+      }
+    } else {
+      update_board(d);
+    }
+  }
+}
+
+/* ---------------------------------------------------------------- timing and faults */
+
+static double now_s(void) { return dxl_now(); }
+
+static void sleep_until(double t) {
+  struct timespec ts;
+  ts.tv_sec = (time_t)t;
+  ts.tv_nsec = (long)((t - (double)ts.tv_sec) * 1e9);
+  while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &ts, NULL) == EINTR && !stop) {}
+}
+
+static double urand(void) { return (double)rand() / ((double)RAND_MAX + 1.0); }
+
+static double byte_time(void) { return 10.0 / baud; }
+
+static int return_delay_us(device *d) {
+  int v = (d->kind == MX28 || d->kind == CM730) ? d->t[5] : d->t[9];
+  return 2 * v;
+}
+
+/* Output queue: status packets with the time they are due on the wire. */
+static uint8_t outbuf[65536];
+static size_t outlen;
+static double bus_free;    /* time the (emulated) half-duplex bus is free */
+
+static void emit(device *d, uint8_t error, const uint8_t *data, size_t n) {
+  if (d->dead) return;
+  if (p_drop > 0 && urand() < p_drop) { n_dropped++; return; }
+  uint8_t pk[DXL_MAX_PACKET];
+  int len = dxl_build_status(protocol, d->id, error, data, n, pk, sizeof pk);
+  if (len <= 0) return;
+  if (p_corrupt > 0 && urand() < p_corrupt) {
+    int at = 2 + rand() % (len - 2);
+    pk[at] ^= (uint8_t)(1 + rand() % 255);
+    n_corrupted++;
+  }
+  if (timing) {
+    /* the answer starts after the return delay and occupies the bus for len byte times */
+    double start = bus_free + return_delay_us(d) * 1e-6;
+    bus_free = start + len * byte_time();
+  }
+  if (outlen + (size_t)len <= sizeof outbuf) {
+    memcpy(outbuf + outlen, pk, (size_t)len);
+    outlen += (size_t)len;
+    n_tx++;
+  }
+}
+
+/* ---------------------------------------------------------------- instructions */
+
+static int status_level(device *d) {
+  return (d->kind == XM430) ? d->t[68] : d->t[16];
+}
+
+static uint8_t err_access(void) { return protocol == 1 ? DXL1_ERR_RANGE : DXL2_ERR_ACCESS; }
+static uint8_t err_inst(void) { return protocol == 1 ? DXL1_ERR_INSTRUCTION : DXL2_ERR_INSTRUCTION; }
+
+static void do_read(device *d, int addr, int len, int reply) {
+  if (addr < 0 || len <= 0 || addr + len > TABLE) { if (reply) emit(d, err_access(), NULL, 0); return; }
+  if (reply) emit(d, 0, d->t + addr, (size_t)len);
+}
+
+static void do_write(device *d, int addr, const uint8_t *data, int len, int reply) {
+  int ok = addr >= 0 && len > 0 && addr + len <= TABLE && writable(d->kind, addr, len);
+  if (ok) {
+    memcpy(d->t + addr, data, (size_t)len);
+    /* a new goal while torque is off makes the servo hold where it is (as the real ones) */
+  }
+  if (reply && status_level(d) >= 2) emit(d, ok ? 0 : err_access(), NULL, 0);
+}
+
+static void handle(const dxl_packet *p) {
+  n_rx++;
+  update_motion(now_s());
+  const uint8_t *a = p->params;
+  int n = p->nparams;
+  int bcast = p->id == DXL_BROADCAST_ID;
+  device *d = bcast ? NULL : find(p->id);
+  if (!bcast && !d) return;
+  int w = protocol == 1 ? 1 : 2;   /* address width */
+  switch (p->instruction) {
+  case DXL_INST_PING:
+    if (bcast) { for (int i = 0; i < ndev; i++) { uint8_t m[3] = { dev[i].t[0], dev[i].t[1], protocol == 1 ? 0 : dev[i].t[6] };
+                                                  emit(&dev[i], 0, m, protocol == 1 ? 0 : 3); } }
+    else { uint8_t m[3] = { d->t[0], d->t[1], d->t[6] }; emit(d, 0, m, protocol == 1 ? 0 : 3); }
+    break;
+  case DXL_INST_READ:
+    if (bcast || n != 2 * w) { if (d) emit(d, err_inst(), NULL, 0); break; }
+    do_read(d, w == 1 ? a[0] : dxl_get16(a), w == 1 ? a[1] : dxl_get16(a + 2), 1);
+    break;
+  case DXL_INST_WRITE:
+    if (n < w + 1) { if (d) emit(d, err_inst(), NULL, 0); break; }
+    if (bcast) for (int i = 0; i < ndev; i++) do_write(&dev[i], w == 1 ? a[0] : dxl_get16(a), a + w, n - w, 0);
+    else do_write(d, w == 1 ? a[0] : dxl_get16(a), a + w, n - w, 1);
+    break;
+  case DXL_INST_SYNC_WRITE: {
+    if (!bcast || n < 2 * w) break;
+    int addr = w == 1 ? a[0] : dxl_get16(a), len = w == 1 ? a[1] : dxl_get16(a + 2);
+    for (int k = 2 * w; len > 0 && k + 1 + len <= n; k += 1 + len) {
+      device *t = find(a[k]);
+      if (t) do_write(t, addr, a + k + 1, len, 0);
+    }
+    break;
+  }
+  case DXL_INST_SYNC_READ: {
+    if (protocol != 2 || !bcast || n < 4) break;
+    int addr = dxl_get16(a), len = dxl_get16(a + 2);
+    for (int k = 4; k < n; k++) { device *t = find(a[k]); if (t) do_read(t, addr, len, 1); }
+    break;
+  }
+  case DXL_INST_BULK_READ:
+    if (!bcast) break;
+    if (protocol == 1) {
+      for (int k = 1; k + 2 < n; k += 3) { device *t = find(a[k + 1]); if (t) do_read(t, a[k + 2], a[k], 1); }
+    } else {
+      for (int k = 0; k + 4 < n; k += 5) {
+        device *t = find(a[k]);
+        if (t) do_read(t, dxl_get16(a + k + 1), dxl_get16(a + k + 3), 1);
+      }
+    }
+    break;
+  default:
+    if (d) emit(d, err_inst(), NULL, 0);
+  }
+}
+
+/* ---------------------------------------------------------------- commands on stdin */
+
+static void command(char *line) {
+  char cmd[32];
+  double x, y, z;
+  int v;
+  if (sscanf(line, "%31s", cmd) != 1) return;
+  if (!strcmp(cmd, "button") && sscanf(line, "%*s %d", &v) == 1) buttons = v;
+  else if (!strcmp(cmd, "gyro") && sscanf(line, "%*s %lf %lf %lf", &x, &y, &z) == 3) { gyro[0] = x; gyro[1] = y; gyro[2] = z; }
+  else if (!strcmp(cmd, "accel") && sscanf(line, "%*s %lf %lf %lf", &x, &y, &z) == 3) { accel[0] = x; accel[1] = y; accel[2] = z; }
+  else if (!strcmp(cmd, "dead") && sscanf(line, "%*s %d", &v) == 1) { device *d = find((uint8_t)v); if (d) d->dead = 1; }
+  else if (!strcmp(cmd, "alive") && sscanf(line, "%*s %d", &v) == 1) { device *d = find((uint8_t)v); if (d) d->dead = 0; }
+  else if (!strcmp(cmd, "corrupt") && sscanf(line, "%*s %lf", &x) == 1) p_corrupt = x;
+  else if (!strcmp(cmd, "drop") && sscanf(line, "%*s %lf", &x) == 1) p_drop = x;
+  else if (!strcmp(cmd, "quit")) stop = 1;
+  else if (!strcmp(cmd, "stats")) {
+    printf("rx %lu tx %lu dropped %lu corrupted %lu bad %lu\n", n_rx, n_tx, n_dropped, n_corrupted, n_bad);
+    for (int i = 0; i < ndev; i++) {
+      device *d = &dev[i];
+      if (d->kind == MX28) printf("servo %d goal %d pos %d torque %d torque_limit %d\n", d->id,
+                                  dxl_get16(d->t + 30), dxl_get16(d->t + 36), d->t[24], dxl_get16(d->t + 34));
+      else if (d->kind == XM430) printf("servo %d goal %d pos %d torque %d\n", d->id,
+                                        (int32_t)dxl_get32(d->t + 116), (int32_t)dxl_get32(d->t + 132), d->t[64]);
+    }
+    printf("end\n");
+    fflush(stdout);
+  }
+}
+
+/* ---------------------------------------------------------------- main */
+
+static void on_signal(int s) { (void)s; stop = 1; }
+
+static void usage(void) {
+  fprintf(stderr, "usage: dxl_emulator [--link PATH] [--protocol 1|2] [--ids A-B] [--baud N] [--timing]\n"
+                  "       [--drop P] [--corrupt P] [--delay S] [--dead ID]... [--tau S] [--seed N] [--stdin] [--quiet]\n");
+}
+
+int main(int argc, char **argv) {
+  const char *link_path = NULL;
+  int id_lo = 1, id_hi = 20, use_stdin = 0;
+  int dead[64], ndead = 0;
+  unsigned seed = 1;
+  for (int i = 1; i < argc; i++) {
+    const char *o = argv[i];
+    const char *v = i + 1 < argc ? argv[i + 1] : NULL;
+    if (!strcmp(o, "--link") && v) { link_path = v; i++; }
+    else if (!strcmp(o, "--protocol") && v) { protocol = atoi(v); i++; }
+    else if (!strcmp(o, "--ids") && v) { if (sscanf(v, "%d-%d", &id_lo, &id_hi) != 2) { usage(); return 2; } i++; }
+    else if (!strcmp(o, "--baud") && v) { baud = atoi(v); i++; }
+    else if (!strcmp(o, "--timing")) timing = 1;
+    else if (!strcmp(o, "--drop") && v) { p_drop = atof(v); i++; }
+    else if (!strcmp(o, "--corrupt") && v) { p_corrupt = atof(v); i++; }
+    else if (!strcmp(o, "--delay") && v) { extra_delay = atof(v); i++; }
+    else if (!strcmp(o, "--dead") && v) { if (ndead < 64) dead[ndead++] = atoi(v); i++; }
+    else if (!strcmp(o, "--tau") && v) { tau = atof(v); i++; }
+    else if (!strcmp(o, "--seed") && v) { seed = (unsigned)atoi(v); i++; }
+    else if (!strcmp(o, "--stdin")) use_stdin = 1;
+    else if (!strcmp(o, "--quiet")) quiet = 1;
+    else { usage(); return 2; }
+  }
+  if ((protocol != 1 && protocol != 2) || baud <= 0 || id_lo < 0 || id_hi > 252 || id_lo > id_hi ||
+      tau <= 0) { usage(); return 2; }
+  srand(seed);
+  for (int id = id_lo; id <= id_hi && ndev < MAXDEV - 1; id++) add_device(protocol == 1 ? MX28 : XM430, (uint8_t)id);
+  add_device(protocol == 1 ? CM730 : OPENCR, 200);
+  for (int k = 0; k < ndead; k++) { device *d = find((uint8_t)dead[k]); if (d) d->dead = 1; }
+
+  int m = posix_openpt(O_RDWR | O_NOCTTY);
+  if (m < 0 || grantpt(m) != 0 || unlockpt(m) != 0) { perror("dxl_emulator: posix_openpt"); return 1; }
+  const char *sname = ptsname(m);
+  char slave_name[128];
+  snprintf(slave_name, sizeof slave_name, "%s", sname ? sname : "");
+  /* keep a slave fd open: raw mode, and no hang-up when a client closes and reopens */
+  int s = open(slave_name, O_RDWR | O_NOCTTY);
+  if (s < 0) { perror("dxl_emulator: open slave"); return 1; }
+  struct termios t;
+  tcgetattr(s, &t);
+  cfmakeraw(&t);
+  cfsetspeed(&t, B1000000);
+  tcsetattr(s, TCSANOW, &t);
+  if (link_path) {
+    unlink(link_path);
+    if (symlink(slave_name, link_path) != 0) { fprintf(stderr, "dxl_emulator: symlink %s: %s\n", link_path, strerror(errno)); return 1; }
+  }
+  signal(SIGINT, on_signal);
+  signal(SIGTERM, on_signal);
+  signal(SIGPIPE, SIG_IGN);
+  fcntl(m, F_SETFL, fcntl(m, F_GETFL) | O_NONBLOCK);
+  fprintf(stderr, "dxl_emulator: ready %s%s%s (protocol %d, %d devices, %s)\n", slave_name,
+          link_path ? " -> " : "", link_path ? link_path : "", protocol, ndev,
+          timing ? "timing model on" : "no timing model");
+  last_update = now_s();
+  update_motion(last_update);
+
+  static uint8_t in[8192];
+  size_t inlen = 0;
+  static dxl_packet pkt;
+  char line[256];
+  size_t linelen = 0;
+  while (!stop) {
+    struct pollfd pf[2] = { { m, POLLIN, 0 }, { 0, POLLIN, 0 } };
+    int nf = use_stdin ? 2 : 1;
+    int r = poll(pf, (nfds_t)nf, 50);
+    if (r < 0) { if (errno == EINTR) continue; break; }
+    if (use_stdin && (pf[1].revents & (POLLIN | POLLHUP))) {
+      char c;
+      ssize_t k = read(0, &c, 1);
+      if (k <= 0) use_stdin = 0;
+      else if (c == '\n') { line[linelen] = 0; command(line); linelen = 0; }
+      else if (linelen + 1 < sizeof line) line[linelen++] = c;
+    }
+    if (!(pf[0].revents & POLLIN)) { update_motion(now_s()); continue; }
+    ssize_t k = read(m, in + inlen, sizeof in - inlen);
+    if (k <= 0) continue;
+    double arrived = now_s();
+    inlen += (size_t)k;
+    for (;;) {
+      size_t used = 0;
+      int pr = dxl_parse(protocol, 0, in, inlen, 0, &pkt, &used);
+      if (pr < 0) n_bad++;
+      if (pr == 1) {
+        outlen = 0;
+        if (timing) {
+          /* on a real bus the request occupies it for its bytes: answers start after that */
+          bus_free = arrived + (double)used * byte_time();
+        }
+        handle(&pkt);
+        if (outlen) {
+          double due = (timing ? bus_free : now_s()) + extra_delay;
+          if (timing || extra_delay > 0) sleep_until(due);
+          size_t off = 0;
+          while (off < outlen && !stop) {
+            ssize_t w = write(m, outbuf + off, outlen - off);
+            if (w > 0) off += (size_t)w;
+            else if (w < 0 && errno != EAGAIN && errno != EINTR) break;
+            else { struct pollfd po = { m, POLLOUT, 0 }; poll(&po, 1, 10); }
+          }
+        }
+      }
+      if (used) { memmove(in, in + used, inlen - used); inlen -= used; }
+      if (pr == 0 || (pr != 1 && used == 0)) break;
+      if (inlen == 0) break;
+    }
+    if (inlen == sizeof in) inlen = 0;
+  }
+  if (link_path) unlink(link_path);
+  if (!quiet) fprintf(stderr, "dxl_emulator: stopped (rx %lu tx %lu dropped %lu corrupted %lu bad %lu)\n",
+                      n_rx, n_tx, n_dropped, n_corrupted, n_bad);
+  close(s);
+  close(m);
+  return 0;
+}
