@@ -10,7 +10,7 @@ export BUILD
 NATIVE_DIRS := $(sort $(dir $(wildcard Modules/*/Makefile Platforms/*/Makefile Run/*/Makefile)))
 DEPS_STAMP := $(BUILD)/.deps-ok
 
-.PHONY: all deps test clean bench $(NATIVE_DIRS)
+.PHONY: all deps test clean bench sim $(NATIVE_DIRS)
 
 all: $(DEPS_STAMP) $(NATIVE_DIRS)
 
@@ -31,6 +31,10 @@ $(DEPS_STAMP): Run/install_deps.sh
 
 test: all
 	@Tests/run_all.sh
+
+# One robot in the simulator, headless, a status line per second until Ctrl-C (Run/main.lua --sim).
+sim: all
+	@./run_main --sim
 
 bench: all
 	@Tests/run_benchmarks.sh

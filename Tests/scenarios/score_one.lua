@@ -1,0 +1,71 @@
+-- One scoring run, run by ./run_repl inside the sim's lockstep (see score_test.sh):
+--   ./run_repl Tests/scenarios/score_one.lua SEED LIMIT_S [KILL_VISION_AT_S]
+-- Places robot and ball from SEED (both anywhere in the own half, any heading), lets the robot play
+-- and prints one line: "result seed=N goal=1 time=T" (or goal=0) plus where things ended.
+-- luacheck: globals Sim wait arg shm Body
+local seed, limit, kill_at = tonumber(arg[1]), tonumber(arg[2] or '120'), tonumber(arg[3] or '')
+assert(seed and limit, 'usage: score_one.lua SEED LIMIT_S [KILL_VISION_AT_S]')
+
+-- the start configuration from the seed (its own generator: independent of everything else)
+local s = seed * 7919 + 17
+local function rnd()
+  s = (s * 1103515245 + 12345) % 2147483648
+  return s / 2147483648
+end
+local rx, ry, ryaw = -4.2 + 3.9 * rnd(), -2.7 + 5.4 * rnd(), -math.pi + 2 * math.pi * rnd()
+local bx, by
+repeat
+  bx, by = -4.0 + 3.7 * rnd(), -2.5 + 5.0 * rnd()
+until (bx - rx) ^ 2 + (by - ry) ^ 2 > 0.5 ^ 2
+
+-- wait until the robot's processes take part in the lockstep (motion, vision, behavior)
+local sync = shm.open('sync')
+local deadline = os.time() + 60
+while true do
+  local n = 0
+  for i = 0, sync:count('pid') - 1 do
+    if sync.pid[i] ~= 0 and shm.C.shm_pid_alive(sync.pid[i]) == 1 then n = n + 1 end
+  end
+  if n >= 4 then break end -- them and this script
+  if os.time() > deadline then error('the robot processes did not join the lockstep within 60 s') end
+  wait(0.1)
+end
+
+Sim.teleport_robot(rx, ry, ryaw)
+Sim.teleport_ball(bx, by)
+wait(0.1)
+local plus0, minus0 = Sim.score()
+local t0 = Body.get_time()
+print(string.format('start seed=%d robot=(%.2f,%.2f,%.2f) ball=(%.2f,%.2f)', seed, rx, ry, ryaw, bx, by))
+io.stdout:flush()
+
+-- the pid of the vision process run_main started last (from run_main's log, $MAIN_LOG)
+local function vision_pid()
+  local f = io.open(os.getenv('MAIN_LOG') or '', 'r')
+  if not f then return nil end
+  local pid
+  for line in f:lines() do pid = tonumber(line:match('vision started %(pid (%d+)%)')) or pid end
+  f:close()
+  return pid
+end
+
+local ffi = require('ffi')
+ffi.cdef('int kill(int pid, int sig);')
+local killed = false
+local goal, own = false, false
+while Body.get_time() - t0 < limit do
+  wait(0.25)
+  local plus, minus = Sim.score()
+  if plus > plus0 then goal = true break end
+  if minus > minus0 then own = true break end
+  if kill_at and not killed and Body.get_time() - t0 >= kill_at then
+    killed = true
+    local pid = vision_pid()
+    print(string.format('killing vision (pid %s) at t=%.2f', tostring(pid), Body.get_time() - t0))
+    io.stdout:flush()
+    if pid then ffi.C.kill(pid, 9) end
+  end
+end
+local T = Sim.truth()
+print(string.format('result seed=%d goal=%d time=%.2f own=%d robot=(%.2f,%.2f) ball=(%.2f,%.2f) fallen=%s',
+  seed, goal and 1 or 0, Body.get_time() - t0, own and 1 or 0, T.x, T.y, T.ball.x, T.ball.y, tostring(T.fallen)))
