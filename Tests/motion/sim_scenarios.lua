@@ -15,6 +15,12 @@ local function note(fmt, ...) print('# ' .. string.format(fmt, ...)) io.stdout:f
 local function wrap(a) return (a + math.pi) % (2 * math.pi) - math.pi end
 local deg = 180 / math.pi
 
+-- until Lib/Sim.lua exists: the same calls straight over the sim block
+-- luacheck: ignore Sim
+if not Sim then
+  package.path = os.getenv('HRP_ROOT') .. '/Tests/motion/?.lua;' .. package.path
+  Sim = require('sim_shim')
+end
 if not Sim or not Motion or not Walk then
   tap(false, 'scenario ' .. tostring(name) .. ': Sim, Motion or Walk API missing')
   os.exit(1)
@@ -73,8 +79,13 @@ local function walk_for(vx, vy, va, seconds, ramp)
   return { (c * dx + s * dy) / dt, (-s * dx + c * dy) / dt, yaw / dt }, fell, a, b, yaw
 end
 
-local function start_clean()
+-- a fresh world; the robot placed at (x, y, yaw) (default: a field corner, facing along the
+-- diagonal: 10 m of free carpet), the ball out of the way
+local function start_clean(x, y, yaw)
   Sim.reset()
+  wait(0.2)
+  Sim.teleport_robot(x or -4.3, y or -3.3, yaw or math.atan2(6.6, 8.6))
+  Sim.teleport_ball(4.0, -3.5)
   wait(0.2)
   return stand()
 end
@@ -82,7 +93,7 @@ end
 local scenarios = {}
 
 function scenarios.forward(v)
-  v = tonumber(v) or 0.3
+  v = tonumber(v) or 0.35
   start_clean()
   local t0 = Sim.truth()
   local vel, fell, _, _, yaw = walk_for(v, 0, 0, 30, 3)
