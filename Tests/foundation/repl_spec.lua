@@ -22,6 +22,7 @@ describe('run_repl', function()
     assert.truthy(out:find('boom here', 1, true))
     out, rc = run([[./run_repl -e 'this is not lua']])
     assert.equal(1, rc)
+    assert.truthy(out:find('(-e)', 1, true), out)
   end)
 
   it('runs a script file with its arguments', function()
