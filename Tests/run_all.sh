@@ -15,7 +15,7 @@ LOGDIR="$TOP/build/test-logs"
 mkdir -p "$LOGDIR"
 TIMEOUT="${TEST_TIMEOUT:-900}"
 
-passed=0; failed=0; failures=()
+passed=0; failed=0; skipped=0; failures=()
 
 # run NAME CMD... : runs one test program, counts its TAP lines (or its exit status).
 run() {
@@ -25,10 +25,12 @@ run() {
   local t0=$SECONDS
   timeout --kill-after=10 "$TIMEOUT" "$@" >"$log" 2>&1
   local rc=$?
-  local ok nok
-  ok=$(grep -cE '^ok [0-9]+' "$log")
+  local ok nok skip
+  skip=$(grep -ciE '^ok [0-9]+.*# *skip' "$log")
+  ok=$(( $(grep -cE '^ok [0-9]+' "$log") - skip ))
   nok=$(grep -cE '^not ok [0-9]+' "$log")
-  if [ "$ok" -eq 0 ] && [ "$nok" -eq 0 ]; then
+  skipped=$((skipped + skip))
+  if [ "$ok" -eq 0 ] && [ "$nok" -eq 0 ] && [ "$skip" -eq 0 ]; then
     if [ "$rc" -eq 0 ]; then ok=1; else nok=1; fi
   elif [ "$rc" -ne 0 ] && [ "$nok" -eq 0 ]; then
     nok=1   # crashed or timed out after its last TAP line
@@ -40,7 +42,7 @@ run() {
     grep -E '^not ok' "$log" | head -20 | sed 's/^/    /'
     tail -n 25 "$log" | sed 's/^/    | /'
   else
-    printf '%-50s %4d ok (%ds)\n' "$name" "$ok" $((SECONDS - t0))
+    printf '%-50s %4d ok%s (%ds)\n' "$name" "$ok" "$([ "$skip" -gt 0 ] && echo " $skip SKIPPED")" $((SECONDS - t0))
   fi
 }
 
@@ -67,5 +69,5 @@ done
 
 echo
 if [ "${#failures[@]}" -gt 0 ]; then echo "failed: ${failures[*]}"; fi
-echo "$passed passed, $failed failed"
+echo "$passed passed, $failed failed, $skipped skipped"
 [ "$failed" -eq 0 ]
