@@ -1,0 +1,83 @@
+-- The simulated world (read by the sim DCM, Platforms/Sim). SI units, radians.
+-- Field frame: origin at the centre spot, x towards the goal at +x, z up.
+return {
+  physics = {
+    timestep = 0.001,            -- s; the control period (robot.lua) must be a multiple of it
+    iterations = 20,             -- dWorldQuickStep iterations
+    gravity = 9.81,
+    -- Rotor-like inertia added to every moving link's inertia diagonal, kg*m^2 (shared/robots/README.md:
+    -- QuickStep needs 3e-4..1e-3 on the 12 g links; the real servos' reflected rotor inertia is larger).
+    link_rotor_inertia = 5e-4,
+    linear_damping = 0,          -- no air drag on links (a 3 kg robot is not slowed by air)
+  },
+
+  -- Position servos (ROBOTIS XM430-W350 class). Each servo is an ODE hinge velocity motor:
+  -- target velocity = p_gain * (command - position), clamped to the joint's velocity limit (URDF),
+  -- with at most hardness * torque limit (URDF effort) to reach it.
+  servo = {
+    p_gain = 30,                 -- 1/s, position loop gain (a 33 ms first-order response unloaded)
+    resolution = 4096,           -- encoder steps per turn (positions are quantised to it)
+    -- torque-disabled joints: the gear train's back-drive damping and friction (URDF <dynamics>)
+    temperature = 40,            -- deg C reported
+  },
+
+  contact = {
+    mu = 1.0,                    -- robot-carpet friction
+    kp = 5e4,                    -- N/m per contact point
+    kd = 300,                    -- N*s/m per contact point
+    max_contacts = 8,            -- per geom pair
+    robot_mu = 0.5,              -- robot-robot, robot-goal
+  },
+
+  imu = {
+    gyro_noise = 0.002,          -- rad/s, standard deviation
+    accel_noise = 0.02,          -- m/s^2, standard deviation
+  },
+
+  -- RoboCup Humanoid KidSize field
+  field = {
+    length = 9.0, width = 6.0,
+    border = 1.0,                -- carpet outside the lines on every side
+    line_width = 0.05,
+    centre_circle_diameter = 1.5,
+    goal_area_length = 1.0, goal_area_width = 3.0,
+    penalty_area_length = 2.0, penalty_area_width = 5.0,
+    penalty_mark_distance = 1.5, penalty_mark_size = 0.1,
+  },
+  goal = {
+    width = 2.6,                 -- inner distance between the posts
+    height = 1.2,                -- underside of the crossbar
+    depth = 0.6,
+    post_diameter = 0.1,
+  },
+  ball = {
+    diameter = 0.14,             -- FIFA size 1
+    mass = 0.2,                  -- kg
+    mu = 0.6,                    -- ball-carpet sliding friction
+    -- rolling resistance of artificial turf: resisting torque = rolling * normal force * ... (ODE rho, m)
+    rolling = 0.004,
+    bounce = 0.5,                -- restitution on the carpet, posts and robots
+    start = { 0, 0 },
+  },
+
+  camera = {
+    frame = 'camera_link',       -- URDF frame: x along the optical axis, z image-up
+    width = 640, height = 480,
+    rate = 30,                   -- frames per second of simulated time
+    fovy_deg = 43.3,             -- vertical field of view (OP3)
+    latency_ticks = 3,           -- a frame exposed at tick N is delivered with sensor tick N + 3
+    noise = 2,                   -- standard deviation of the luma noise, grey levels
+  },
+
+  -- Start poses of the robots in the order of --robots (x, y, yaw); more robots wrap around.
+  start = {
+    { -1.0, 0.0, 0.0 },
+    { 1.0, 0.0, math.pi },
+    { -2.0, 1.5, 0.0 },
+    { 2.0, -1.5, math.pi },
+  },
+
+  fall_angle = 1.0,              -- rad of torso tilt beyond which the robot counts as fallen
+  watchdog = 0.5,                -- s of robot time without tick_ack before holding the pose (real time)
+  battery = 12.0,                -- V
+}

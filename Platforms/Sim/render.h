@@ -1,0 +1,58 @@
+// render: a small software rasterizer for the head camera -- field (carpet, lines), goals, ball
+// and robots into a YUYV image. No GPU, no display; deterministic for a given seed and scene.
+//
+// Image coordinates: u to the right, v down, in pixels; the centre of pixel (i, k) is (i, k).
+// Pinhole camera with square pixels: f = (height / 2) / tan(fovy / 2), principal point at the
+// image centre ((width - 1) / 2, (height - 1) / 2). Camera frame: x optical axis, y image-left,
+// z image-up.
+#ifndef HRP_SIM_RENDER_H
+#define HRP_SIM_RENDER_H
+
+#include <cstdint>
+#include <vector>
+
+#include "world.h"
+
+namespace sim {
+
+struct Camera {
+  Vec3 pos;                 // field frame
+  Mat3 rot;                 // columns: optical axis, image-left, image-up (field frame)
+  int width = 640, height = 480;
+  double fovy = 43.3 * M_PI / 180;
+  double focal() const { return (height / 2.0) / std::tan(fovy / 2); }
+};
+
+// Pixel position (u, v) of a field-frame point; false if it is behind the camera.
+bool camera_project(const Camera &c, const Vec3 &p, double *u, double *v);
+
+class Renderer {
+ public:
+  Renderer(const Params &p, uint64_t seed);
+  // Renders into yuyv (width * height * 2 bytes). Solids of robot `self` on links in `hide`
+  // (the camera's own head) are skipped. `frame` varies the sensor noise.
+  void render(const Camera &c, const std::vector<Solid> &solids, int self, const std::vector<int> &hide,
+              const Vec3 &ball, double ball_radius, uint32_t frame, uint8_t *yuyv) const;
+
+  // colours (Y, U, V)
+  static constexpr uint8_t kGreen[3] = {93, 98, 90};
+  static constexpr uint8_t kWhite[3] = {230, 128, 128};
+  static constexpr uint8_t kOrange[3] = {135, 52, 214};
+  static constexpr uint8_t kFloor[3] = {102, 122, 133};
+  static constexpr uint8_t kSky[3] = {160, 139, 121};
+
+ private:
+  void ground(const Camera &c, uint8_t *yuyv) const;
+  void solid(const Camera &c, const Solid &s, uint8_t *yuyv) const;
+  void ball(const Camera &c, const Vec3 &center, double r, uint8_t *yuyv) const;
+  void noise(const Camera &c, uint32_t frame, uint8_t *yuyv) const;
+
+  double x0_, y0_, res_;         // field texture origin (m) and resolution (m per texel)
+  int tw_, th_;                  // texture size
+  std::vector<uint8_t> tex_;     // 0 outside the carpet, 1 carpet, 2 line
+  std::vector<int8_t> noise_;    // luma noise table
+  uint64_t seed_;
+};
+
+}  // namespace sim
+#endif

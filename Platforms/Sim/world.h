@@ -1,0 +1,171 @@
+// world: the ODE world of the sim DCM -- field, goals, ball and any number of robots built from a
+// Model; position servos, IMU, foot forces, truth, teleports and pushes. No shared memory here:
+// Platforms/Sim/dcm_sim.cpp connects it to the blocks, so tests can drive it directly.
+//
+// Determinism: the world does the same floating-point work for the same seed and the same calls.
+#ifndef HRP_SIM_WORLD_H
+#define HRP_SIM_WORLD_H
+
+#include <ode/ode.h>
+
+#include <cstdint>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "config.h"
+#include "model.h"
+
+namespace sim {
+
+// Every number the world needs, from Config/Sim/sim.lua and robot.lua.
+struct Params {
+  double timestep = 0.001, period = 0.008, gravity = 9.81;
+  int iterations = 20;
+  double rotor_inertia = 5e-4, linear_damping = 0;
+  double servo_gain = 30, servo_resolution = 4096, temperature = 40;
+  double mu = 1, kp = 5e4, kd = 300, robot_mu = 0.5;
+  int max_contacts = 8;
+  double gyro_noise = 0, accel_noise = 0;
+  double field_length = 9, field_width = 6, border = 1, line_width = 0.05, circle_diameter = 1.5;
+  double goal_area_length = 1, goal_area_width = 3, penalty_area_length = 2, penalty_area_width = 5;
+  double penalty_mark_distance = 1.5, penalty_mark_size = 0.1;
+  double goal_width = 2.6, goal_height = 1.2, goal_depth = 0.6, post_diameter = 0.1;
+  double ball_diameter = 0.14, ball_mass = 0.2, ball_mu = 0.6, ball_rolling = 0.004, ball_bounce = 0.5;
+  double ball_start[2] = {0, 0};
+  std::string camera_frame = "camera_link";
+  int cam_width = 640, cam_height = 480;
+  double cam_rate = 30, cam_fovy = 43.3 * M_PI / 180;
+  int cam_latency_ticks = 3;
+  double cam_noise = 2;
+  std::vector<double> start;   // x, y, yaw per robot, flattened
+  double fall_angle = 1.0, watchdog = 0.5, battery = 12;
+  std::vector<std::string> joints;    // shm joint order (robot.lua)
+  std::string urdf;                   // path of the robot file
+};
+// Reads sim.lua and robot.lua (paths) into p; throws std::runtime_error naming file and key.
+void params_load(const std::string &sim_lua, const std::string &robot_lua, const std::string &root,
+                 Params *p);
+
+// What the DCM publishes in dcm.sensor for one robot.
+struct Sensors {
+  std::vector<double> position, velocity, load;   // per shm joint
+  double gyro[3], accel[3], angle[3], foot_force[2];
+};
+
+// Field-frame truth of one robot's torso (body link frame) and the ball.
+struct Truth {
+  double x, y, z, yaw, roll, pitch;
+  bool fallen;
+  double ball[5];     // x, y, z, vx, vy
+};
+
+// A convex solid for the camera: vertices (world) and faces (vertex index loops, outward CCW).
+struct Solid {
+  std::vector<Vec3> v;
+  std::vector<std::vector<int>> faces;
+  unsigned char yuv[3];
+  int robot = -1, link = -1;        // owner, for hiding the camera's own head
+};
+
+class World {
+ public:
+  World(const Params &p, const Model &m, int nrobots, uint64_t seed);
+  ~World();
+  World(const World &) = delete;
+  World &operator=(const World &) = delete;
+
+  int nrobots() const { return (int)robots_.size(); }
+  int njoints() const { return (int)p_.joints.size(); }
+  double time() const { return time_; }
+  const Params &params() const { return p_; }
+  const Model &model() const { return m_; }
+
+  // Servo commands of robot r (arrays of njoints; rad, 0..1, 0/1). Non-finite entries are
+  // ignored (the previous value stays) and counted; returns how many were ignored.
+  int set_command(int r, const double *cmd, const double *hardness, const int *enable);
+  const std::vector<double> &command(int r) const { return robots_[r].cmd; }
+  // Advances one control period (period / timestep physics steps).
+  void step();
+  void sense(int r, Sensors *s);
+  Truth truth(int r) const;
+  // Places robot r upright at (x, y, yaw), soles on the carpet, joints at `q` (njoints, NULL:
+  // its current commands), at rest.
+  void place_robot(int r, double x, double y, double yaw, const double *q = nullptr);
+  void place_ball(double x, double y, double vx = 0, double vy = 0);
+  // Robots to their start poses (current commands), ball to its start, score to 0:0.
+  void reset();
+  // A force (N, field frame, horizontal) on robot r's torso for `duration` s.
+  void push(int r, double fx, double fy, double duration);
+  int score(int goal) const { return score_[goal]; }   // 0: goals into +x, 1: into -x
+
+  // Camera of robot r: world pose (columns of rot: optical axis, image-left, image-up).
+  void camera_pose(int r, Vec3 *pos, Mat3 *rot) const;
+  Vec3 ball_position() const;
+  double ball_radius() const { return p_.ball_diameter / 2; }
+  // Every solid the camera can see (goals; all robots' boxes), at their current poses.
+  void solids(std::vector<Solid> *out) const;
+  // Joint positions of robot r in shm order (exact, not quantised).
+  std::vector<double> joint_positions(int r) const;
+  // Field-frame pose of a link of robot r.
+  void link_pose(int r, int link, Vec3 *pos, Mat3 *rot) const;
+
+ private:
+  struct GeomInfo { int kind; int robot; int link; int sole; };   // kind: 0 ground/env, 1 ball, 2 robot
+  struct Robot {
+    dSpaceID space = nullptr;
+    std::vector<dBodyID> body;             // per model link
+    std::vector<dJointID> hinge;           // per model link (null for the root)
+    std::vector<dJointFeedback> fb;        // per model link
+    std::vector<int> jlink;                // shm joint -> model link
+    std::vector<double> cmd, hard;
+    std::vector<int> enable;
+    std::vector<int> mode;                 // servo mode last set: 0 unset, 1 active, 2 relaxed
+    std::vector<char> allowed;             // self-collision allowed, nlink x nlink
+    double foot_acc[2] = {0, 0};
+    Vec3 vel_start = Vec3::Zero();
+    Vec3 push_force = Vec3::Zero();
+    double push_left = 0;
+    double accel[3] = {0, 0, 9.81};
+  };
+
+  void build_env();
+  void build_robot(int r);
+  void servo_update(Robot &rb);
+  void physics_step();
+  static void near_cb(void *data, dGeomID o1, dGeomID o2);
+  void collide(dGeomID o1, dGeomID o2);
+  void check_goal();
+  Vec3 body_pos(dBodyID b) const;
+  Mat3 body_rot(dBodyID b) const;
+
+  Params p_;
+  Model m_;
+  dWorldID world_ = nullptr;
+  dSpaceID top_ = nullptr, env_ = nullptr;
+  dJointGroupID contacts_ = nullptr;
+  dBodyID ball_ = nullptr;
+  dGeomID ball_geom_ = nullptr;
+  std::vector<GeomInfo *> infos_;
+  std::vector<Robot> robots_;
+  std::vector<Solid> goal_solids_;
+  std::vector<dJointFeedback> cfb_;        // contact feedback of sole contacts, this step
+  std::vector<std::pair<int, int>> cfb_owner_;  // (robot, sole side) per cfb_ entry
+  double time_ = 0;
+  int substeps_ = 8;
+  int score_[2] = {0, 0};
+  int in_goal_ = 0;                         // latched: +1 / -1 while the ball is inside a goal
+  std::mt19937_64 rng_;
+  std::normal_distribution<double> normal_{0.0, 1.0};
+};
+
+}  // namespace sim
+#endif
+
+namespace sim {
+// The project's root: $HRP_ROOT, else the source tree the binary was built from.
+std::string hrp_root();
+// Params from <root>/Config/<platform>/{sim,robot}.lua ($PLATFORM, default Sim) and the model from
+// the robot file they name. Throws std::runtime_error naming the file and the element or key.
+void load_all(Params *p, Model *m);
+}  // namespace sim
