@@ -23,10 +23,12 @@ return {
     max_aspect = 2.2,           -- bounding box long side / short side (partly hidden balls)
     green_below = 0.1,          -- fraction of green pixels needed in the band below the ball (0: off)
     max_range = 6.0,            -- m, farther detections are refused
+    size_tolerance = 2.0,       -- range from size within this factor of the ground-projected range
   },
   goal = {
     color = 16,                 -- label bit (white posts)
-    min_height = 6,             -- block pixels... see Player/Vision/detect_goal.lua
+    min_height = 4,             -- block pixels (8 px of the frame each)
+    min_ratio = 2.5,            -- height / width of the post's region, block pixels
   },
   publish_labels = false,       -- write label images to shm for debugging
 }

@@ -1,0 +1,46 @@
+-- What the vision process (Player/Vision/main.lua) sees, read from the `vision` block.
+--
+--   local Vision = require('Vision')
+--   Vision.ball()        --> { detected = bool, x = m, y = m, t = s, u = px, v = px, radius = px, frame = n }
+--   Vision.goal_posts()  --> { {x = m, y = m}, ... } (0 to 2 posts)
+-- Positions are in the robot frame (x forward, y left); t is the robot clock of the frame.
+local shm = require('shm')
+
+local M = {}
+
+local block
+local function vision()
+  block = block or shm.open('vision')
+  return block
+end
+
+-- The ball of the latest frame processed (x, y, u, v, radius only when detected).
+function M.ball()
+  local b = vision()
+  return b:read(function(v)
+    local res = { detected = v.ball_detected[0] ~= 0, t = v.time[0], frame = v.frame[0] }
+    if res.detected then
+      res.x, res.y = v.ball_position[0], v.ball_position[1]
+      res.u, res.v = v.ball_image[0], v.ball_image[1]
+      res.radius = v.ball_radius[0]
+    end
+    return res
+  end)
+end
+
+-- The goal posts of the latest frame.
+function M.goal_posts()
+  local b = vision()
+  return b:read(function(v)
+    local posts = {}
+    for i = 1, math.min(v.goal_posts[0], 2) do
+      posts[i] = { x = v.goal_position[2 * i - 2], y = v.goal_position[2 * i - 1] }
+    end
+    return posts
+  end)
+end
+
+-- Frames processed and the measured frame rate (frames per second of robot time).
+function M.frame() return vision().frame[0], vision().fps[0] end
+
+return M

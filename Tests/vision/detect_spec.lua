@@ -1,0 +1,126 @@
+-- Projection and ball detection on frames ray-cast by the test itself (green ground, orange
+-- sphere of 0.14 m, grey above the horizon) from the OP3's camera pose (Lib/kinematics), seeded
+-- random ball positions and head angles: the detector's range and bearing against the truth.
+local ffi = require('ffi')
+local kinematics = require('kinematics')
+local project = require('Vision.project')
+local pipeline = require('Vision.pipeline')
+
+local W, H = 640, 480
+local FOVY = math.rad(43.3)
+local R_BALL = 0.07
+
+local vcfg = dofile(os.getenv('HRP_ROOT') .. '/Config/Sim/vision.lua')
+local ccfg = { width = W, height = H, fovy = FOVY, head_joint = { 0, 1 } }
+
+local model = assert(kinematics.load('Sim'))
+local cm = project.camera(W, H, FOVY)
+local q0 = {}
+for i = 1, #model.joints do q0[i] = 0 end
+
+-- camera pose for head angles (pan, tilt; negative tilt looks down), the rest at zero, torso level
+local function pose_for(pan, tilt)
+  local q = {}
+  for i = 1, #q0 do q[i] = q0[i] end
+  q[1], q[2] = pan, tilt
+  return (model:camera_pose(q, { 0, 0 }))
+end
+
+-- ray-cast a YUYV frame: ball at (bx, by) on the ground (nil: no ball)
+local function render(pose, bx, by)
+  local buf = ffi.new('uint8_t[?]', W * H * 2)
+  local ground = pose[3] - pose.height
+  local cx, cy, cz = pose[1], pose[2], pose[3]
+  for v = 0, H - 1 do
+    for u = 0, W - 1, 2 do
+      local dx, dy, dz = project.ray(cm, pose, u + 0.5, v + 0.5)
+      local Y, U, V = 150, 128, 128          -- grey wall
+      if dz < 0 then Y, U, V = 99, 95, 86 end -- green ground
+      if bx then
+        -- ray-sphere: |c + t d - b|^2 = r^2
+        local ox, oy, oz = cx - bx, cy - by, cz - (ground + R_BALL)
+        local a = dx * dx + dy * dy + dz * dz
+        local b = 2 * (ox * dx + oy * dy + oz * dz)
+        local c = ox * ox + oy * oy + oz * oz - R_BALL * R_BALL
+        if b * b - 4 * a * c >= 0 and b < 0 then Y, U, V = 147, 45, 205 end
+      end
+      local p = (v * W + u) * 2
+      buf[p], buf[p + 1], buf[p + 2], buf[p + 3] = Y, U, Y, V
+    end
+  end
+  return buf
+end
+
+local function frame_of(buf, pan, tilt)
+  local head = ffi.new('double[2]', pan, tilt)
+  return { yuyv = buf, width = W, height = H, head = head }
+end
+
+describe('vision projection', function()
+  it('to_image and to_ground are inverse', function()
+    local pose = pose_for(0.3, -0.5)
+    for _, p in ipairs({ { 1.0, 0.2 }, { 2.5, 0.8 }, { 0.6, 0.1 } }) do
+      local u, v = project.to_image(cm, pose, p[1], p[2], 0)
+      assert.truthy(u)
+      local x, y = project.to_ground(cm, pose, u, v, 0)
+      assert.is_true(math.abs(x - p[1]) < 1e-9 and math.abs(y - p[2]) < 1e-9)
+    end
+  end)
+
+  it('a point straight ahead on the optical axis projects to the image centre', function()
+    local pose = pose_for(0, -0.6)
+    local R = pose.R
+    -- optical axis hits the ground at t = height / -R[7]
+    local t = pose.height / -R[7]
+    local u, v = project.to_image(cm, pose, pose[1] + t * R[1], pose[2] + t * R[4], 0)
+    assert.is_true(math.abs(u - W / 2) < 1e-6 and math.abs(v - H / 2) < 1e-6)
+  end)
+end)
+
+describe('ball detection on ray-cast frames', function()
+  local vp = assert(pipeline.new(vcfg, ccfg, model))
+
+  it('finds the ball within 10% range and 3 degrees bearing', function()
+    math.randomseed(5)
+    local tried, found, worst_range, worst_bearing = 0, 0, 0, 0
+    while tried < 12 do
+      local pan = (math.random() - 0.5) * 1.6
+      local tilt = 0.1 - math.random() * 1.0
+      local pose = pose_for(pan, tilt)
+      local range = 0.3 + math.random() * 2.7
+      local bearing = pan + (math.random() - 0.5) * 0.5
+      local bx, by = range * math.cos(bearing), range * math.sin(bearing)
+      local u, v = project.to_image(cm, pose, bx, by, R_BALL)
+      -- fully in view (a margin of the ball's apparent radius)
+      local rpx = u and cm.f * R_BALL / math.sqrt((bx - pose[1]) ^ 2 + (by - pose[2]) ^ 2 + pose.height ^ 2)
+      if u and u > rpx + 2 and u < W - rpx - 2 and v > rpx + 2 and v < H - rpx - 2 then
+        tried = tried + 1
+        local det = vp:process(frame_of(render(pose, bx, by), pan, tilt), q0, { 0, 0 })
+        local ball = det.ball
+        if ball.detected then
+          found = found + 1
+          local r_est, r_true = math.sqrt(ball.x ^ 2 + ball.y ^ 2), math.sqrt(bx ^ 2 + by ^ 2)
+          worst_range = math.max(worst_range, math.abs(r_est - r_true) / r_true)
+          worst_bearing = math.max(worst_bearing, math.abs(math.atan2(ball.y, ball.x) - math.atan2(by, bx)))
+        end
+      end
+    end
+    assert.are.equal(tried, found)
+    assert.is_true(worst_range <= 0.10, 'range error ' .. worst_range)
+    assert.is_true(worst_bearing <= math.rad(3), 'bearing error ' .. math.deg(worst_bearing))
+  end)
+
+  it('reports no ball on a frame without one', function()
+    for _, t in ipairs({ 0.0, -0.4, -0.8 }) do
+      local det = vp:process(frame_of(render(pose_for(0.2, t)), 0.2, t), q0, { 0, 0 })
+      assert.is_false(det.ball.detected)
+    end
+  end)
+
+  it('refuses a frame of the wrong size without raising', function()
+    local det, err = vp:process({ yuyv = ffi.new('uint8_t[8]'), width = 2, height = 2,
+                                  head = ffi.new('double[2]') }, q0, { 0, 0 })
+    assert.is_nil(det)
+    assert.truthy(err:find('2x2'))
+  end)
+end)
