@@ -38,9 +38,11 @@ function M.join()
 end
 
 function M._setup(sync, slot)
+  -- consulted from the current tick on: the clock waits for this process's first done(), so what
+  -- it does before that (commands, Sim requests) lands on a defined tick
   local tick = sync.tick[0]
-  sync.done_tick[slot] = tick
-  sync.wake_tick[slot] = tick + 1
+  sync.done_tick[slot] = tick - 1
+  sync.wake_tick[slot] = tick
   return setmetatable({ sync = sync, slot = slot }, Participant)
 end
 

@@ -426,6 +426,7 @@ int main(int argc, char **argv) {
     read_actuator(w, (int)r, x, nj);
     // continue the robot's clock across DCM restarts: participants keep counting ticks
     tick = std::max(tick, std::max(*x.s_tick, *x.y_tick));
+    tick = std::max(tick, 1u);   // tick 0 never appears: a participant joining at 0 holds tick 0 - 1
     *x.m_done_seq = *x.m_req_seq;
   }
   w.reset();
@@ -491,6 +492,22 @@ int main(int argc, char **argv) {
         RobotIO &x = io[r];
         shm_store_release_u32(x.y_tick, tick);
         shm_futex_wake(x.y_tick);
+      }
+      // no participant anywhere: hold the clock until one joins (a lockstep run starts on a
+      // defined tick and burns no CPU meanwhile)
+      for (;;) {
+        bool any = false;
+        for (size_t r = 0; r < io.size() && !any; r++) {
+          for (int k = 0; k < io[r].nsync && !any; k++) {
+            const int pid = __atomic_load_n(&io[r].y_pid[k], __ATOMIC_ACQUIRE);
+            if (pid != 0 && shm_pid_alive(pid)) any = true;
+          }
+        }
+        if (any || g_stop) break;
+        for (size_t r = 0; r < io.size(); r++) {
+          while (apply_request(w, (int)r, io[r])) publish_truth(w, (int)r, io[r], rtf);
+        }
+        shm_futex_wait(io[0].y_done_count, shm_load_acquire_u32(io[0].y_done_count), 0.02);
       }
       for (size_t r = 0; r < io.size() && !g_stop; r++) {
         RobotIO &x = io[r];

@@ -127,7 +127,7 @@ void params_load(const std::string &sim_lua, const std::string &robot_lua, const
 // ---------------------------------------------------------------- construction
 
 World::World(const Params &p, const Model &m, int nrobots, uint64_t seed)
-    : p_(p), m_(m), rng_(seed) {
+    : p_(p), m_(m), seed_(seed), rng_(seed) {
   if (m_.links.empty()) throw std::runtime_error(m_.file + ": no links");
   if (m_.frame_index(p_.camera_frame) < 0 && m_.link_index(p_.camera_frame) < 0) {
     throw std::runtime_error(m_.file + ": no link or frame '" + p_.camera_frame + "' for the camera");
@@ -401,6 +401,10 @@ void World::reset() {
   }
   place_ball(p_.ball_start[0], p_.ball_start[1]);
   score_[0] = score_[1] = 0;
+  // a reset world evolves the same whenever the reset happens: restart every random sequence
+  dRandSetSeed((unsigned long)(seed_ & 0xffffffffu));
+  rng_.seed(seed_);
+  normal_.reset();
 }
 
 void World::push(int r, double fx, double fy, double duration) {

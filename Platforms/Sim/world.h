@@ -155,6 +155,7 @@ class World {
   int substeps_ = 8;
   int score_[2] = {0, 0};
   int in_goal_ = 0;                         // latched: +1 / -1 while the ball is inside a goal
+  uint64_t seed_;
   std::mt19937_64 rng_;
   std::normal_distribution<double> normal_{0.0, 1.0};
 };
