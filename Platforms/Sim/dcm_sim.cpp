@@ -479,7 +479,7 @@ int main(int argc, char **argv) {
   const double wall0 = now();
   double report_wall = wall0, report_sim = 0;
   uint32_t report_tick = tick;
-  double rtf = 0, rate = 0;
+  double rtf = 0, rate = 0, last_jp99 = 0, last_jmax = 0;
   std::vector<double> jitter;
   double deadline = wall0;
   uint32_t cycles = 0, missed = 0;
@@ -659,22 +659,24 @@ int main(int argc, char **argv) {
         last_print = t;
         print_sim = w.time();
       }
-      for (size_t r = 0; r < io.size(); r++) {
-        RobotIO &x = io[r];
-        shm_write_begin(x.stats);
-        *x.st_rate = rate;
-        *x.st_rtf = rtf;
-        *x.st_jp99 = jp99;
-        *x.st_jmax = jmax;
-        *x.st_cycles = cycles;
-        *x.st_missed = missed;
-        *x.st_nan = x.nan_count;
-        *x.st_wd = x.wd_trips;
-        shm_write_end(x.stats);
-      }
+      last_jp99 = jp99;
+      last_jmax = jmax;
       report_wall = t;
       report_sim = w.time();
       report_tick = tick;
+    }
+    for (size_t r = 0; r < io.size(); r++) {
+      RobotIO &x = io[r];
+      shm_write_begin(x.stats);
+      *x.st_rate = rate;
+      *x.st_rtf = rtf;
+      *x.st_jp99 = last_jp99;
+      *x.st_jmax = last_jmax;
+      *x.st_cycles = cycles;
+      *x.st_missed = missed;
+      *x.st_nan = x.nan_count;
+      *x.st_wd = x.wd_trips;
+      shm_write_end(x.stats);
     }
     if (o.duration >= 0 && w.time() >= o.duration - 1e-9) break;
   }

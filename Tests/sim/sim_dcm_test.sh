@@ -1,0 +1,124 @@
+#!/usr/bin/env bash
+# The sim DCM through shared memory (TAP): lockstep determinism (same seed, same script: identical
+# truth to the last bit), Sim requests, two robots in one world, NaN commands counted, a robot whose
+# Lua side went away holds its pose (real time), clear errors for a bad robot file.
+set -u
+cd "$(dirname "$0")/../.."
+source Run/env.sh
+ID=${ROBOT_ID:-9300}
+LOG="$HRP_ROOT/build/test-logs/sim"
+mkdir -p "$LOG"
+n=0; fails=0
+ok() { n=$((n + 1)); echo "ok $n - $1"; }
+nok() { n=$((n + 1)); fails=$((fails + 1)); echo "not ok $n - $1"; }
+check() { if [ "$1" = 0 ]; then ok "$2"; else nok "$2"; fi; }
+DCM_PID=
+start_dcm() {   # start_dcm LOGNAME ARGS...
+  local name=$1; shift
+  build/bin/dcm_sim "$@" >"$LOG/$name.log" 2>&1 &
+  DCM_PID=$!
+  for _ in $(seq 100); do
+    [ -n "$(luajit -e "local s=require('shm'); local b=s.open('dcm.sensor',{try=true,attach=true}); io.write(b and b.dcm_pid[0]==$DCM_PID and 'y' or '')" 2>/dev/null)" ] && return 0
+    sleep 0.05
+  done
+  return 1
+}
+stop_dcm() {
+  [ -n "$DCM_PID" ] && kill "$DCM_PID" 2>/dev/null && wait "$DCM_PID" 2>/dev/null
+  DCM_PID=
+}
+cleanup() {
+  stop_dcm
+  for r in "$ID" $((ID + 1)); do ROBOT_ID=$r Run/shm remove >/dev/null 2>&1; done
+}
+trap cleanup EXIT
+
+# ---- determinism: two lockstep runs, same seed, same script
+for run in 1 2 3; do
+  cleanup
+  seed=5; [ "$run" = 3 ] && seed=6
+  start_dcm "lockstep_$run" --lockstep --seed "$seed" --quiet || { nok "dcm_sim starts (run $run)"; continue; }
+  timeout 120 ./run_repl Tests/sim/scenario_push.lua >"$LOG/scenario_$run.out" 2>&1
+  echo "rc=$?" >>"$LOG/scenario_$run.out"
+  stop_dcm
+done
+cat "$LOG/scenario_1.out" | sed 's/^/# run 1: /'
+grep -q '^truth .* fallen=false' "$LOG/scenario_1.out" && grep -q 'rc=0' "$LOG/scenario_1.out"
+check $? "lockstep scenario runs (reset, stance, teleport, push, wait, truth) and the robot stays up"
+cmp -s <(grep -E '^(truth|ball|imu|tick)' "$LOG/scenario_1.out") <(grep -E '^(truth|ball|imu|tick)' "$LOG/scenario_2.out")
+check $? "two lockstep runs with the same seed end with bit-identical truth, ball and IMU"
+! cmp -s <(grep -E '^imu' "$LOG/scenario_1.out") <(grep -E '^imu' "$LOG/scenario_3.out")
+check $? "another seed gives other sensor noise"
+grep -q '^tick' "$LOG/scenario_1.out" && [ "$(grep '^tick' "$LOG/scenario_1.out")" = "$(grep '^tick' "$LOG/scenario_2.out")" ]
+check $? "the scenario ends on the same tick in both runs"
+
+# ---- two robots in one world; Sim requests; NaN commands
+cleanup
+if start_dcm two --lockstep --robots 2 --seed 1 --quiet; then
+  out=$(timeout 60 ./run_repl -e '
+    local shm = require("shm")
+    assert(Sim.teleport_robot(-2, 1, 0.5))
+    assert(Sim.teleport_ball(2, -1))
+    wait(0.5)
+    local t = Sim.truth()
+    local other = shm.open("sim", { robot = shm.robot_id() + 1 })
+    local sensor2 = shm.open("dcm.sensor", { robot = shm.robot_id() + 1 })
+    print(string.format("me %.3f %.3f %.3f other %.3f %.3f ball %.3f %.3f ball2 %.3f tick2 %d",
+      t.x, t.y, t.yaw, other.robot[0], other.robot[1], t.ball.x, t.ball.y, other.ball[0], sensor2.tick[0]))
+    dcm_actuator.command[3] = 0/0
+    dcm_actuator.command[4] = 1/0
+    wait(0.2)
+    print(string.format("nan %d fallen %s", dcm_stats.nan_commands[0], tostring(Sim.truth().fallen)))
+    print("ok_end")' 2>&1)
+  echo "$out" | sed 's/^/# /'
+  echo "$out" | grep -q 'me -2.000 1.000 0.500 other 1.000 0.000 ball 2.000 -1.000 ball2 2.000'
+  check $? "two robots in one world: each its own blocks, one ball, teleports land"
+  echo "$out" | grep -Eq 'nan [1-9][0-9]* fallen false'
+  check $? "NaN/inf commands are ignored and counted in dcm.stats.nan_commands"
+  stop_dcm
+else
+  nok "dcm_sim starts with two robots"
+fi
+
+# ---- real time: the Lua side sets the stance and goes away; the robot holds its pose
+cleanup
+if start_dcm realtime --quiet; then
+  ./run_repl -e 'local st = dofile(os.getenv("HRP_ROOT") .. "/Tests/sim/stance.lua"); st.command(Body); dcm_actuator.tick_ack[0] = Body.get_tick()' >/dev/null 2>&1
+  sleep 2.5
+  out=$(./run_repl -e '
+    local q = dofile(os.getenv("HRP_ROOT") .. "/Tests/sim/stance.lua").pose()
+    local err = 0
+    for _, n in ipairs(Body.joint_names()) do err = math.max(err, math.abs(Body.get_position(n) - (q[n] or 0))) end
+    local t = Sim.truth()
+    print(string.format("time %.2f err %.4f fallen %s trips %d rate %.1f", Body.get_time(), err, tostring(t.fallen),
+      dcm_stats.watchdog_trips[0], dcm_stats.rate[0]))' 2>&1)
+  echo "$out" | sed 's/^/# /'
+  echo "$out" | grep -Eq 'err 0\.00[0-9]+ fallen false trips [1-9]'
+  check $? "real time: with its Lua side gone the robot holds the stance (watchdog trip counted)"
+  stop_dcm
+else
+  nok "dcm_sim starts in real time"
+fi
+
+# ---- a bad robot file stops start-up with the file and the element named
+tmp=$(mktemp -d)
+mkdir -p "$tmp/Config/Sim"
+cp Config/Sim/sim.lua "$tmp/Config/Sim/"
+sed "s#urdf = .*#urdf = '$tmp/broken.urdf',#" Config/Sim/robot.lua >"$tmp/Config/Sim/robot.lua"
+sed 's#<mass value="1.34928"/>##' Config/Sim/op3.urdf >"$tmp/broken.urdf"
+cp Config/shm.schema "$tmp/Config/"
+err=$(HRP_ROOT=$tmp HRP_SCHEMA=$HRP_ROOT/Config/shm.schema timeout 10 build/bin/dcm_sim --quiet 2>&1)
+rc=$?
+echo "# $err"
+[ $rc -ne 0 ] && echo "$err" | grep -q "broken.urdf" && echo "$err" | grep -q "body_link"
+check $? "a robot file with a missing <mass> stops start-up naming file and link"
+rm -f "$tmp/broken.urdf"
+err=$(HRP_ROOT=$tmp timeout 10 build/bin/dcm_sim --quiet 2>&1)
+rc=$?
+echo "# $err"
+[ $rc -ne 0 ] && echo "$err" | grep -q "broken.urdf"
+check $? "a missing robot file stops start-up naming the file"
+rm -rf "$tmp"
+
+echo "1..$n"
+[ $fails -eq 0 ]
