@@ -1,5 +1,6 @@
 -- Scenario for the determinism test (run by ./run_repl in lockstep): reset, stance, a rolling ball,
 -- a push, then prints the truth and some sensors as hex floats (bit-exact comparison).
+-- luacheck: read globals Sim Body wait
 local stance = dofile(os.getenv('HRP_ROOT') .. '/Tests/sim/stance.lua')
 assert(Sim.reset())
 stance.command(Body)
