@@ -381,6 +381,8 @@ static int open_port(dcm *d) {
 /* Reads every servo once (at start): marks the missing ones dead. */
 static void probe(dcm *d) {
   int found = 0;
+  double margin = d->bus.timeout_margin;
+  d->bus.timeout_margin = 0.05;   /* start-up is not real time: be patient once */
   for (int j = 0; j < d->c.nj; j++) {
     uint8_t b[4], e;
     int r = dxl_read(&d->bus, (uint8_t)d->c.id[j], d->c.servo->pos_addr, d->c.servo->pos_len, b, &e);
@@ -395,6 +397,7 @@ static void probe(dcm *d) {
       logmsg(d, "servo %d (%s) does not answer: %s", d->c.id[j], d->c.joint[j], dxl_result_str(r));
     }
   }
+  d->bus.timeout_margin = margin;
   logmsg(d, "%d of %d servos answer (%s, protocol %d.0, %s)", found, d->c.nj, d->c.servo->name,
          d->c.protocol, d->c.board->name);
 }
@@ -453,6 +456,8 @@ static void read_state(dcm *d, double now, double dt) {
   joint_of[n++] = -1;
   int r = dxl_bulk_read(&d->bus, items, n);
   if (r < 0) return;   /* port trouble: the caller reopens */
+  /* no answer at all is a bus problem (power, cable, adapter), not n dead servos */
+  int bus_silent = r == 0;
   for (int k = 0; k < n; k++) {
     int j = joint_of[k];
     if (j < 0) {
@@ -461,7 +466,7 @@ static void read_state(dcm *d, double now, double dt) {
     }
     if (items[k].result != 0) {
       d->stimeout[j]++;
-      if (++d->miss[j] >= d->c.dead_after) {
+      if (!bus_silent && ++d->miss[j] >= d->c.dead_after) {
         d->dead[j] = 1;
         d->retry_at[j] = now + d->c.retry_period;
         logmsg(d, "servo %d (%s) marked dead after %d missed answers", d->c.id[j], d->c.joint[j], d->miss[j]);
@@ -573,7 +578,7 @@ int main(int argc, char **argv) {
   uint32_t tick = 0, missed = 0, cycles = 0;
   int jn = 0, jcap = (int)(1.0 / d->c.period) + 8;
   double *jit = calloc((size_t)jcap, sizeof *jit), *sorted = calloc((size_t)jcap, sizeof *sorted);
-  double win_start = t0, win_bytes0 = 0;
+  double win_start = t0, win_bytes0 = (double)(d->bus.stats.tx_bytes + d->bus.stats.rx_bytes);
   uint32_t win_cycles = 0;
   double last_cmd[NJ_MAX], cmd[NJ_MAX], hard[NJ_MAX];
   int en[NJ_MAX];
