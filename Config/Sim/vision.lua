@@ -12,7 +12,7 @@ return {
       display = { 255, 128, 0 } },
     { name = 'green', bit = 8, y = { 30, 190 }, u = { 56, 124 }, v = { 40, 122 },
       display = { 0, 160, 0 } },
-    { name = 'white', bit = 16, y = { 176, 255 }, u = { 104, 152 }, v = { 104, 152 },
+    { name = 'white', bit = 16, y = { 172, 255 }, u = { 104, 152 }, v = { 104, 152 },
       display = { 255, 255, 255 } },
   },
   ball = {
@@ -21,7 +21,8 @@ return {
     min_area = 4,               -- label pixels
     min_fill = 0.45,            -- area / bounding box area
     max_aspect = 2.2,           -- bounding box long side / short side (partly hidden balls)
-    green_below = 0.1,          -- fraction of green pixels needed in the band below the ball (0: off)
+    green_below = 0.1,          -- fraction of field pixels needed in the band below the ball (0: off)
+    green_color = 24,           -- label bits that count as field below the ball: green | white (lines)
     max_range = 6.0,            -- m, farther detections are refused
     size_tolerance = 2.0,       -- range from size within this factor of the ground-projected range
   },
