@@ -504,6 +504,20 @@ static void retry_dead(dcm *d, double now) {
   }
 }
 
+/* Bytes on the wire of one regular cycle (no stuffing, no changes of torque/hardness):
+ * sync write of goals + bulk read request + the answers of n servos (one extended) and board. */
+static int wire_bytes(const dcm *d, int *tx, int *rx) {
+  const servo_model *m = d->c.servo;
+  int n = d->c.nj, p = d->c.protocol;
+  int sw = dxl_instruction_size(p, (p == 1 ? 2 : 4) + n * (1 + m->goal_len));
+  int br = dxl_instruction_size(p, p == 1 ? 1 + 3 * (n + 1) : 5 * (n + 1));
+  int ans = (n - 1) * dxl_status_size(p, m->pos_len) + dxl_status_size(p, m->ext_len) +
+            dxl_status_size(p, d->c.board->len);
+  *tx = sw + br;
+  *rx = ans;
+  return sw + br + ans;
+}
+
 /* ---------------------------------------------------------------- main loop */
 
 static int cmp_double(const void *a, const void *b) {
@@ -556,6 +570,9 @@ int main(int argc, char **argv) {
   int nset = dxl_usb_set_latency(d->c.port, d->c.latency_timer, err, sizeof err);
   if (nset > 0) logmsg(d, "latency timer %d ms set on %d adapter(s)", d->c.latency_timer, nset);
 
+  int wtx, wrx, wire = wire_bytes(d, &wtx, &wrx);
+  logmsg(d, "wire per cycle: %d bytes (sent %d, answers %d) = %.1f ms at %d baud, bus-limited %.0f Hz",
+         wire, wtx, wrx, wire * 10e3 / d->c.baud, d->c.baud, d->c.baud / (10.0 * wire));
   while (!g_stop && open_port(d) != 0) sleep_until(dxl_now() + 0.5);
   if (g_stop) return 0;
   probe(d);
