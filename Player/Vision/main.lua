@@ -137,8 +137,8 @@ end
 
 local last_err, last_err_count = nil, 0
 local function camera_error(msg, code)
+  if code == camera.ETIMEOUT and cam.driver == 'sim' then return end   -- between frames, or sim paused
   counts.cam_errors = counts.cam_errors + 1
-  if code == camera.ETIMEOUT and cam.driver == 'sim' then return end   -- the sim is paused or slow
   if msg ~= last_err or last_err_count % 100 == 0 then log('camera: %s', msg) end
   last_err_count = msg == last_err and last_err_count + 1 or 1
   last_err = msg
