@@ -10,19 +10,20 @@ return {
   bodyHeight = 0.25,         -- m, torso origin (hip yaw anchors, Config/Sim/robot.lua) above the ground
   bodyTilt = 0.08,           -- rad, torso pitch (forward positive)
   footX = 0.0,               -- m, trim of the torso origin behind the planned COM
-  footY = 0.035,             -- m, half the lateral spacing of the feet (ankle points)
+  footY = 0.045,             -- m, half the lateral spacing of the feet (ankle points)
   supportX = 0.0,            -- m, ZMP in single support, ahead of the ankle
   supportY = 0.0,            -- m, ZMP in single support, outward from the ankle
   stepHeight = 0.035,        -- m, swing foot lift
+  swingLead = 0.65,          -- fraction of single support in which the swing foot reaches its place
   -- velocity: limits and acceleration (per second)
   velLimitX = { -0.15, 0.40 },
   velLimitY = { -0.15, 0.15 },
-  velLimitA = { -1.2, 1.2 },
+  velLimitA = { -1.8, 1.8 },
   accLimit = { 0.4, 0.4, 2.0 },
   -- steps: swing foot relative to the support foot (y, a measured outward)
   stepLimitX = { -0.06, 0.11 },
-  stepLimitY = { 0.06, 0.15 },
-  stepLimitA = { -0.05, 0.6 },
+  stepLimitY = { 0.08, 0.17 },
+  stepLimitA = { -0.05, 0.95 },
   -- arms: shoulder pitch, shoulder roll, elbow (joint angles of this robot)
   qLArm = { 0.0, -0.25, 0.0 },
   qRArm = { 0.0, 0.25, 0.0 },
@@ -32,7 +33,7 @@ return {
   feedback = {
     gyroTimeConstant = 0.02,    -- s, low-pass on the gyro
     gyroDeadband = { 0.0, 0.0 },-- rad/s
-    ankle = { 0.0, 0.0 },       -- rad per rad/s: { roll, pitch }
+    ankle = { 0.1, 0.1 },       -- rad per rad/s: { roll, pitch }
     knee = 0.0,                 -- pitch
     hip = { 0.0, 0.0 },         -- { roll, pitch }
     arm = { 0.0, 0.0 },         -- { roll, pitch }

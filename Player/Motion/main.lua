@@ -80,7 +80,7 @@ local function apply_param()
 end
 
 local participant = lockstep.join()
-local tick = Body.get_tick()
+local tick = -1 -- the current tick is handled first (the lockstep waits for it)
 local pos, gyro, angle = ctl.pos, ctl.gyro, ctl.angle
 local hardness = actuator.hardness
 

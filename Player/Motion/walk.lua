@@ -15,7 +15,7 @@
 -- Every parameter is read from the params table at each step/tick, so a change lands while walking.
 local lipm = require('Motion.lipm')
 
-local sin, cos, atan2, asin, sqrt = math.sin, math.cos, math.atan2, math.asin, math.sqrt
+local sin, cos, atan2, asin = math.sin, math.cos, math.atan2, math.asin
 local abs, pi = math.abs, math.pi
 
 local M = {}
@@ -128,11 +128,12 @@ function M.clamp_velocity(p, vx, vy, va)
   vx = clamp(vx, p.velLimitX[1], p.velLimitX[2])
   vy = clamp(vy, p.velLimitY[1], p.velLimitY[2])
   va = clamp(va, p.velLimitA[1], p.velLimitA[2])
-  -- keep combined commands inside an ellipse-like budget (fast forward + fast turn is not possible)
+  -- combined commands share one budget: the fractions of the limits add up to at most 1
+  -- (fast forward and fast turning at once is more than the feet can do)
   local fx = vx >= 0 and vx / p.velLimitX[2] or vx / -p.velLimitX[1]
   local fy = vy >= 0 and vy / p.velLimitY[2] or vy / -p.velLimitY[1]
   local fa = va >= 0 and va / p.velLimitA[2] or va / -p.velLimitA[1]
-  local n = sqrt(fx * fx + fy * fy + fa * fa)
+  local n = abs(fx) + abs(fy) + abs(fa)
   if n > 1 then vx, vy, va = vx / n, vy / n, va / n end
   return vx, vy, va
 end
@@ -283,7 +284,8 @@ function Walk:advance(dt)
     self.zmp[1], self.zmp[2] = zx, zy
     local ph1, ph2 = p.phSingle[1], p.phSingle[2]
     local phs = clamp((ph - ph1) / (ph2 - ph1), 0, 1)
-    local s = smooth(phs)
+    -- the foot reaches its landing point a little before touch-down (servo lag)
+    local s = smooth(clamp(phs / p.swingLead, 0, 1))
     local lift = 16 * phs * phs * (1 - phs) * (1 - phs)
     self.swing_z = p.stepHeight * lift
     if self.support == LEFT then
@@ -293,8 +295,10 @@ function Walk:advance(dt)
       self.uLeft = interp(s, self.uLeft1, self.uLeft2)
       self.uRight = self.uRight1
     end
-    local a = interp(0.5, self.uLeft, self.uRight)[3]
-    self.uTorso = { x, y, a }
+    -- heading: turns at a constant rate over the whole step (no yaw jerk from the swing)
+    local a1 = interp(0.5, self.uLeft1, self.uRight1)[3]
+    local a2 = interp(0.5, self.uLeft2, self.uRight2)[3]
+    self.uTorso = { x, y, wrap(a1 + ph * wrap(a2 - a1)) }
   end
   -- torso origin from the COM: subtract the COM offset (torso frame, rotated by the heading)
   local ta = self.uTorso[3]

@@ -37,6 +37,15 @@ if Body.get_tick() - motion.tick[0] > 2 then
   os.exit(1)
 end
 
+-- WALK_PARAMS='key=v[,v..];key=v' changes walk parameters first (Walk.set), e.g. to switch feedback off
+for kv in (os.getenv('WALK_PARAMS') or ''):gmatch('[^;]+') do
+  local k, v = kv:match('^(.-)=(.*)$')
+  local vals = {}
+  for x in v:gmatch('[^,]+') do vals[#vals + 1] = tonumber(x) end
+  Walk.set(k, #vals == 1 and vals[1] or vals)
+  note('walk parameter %s = %s', k, v)
+end
+
 -- until(pred, timeout): waits in steps of 0.05 s until pred() is true; returns true or false
 local function wait_until(pred, timeout)
   local t0 = Body.get_time()
@@ -116,8 +125,9 @@ function scenarios.forward(v)
   note('start to stop: %.2f m', math.sqrt((b.x - t0.x) ^ 2 + (b.y - t0.y) ^ 2))
 end
 
+-- (commands a little above the goal speeds: the feet slip a little on the carpet)
 function scenarios.sideways(v)
-  v = tonumber(v) or 0.1
+  v = tonumber(v) or 0.12
   start_clean()
   local vel, fell = walk_for(0, v, 0, 15, 2)
   note('sideways: commanded %.3f m/s, measured %.3f m/s (forward %.3f)', v, vel[2], vel[1])
@@ -128,7 +138,7 @@ function scenarios.sideways(v)
 end
 
 function scenarios.turn(v)
-  v = tonumber(v) or 1.0
+  v = tonumber(v) or 1.7
   start_clean()
   local a0 = Sim.truth()
   local vel, fell, _, b = walk_for(0, 0, v, 10, 2)
@@ -141,7 +151,7 @@ function scenarios.turn(v)
 end
 
 function scenarios.backward(v)
-  v = tonumber(v) or 0.1
+  v = tonumber(v) or 0.12
   start_clean()
   local vel, fell = walk_for(-v, 0, 0, 15, 2)
   note('backward: commanded %.3f m/s, measured %.3f m/s', -v, vel[1])
@@ -164,8 +174,9 @@ function scenarios.random(seconds, seed)
   while Body.get_time() - t0 < seconds and not fell do
     local v = {}
     for k = 1, 3 do v[k] = lim[k][1] + rnd() * (lim[k][2] - lim[k][1]) end
-    Walk.set_velocity(v[1], v[2], v[3])
+    local cx, cy, ca = Walk.set_velocity(v[1], v[2], v[3])
     changes = changes + 1
+    if os.getenv('VERBOSE') then note('t=%.1f command %.3f %.3f %.3f', Body.get_time() - t0, cx, cy, ca) end
     local hold = 1 + 3 * rnd()
     local t1 = Body.get_time()
     while Body.get_time() - t1 < hold do

@@ -1,0 +1,53 @@
+#!/usr/bin/env bash
+# Walking scenarios in the simulator's lockstep mode (the motion process alone, no behavior):
+# forward >= 0.25 m/s for 30 s with heading drift < 10 deg and a clean stop into stance; sideways
+# and backwards 0.1 m/s; turning on the spot 1 rad/s; 60 s of random commands; pushed over
+# forwards and backwards: fall detected within 0.3 s, stands up, walks again; a kick sends the
+# ball >= 2 m. Each scenario runs in its own sim (Tests/motion/sim_scenarios.lua prints TAP).
+#   Tests/motion/sim_walk_test.sh [SCENARIO...]
+set -u
+cd "$(dirname "$0")/../.."
+source Run/env.sh
+LOGDIR="$HRP_ROOT/build/test-logs/motion"
+mkdir -p "$LOGDIR"
+BASE_ID=${ROBOT_ID:-9200}
+SCEN=("$@")
+[ ${#SCEN[@]} -eq 0 ] && SCEN=(forward sideways turn backward random)
+
+if [ ! -x build/bin/dcm_sim ]; then
+  echo "not ok 1 - walking scenarios: the simulator (build/bin/dcm_sim) is not built"
+  exit 1
+fi
+
+n=0; failed=0; k=0
+for s in "${SCEN[@]}"; do
+  n=$((n + 1))
+  id=$((BASE_ID + n))
+  read -r -a parts <<<"$s"
+  ROBOT_ID=$id ./run_main --sim --quiet --no-restart --dcm-arg --lockstep --dcm-arg --seed --dcm-arg 1 motion \
+    >"$LOGDIR/main_${parts[0]}.log" 2>&1 &
+  main_pid=$!
+  # the script joins the lockstep once the DCM's clock runs and the motion process is started
+  for _ in $(seq 200); do
+    grep -q 'motion started' "$LOGDIR/main_${parts[0]}.log" 2>/dev/null && break
+    sleep 0.1
+  done
+  ROBOT_ID=$id timeout 600 ./run_repl Tests/motion/sim_scenarios.lua "${parts[@]}" >"$LOGDIR/${parts[0]}.log" 2>&1
+  rc=$?
+  kill -TERM "$main_pid" 2>/dev/null
+  wait "$main_pid" 2>/dev/null
+  Run/shm --robot "$id" remove >/dev/null 2>&1
+  # renumber the scenario's TAP lines into one sequence
+  while IFS= read -r line; do
+    if [[ $line =~ ^(not\ ok|ok)\ [0-9]+\ -\ (.*)$ ]]; then
+      k=$((k + 1)); echo "${BASH_REMATCH[1]} $k - ${parts[0]}: ${BASH_REMATCH[2]}"
+      [[ ${BASH_REMATCH[1]} == "not ok" ]] && failed=$((failed + 1))
+    elif [[ $line == \#* ]]; then echo "$line"; fi
+  done <"$LOGDIR/${parts[0]}.log"
+  if [ $rc -ne 0 ]; then
+    k=$((k + 1)); failed=$((failed + 1))
+    echo "not ok $k - ${parts[0]}: scenario script exited with status $rc (log $LOGDIR/${parts[0]}.log)"
+    tail -n 5 "$LOGDIR/${parts[0]}.log" | sed 's/^/#   /'
+  fi
+done
+[ $failed -eq 0 ]
