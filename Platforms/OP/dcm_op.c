@@ -1,6 +1,6 @@
 /* dcm_op: the DCM of the OP platform (DARwIn-OP: MX-28 + CM-730, protocol 1.0; OP3: XM430 +
  * OpenCR, protocol 2.0). PLATFORM=OP ./run_dcm [--port PATH] [--robot darwin|op3] [--rate HZ]
- * [--baud N] [--cycles N] [--quiet]
+ * [--baud N] [--cycles N] [--timeout-margin S] [--quiet]
  *
  * Lifecycle (one job per step): parse config (Config/OP/robot.lua, dcm.lua; no I/O) -> open
  * the shm blocks -> open the port (retried) -> ping, read the pose, hold it -> cycle.
@@ -534,7 +534,7 @@ static void sleep_until(double t) {
 
 static void usage(void) {
   fprintf(stderr, "usage: PLATFORM=OP ./run_dcm [--port PATH] [--robot darwin|op3] [--rate HZ] [--baud N]\n"
-                  "                             [--cycles N] [--quiet]\n");
+                  "                             [--cycles N] [--timeout-margin S] [--quiet]\n");
 }
 
 int main(int argc, char **argv) {
@@ -544,6 +544,7 @@ int main(int argc, char **argv) {
   double rate = 0;
   long max_cycles = -1;
   int baud = 0;
+  double margin = -1;
   for (int i = 1; i < argc; i++) {
     const char *o = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
     if (!strcmp(o, "--port") && v) { port = v; i++; }
@@ -551,6 +552,7 @@ int main(int argc, char **argv) {
     else if (!strcmp(o, "--rate") && v) { rate = atof(v); i++; }
     else if (!strcmp(o, "--baud") && v) { baud = atoi(v); i++; }
     else if (!strcmp(o, "--cycles") && v) { max_cycles = atol(v); i++; }
+    else if (!strcmp(o, "--timeout-margin") && v) { margin = atof(v); i++; }
     else if (!strcmp(o, "--quiet")) d->quiet = 1;
     else { usage(); return 2; }
   }
@@ -559,6 +561,7 @@ int main(int argc, char **argv) {
   if (port) snprintf(d->c.port, sizeof d->c.port, "%s", port);
   if (rate > 0) d->c.period = 1.0 / rate;
   if (baud > 0) d->c.baud = baud;
+  if (margin >= 0) d->c.timeout_margin = margin;
   if (open_shm(d)) return 1;
   signal(SIGINT, on_signal);
   signal(SIGTERM, on_signal);

@@ -22,11 +22,13 @@ cleanup() {
 }
 trap cleanup EXIT
 
+# the emulated bus should not be descheduled by a loaded test machine: raise it if allowed
+NICE=""; nice -n -10 true 2>/dev/null && NICE="nice -n -10"
 repl() { ./run_repl -e "$1" 2>&1 | tail -1; }
 # start_emu ARGS...: emulator with commands on fd 3, answers in $T/emu.out
 start_emu() {
   rm -f "$T/emu.in"; mkfifo "$T/emu.in"
-  build/bin/dxl_emulator --link "$T/dxl" --stdin --quiet "$@" <"$T/emu.in" >>"$T/emu.out" 2>>"$T/emu.log" &
+  $NICE build/bin/dxl_emulator --link "$T/dxl" --stdin --quiet "$@" <"$T/emu.in" >>"$T/emu.out" 2>>"$T/emu.log" &
   EMU=$!
   exec 3>"$T/emu.in"
   for _ in $(seq 100); do [ -e "$T/dxl" ] && break; sleep 0.05; done
@@ -84,7 +86,9 @@ stop_dcm
 stop_emu
 rm -f /dev/shm/hrp."$ROBOT_ID".*
 start_emu --dead 5 --corrupt 0.01 --seed 3
-start_dcm --cycles 1000
+# a loaded test machine may schedule the emulator late: a wider answer margin than on a real
+# bus keeps lateness from being counted as loss (the margin is a config value, timeout_margin)
+start_dcm --cycles 1000 --timeout-margin 0.02
 wait "$DCM"; DCM=""
 echo stats >&3; sleep 0.3
 corrupted=$(grep -o 'corrupted [0-9]*' "$T/emu.out" | tail -1 | awk '{print $2}')
@@ -95,8 +99,12 @@ read -r cycles dead5 dead_others timeouts rx missed < <(repl 'local s = require(
 echo "# 1000 cycles, 1% corrupt: emulator corrupted $corrupted answers; DCM: rx_errors $rx, timeouts of live servos $timeouts, missed cycles $missed"
 ok $([ "$cycles" = 1000 ]; echo $?) "DCM keeps cycling with 1% corrupt answers and a dead servo ($cycles cycles)"
 ok $([ "$dead5" = 1 ] && [ "$dead_others" = 0 ]; echo $?) "the dead servo is reported, the others are not"
-ok $([ "${rx:-0}" -gt 0 ] && [ "${rx:-0}" -le "${corrupted:-0}" ]; echo $?) "corrupt answers counted ($rx of $corrupted)"
-ok $([ "${timeouts:-1}" -le "${corrupted:-0}" ]; echo $?) "only the readings hit are lost (missing answers $timeouts <= corrupted $corrupted)"
+# Every corrupted answer is either counted as corrupt or (header byte hit) as missing; answers
+# made late by a loaded machine add a few of both. If one bad answer cost the rest of its bulk
+# read, the loss would be ~10x the corrupted answers (20 servos per read).
+bound=$(( ${corrupted:-0} * 3 / 2 + 30 ))
+ok $([ "${rx:-0}" -gt 0 ] && [ "${rx:-0}" -le "$bound" ]; echo $?) "corrupt answers counted ($rx for $corrupted corrupted)"
+ok $([ "${timeouts:-999999}" -le "$bound" ]; echo $?) "only the readings hit are lost (missing answers $timeouts for $corrupted corrupted, bound $bound)"
 stop_emu
 
 # ---- the port vanishes and comes back
@@ -104,6 +112,14 @@ rm -f /dev/shm/hrp."$ROBOT_ID".*
 start_emu
 start_dcm
 wait_for 'require("shm").open("dcm.stats").cycles[0] > 20' >/dev/null
+# a servo dies (id 3 = r_sho_roll, joint 19) and comes back: marked dead, retried, rejoins
+echo "dead 3" >&3
+wait_for 'require("shm").open("dcm.stats").servo_dead[18] == 1'; ok $? "a servo that stops answering is marked dead"
+repl 'Body.set_command("l_el", 0.4)' >/dev/null
+for _ in $(seq 50); do s=$(emu_stat 6); [ "${s%% *}" = 2309 ] && break; sleep 0.1; done
+ok $([ "${s%% *}" = 2309 ]; echo $?) "the others go on while it is dead (servo 6 goal $s)"
+echo "alive 3" >&3
+wait_for 'require("shm").open("dcm.stats").servo_dead[18] == 0'; ok $? "it is retried and rejoins when it answers again"
 stop_emu
 sleep 0.5
 start_emu
