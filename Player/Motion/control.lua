@@ -40,12 +40,12 @@ function M.new(opts)
   local n = #robot.joints
   local c = setmetatable({
     robot = robot, p = params, model = opts.model, n = n, platform = opts.platform,
-    q = {}, h = {}, pos = {}, gyro = { 0, 0, 0 }, angle = { 0, 0, 0 },
+    q = {}, h = {}, pos = {}, gyro = { 0, 0, 0 }, angle = { 0, 0, 0 }, acc = { 0, 0, 9.81 },
     t = 0, dt = robot.period, want = 'stand', falls = 0, fall_time = -1,
     vel_cmd = { 0, 0, 0 }, head = { 0, 0 },
   }, Ctl)
   for i = 1, n do c.q[i], c.h[i], c.pos[i] = 0, 0, 0 end
-  c.sensors = { gyro = c.gyro, position = c.pos, angle = c.angle }
+  c.sensors = { gyro = c.gyro, position = c.pos, angle = c.angle, acc = c.acc }
   c.walk = Walk.new(params, opts.model):bind(robot)
   c.kick = Kick.new(c.walk)
   c.ji = c.walk.ji
@@ -108,7 +108,7 @@ function Ctl:fall_detected()
   return false
 end
 
--- One tick at robot time t: sensors must be filled in (self.pos, self.gyro, self.angle).
+-- One tick at robot time t: sensors must be filled in (self.pos, self.gyro, self.angle, self.acc).
 -- Leaves the commands in self.q and hardness in self.h.
 function Ctl:tick(t)
   local dt = t - self.t

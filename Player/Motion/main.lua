@@ -81,7 +81,7 @@ end
 
 local participant = lockstep.join()
 local tick = -1 -- the current tick is handled first (the lockstep waits for it)
-local pos, gyro, angle = ctl.pos, ctl.gyro, ctl.angle
+local pos, gyro, angle, acc = ctl.pos, ctl.gyro, ctl.angle, ctl.acc
 local hardness = actuator.hardness
 
 while true do
@@ -93,6 +93,7 @@ while true do
       for i = 1, n do pos[i] = s.position[i - 1] end
       gyro[1], gyro[2], gyro[3] = s.gyro[0], s.gyro[1], s.gyro[2]
       angle[1], angle[2], angle[3] = s.angle[0], s.angle[1], s.angle[2]
+      acc[1], acc[2], acc[3] = s.accelerometer[0], s.accelerometer[1], s.accelerometer[2]
       return s.time[0]
     end)
     -- requests and parameters

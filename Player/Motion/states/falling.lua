@@ -10,7 +10,7 @@ function M.entry(c)
     c.q[i] = c.pos[i]
     c.h[i] = p.fallHardness
   end
-  -- arms towards the side the robot falls to (pitch > 0: forwards)
+  -- arms towards the side the robot falls to (pitch > 0: forwards; still small when detected)
   local fwd = c.angle[2] > 0
   local a = fwd and -1.2 or 0.8
   local ji, ay = c.ji, c.walk.ay
@@ -26,7 +26,9 @@ function M.update(c)
   if c:since() < c.p.fallSettleTime or not still_since or c.t - still_since < 0.3 then return nil end
   local roll, pitch = c.angle[1], c.angle[2]
   if math.abs(pitch) < 0.5 and math.abs(roll) < 0.5 then return 'stand' end -- did not fall after all
-  if pitch > 0 then return 'front' end
+  -- lying still, the accelerometer reads gravity in the torso frame: face down it points along
+  -- -x (Euler angles are no help here: they flip near a pitch of 90 deg)
+  if c.acc[1] < 0 then return 'front' end
   return 'back'
 end
 
