@@ -51,6 +51,7 @@ r.dead_after = 5              -- consecutive missed answers before a servo is ma
 r.retry_period = 0.5          -- s between retries of a dead servo (one short read)
 r.timeout_margin = 0.0015     -- s added to the wire time of expected answers (USB latency)
 r.latency_timer = 1           -- ms, FTDI latency timer set through libusb / sysfs
+r.rt_priority = 20            -- SCHED_FIFO priority of the DCM (0: normal process); needs the right
 r.gyro_sign = { 1, 1, 1 }     -- board axes to torso axes (x forward, y left, z up)
 r.accel_sign = { 1, 1, 1 }
 return r

@@ -19,6 +19,7 @@
 #include <lua.h>
 #include <lualib.h>
 #include <math.h>
+#include <sched.h>
 #include <signal.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -73,7 +74,7 @@ typedef struct config {
   const board_model *board;
   int id[NJ_MAX], dir[NJ_MAX], zero[NJ_MAX];
   double start_hardness, watchdog, safe_hardness, retry_period, timeout_margin;
-  int dead_after, latency_timer;
+  int dead_after, latency_timer, rt_priority;
   double gyro_sign[3], accel_sign[3];
 } config;
 
@@ -184,6 +185,8 @@ static int load_config(config *c, char *err, size_t n) {
   if (lua_num(L, f, "timeout_margin", &c->timeout_margin, err, n)) goto out;
   if (lua_num(L, f, "dead_after", &v, err, n)) goto out;
   c->dead_after = (int)v;
+  if (lua_num(L, f, "rt_priority", &v, err, n)) goto out;
+  c->rt_priority = (int)v;
   if (lua_num(L, f, "latency_timer", &v, err, n)) goto out;
   c->latency_timer = (int)v;
   if (lua_nums(L, f, "gyro_sign", c->gyro_sign, 3, err, n)) goto out;
@@ -573,6 +576,11 @@ int main(int argc, char **argv) {
   int nset = dxl_usb_set_latency(d->c.port, d->c.latency_timer, err, sizeof err);
   if (nset > 0) logmsg(d, "latency timer %d ms set on %d adapter(s)", d->c.latency_timer, nset);
 
+  if (d->c.rt_priority > 0) {
+    struct sched_param sp = { .sched_priority = d->c.rt_priority };
+    if (sched_setscheduler(0, SCHED_FIFO, &sp) != 0)
+      logmsg(d, "no real-time priority %d (%s): running as a normal process", d->c.rt_priority, strerror(errno));
+  }
   int wtx, wrx, wire = wire_bytes(d, &wtx, &wrx);
   logmsg(d, "wire per cycle: %d bytes (sent %d, answers %d) = %.1f ms at %d baud, bus-limited %.0f Hz",
          wire, wtx, wrx, wire * 10e3 / d->c.baud, d->c.baud, d->c.baud / (10.0 * wire));

@@ -3,7 +3,7 @@
  *
  *   dxl_emulator [--link PATH] [--protocol 1|2] [--ids A-B] [--baud N] [--timing]
  *                [--drop P] [--corrupt P] [--delay S] [--dead ID]... [--tau S] [--seed N]
- *                [--stdin] [--quiet]
+ *                [--stdin] [--realtime] [--quiet]
  *
  * --protocol 1 (default): a DARwIn-OP chain: MX-28 servos (ids 1-20) and the CM-730 (id 200).
  * --protocol 2: an OP3 chain: XM430-W350 servos (ids 1-20) and the OpenCR (id 200).
@@ -11,6 +11,7 @@
  * speed). --timing adds the wire time of every packet at --baud (10 bits a byte) and each
  * device's return delay time. Faults: --drop P (no answer), --corrupt P (one byte of an answer
  * flipped), --delay S (extra latency before every answer), --dead ID (never answers).
+ * --realtime asks for SCHED_FIFO so answers leave on time on a loaded machine.
  * --stdin reads commands, one per line:  button MASK | gyro X Y Z (rad/s) | accel X Y Z (m/s^2)
  *   | dead ID | alive ID | stats | quit.
  * Prints "dxl_emulator: ready <pty>" on stderr when the port can be opened.
@@ -21,6 +22,7 @@
 #include <fcntl.h>
 #include <math.h>
 #include <poll.h>
+#include <sched.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -212,6 +214,9 @@ static int return_delay_us(device *d) {
 /* Output queue: status packets with the time they are due on the wire. */
 static uint8_t outbuf[65536];
 static size_t outlen;
+#define MAXQ 256
+static struct { size_t end; double due; } outq[MAXQ];   /* packet ends in outbuf, due times */
+static int nq;
 static double bus_free;    /* time the (emulated) half-duplex bus is free */
 
 static void emit(device *d, uint8_t error, const uint8_t *data, size_t n) {
@@ -230,9 +235,12 @@ static void emit(device *d, uint8_t error, const uint8_t *data, size_t n) {
     double start = bus_free + return_delay_us(d) * 1e-6;
     bus_free = start + len * byte_time();
   }
-  if (outlen + (size_t)len <= sizeof outbuf) {
+  if (outlen + (size_t)len <= sizeof outbuf && nq < MAXQ) {
     memcpy(outbuf + outlen, pk, (size_t)len);
     outlen += (size_t)len;
+    outq[nq].end = outlen;
+    outq[nq].due = bus_free;
+    nq++;
     n_tx++;
   }
 }
@@ -350,13 +358,13 @@ static void on_signal(int s) { (void)s; stop = 1; }
 
 static void usage(void) {
   fprintf(stderr, "usage: dxl_emulator [--link PATH] [--protocol 1|2] [--ids A-B] [--baud N] [--timing]\n"
-                  "       [--drop P] [--corrupt P] [--delay S] [--dead ID]... [--tau S] [--seed N] [--stdin] [--quiet]\n");
+                  "       [--drop P] [--corrupt P] [--delay S] [--dead ID]... [--tau S] [--seed N] [--stdin] [--realtime] [--quiet]\n");
 }
 
 int main(int argc, char **argv) {
   const char *link_path = NULL;
   int id_lo = 1, id_hi = 20, use_stdin = 0;
-  int dead[64], ndead = 0;
+  int dead[64], ndead = 0, realtime = 0;
   unsigned seed = 1;
   for (int i = 1; i < argc; i++) {
     const char *o = argv[i];
@@ -374,11 +382,17 @@ int main(int argc, char **argv) {
     else if (!strcmp(o, "--seed") && v) { seed = (unsigned)atoi(v); i++; }
     else if (!strcmp(o, "--stdin")) use_stdin = 1;
     else if (!strcmp(o, "--quiet")) quiet = 1;
+    else if (!strcmp(o, "--realtime")) realtime = 1;
     else { usage(); return 2; }
   }
   if ((protocol != 1 && protocol != 2) || baud <= 0 || id_lo < 0 || id_hi > 252 || id_lo > id_hi ||
       tau <= 0) { usage(); return 2; }
   srand(seed);
+  if (realtime) {   /* behave like hardware: answer on time even on a loaded machine */
+    struct sched_param sp = { .sched_priority = 30 };
+    if (sched_setscheduler(0, SCHED_FIFO, &sp) != 0 && !quiet)
+      fprintf(stderr, "dxl_emulator: no real-time priority (%s): timing may slip\n", strerror(errno));
+  }
   for (int id = id_lo; id <= id_hi && ndev < MAXDEV - 1; id++) add_device(protocol == 1 ? MX28 : XM430, (uint8_t)id);
   add_device(protocol == 1 ? CM730 : OPENCR, 200);
   for (int k = 0; k < ndead; k++) { device *d = find((uint8_t)dead[k]); if (d) d->dead = 1; }
@@ -438,19 +452,22 @@ int main(int argc, char **argv) {
       if (pr < 0) n_bad++;
       if (pr == 1) {
         outlen = 0;
+        nq = 0;
         if (timing) {
           /* on a real bus the request occupies it for its bytes: answers start after that */
           bus_free = arrived + (double)used * byte_time();
         }
         handle(&pkt);
-        if (outlen) {
-          double due = (timing ? bus_free : now_s()) + extra_delay;
-          if (timing || extra_delay > 0) sleep_until(due);
-          size_t off = 0;
-          while (off < outlen && !stop) {
-            ssize_t w = write(m, outbuf + off, outlen - off);
+        /* each answer leaves when the emulated bus has carried it (all at once without
+         * the timing model), after the extra --delay */
+        size_t off = 0;
+        for (int q = 0; q < nq && !stop; q++) {
+          if (timing || extra_delay > 0) sleep_until((timing ? outq[q].due : arrived) + extra_delay);
+          while (off < outq[q].end && !stop) {
+            size_t upto = (timing || extra_delay > 0) ? outq[q].end : outlen;
+            ssize_t w = write(m, outbuf + off, upto - off);
             if (w > 0) off += (size_t)w;
-            else if (w < 0 && errno != EAGAIN && errno != EINTR) break;
+            else if (w < 0 && errno != EAGAIN && errno != EINTR) { off = outlen; break; }
             else { struct pollfd po = { m, POLLOUT, 0 }; poll(&po, 1, 10); }
           }
         }

@@ -28,7 +28,7 @@ stats() {
 run() {   # run LABEL ROBOT EMU_ARGS...
   local label=$1 robot=$2; shift 2
   rm -f /dev/shm/hrp."$ROBOT_ID".*
-  build/bin/dxl_emulator --link "$T/dxl" --quiet "$@" 2>/dev/null & EMU=$!
+  build/bin/dxl_emulator --link "$T/dxl" --quiet --realtime "$@" 2>/dev/null & EMU=$!
   for _ in $(seq 100); do [ -e "$T/dxl" ] && break; sleep 0.05; done
   local cycles=$((SECS * 125))
   OP_ROBOT=$robot ./run_dcm --port "$T/dxl" --cycles "$cycles" 2>"$T/dcm.log" & DCM=$!
