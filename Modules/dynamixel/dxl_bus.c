@@ -47,7 +47,12 @@ static int receive(dxl_bus *bus, dxl_bulk_item *items, int n, double deadline) {
   }
   if (bus->protocol == 2) maxp += 3;   /* ping answers carry 3 bytes with len 0 asked */
   if (maxp == 0) maxp = 1;
+  /* bytes of all the answers: once that many came and nothing parses, the rest was corrupt or
+   * lost and waiting on is pointless (2.0 stuffing can add bytes: then we wait as usual) */
+  size_t expect = 0, received = 0;
+  for (int k = 0; k < n; k++) expect += (size_t)dxl_status_size(bus->protocol, items[k].len);
   int next = 0, answered = 0, rc = 0;
+  uint64_t corrupt0 = bus->stats.corrupt;
   dxl_packet *pkt = &bus->pkt;
   while (next < n) {
     size_t used = 0;
@@ -85,11 +90,13 @@ static int receive(dxl_bus *bus, dxl_bulk_item *items, int n, double deadline) {
       continue;
     }
     if (used) { bus->stats.dropped_bytes += used; drop(bus, used); }
+    if (received >= expect && bus->stats.corrupt > corrupt0) break;
     if (bus->rxlen >= sizeof bus->rx) { bus->stats.corrupt++; drop(bus, 1); continue; }
     int got = dxl_port_read(bus->port, bus->rx + bus->rxlen, sizeof bus->rx - bus->rxlen, deadline);
     if (got < 0) { bus->stats.port_errors++; rc = DXL_COMM_RX_FAIL; break; }
     if (got == 0) break;   /* deadline */
     bus->rxlen += (size_t)got;
+    received += (size_t)got;
     bus->stats.rx_bytes += (uint64_t)got;
   }
   for (int j = next; j < n; j++) bus->stats.timeouts++;

@@ -22,13 +22,12 @@ cleanup() {
 }
 trap cleanup EXIT
 
-# the emulated bus should not be descheduled by a loaded test machine: raise it if allowed
-NICE=""; nice -n -10 true 2>/dev/null && NICE="nice -n -10"
+# the emulated bus runs --realtime: like hardware, it answers on time on a loaded machine
 repl() { ./run_repl -e "$1" 2>&1 | tail -1; }
 # start_emu ARGS...: emulator with commands on fd 3, answers in $T/emu.out
 start_emu() {
   rm -f "$T/emu.in"; mkfifo "$T/emu.in"
-  $NICE build/bin/dxl_emulator --link "$T/dxl" --stdin --quiet "$@" <"$T/emu.in" >>"$T/emu.out" 2>>"$T/emu.log" &
+  build/bin/dxl_emulator --link "$T/dxl" --stdin --quiet --realtime "$@" <"$T/emu.in" >>"$T/emu.out" 2>>"$T/emu.log" &
   EMU=$!
   exec 3>"$T/emu.in"
   for _ in $(seq 100); do [ -e "$T/dxl" ] && break; sleep 0.05; done
