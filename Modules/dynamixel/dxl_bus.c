@@ -26,6 +26,9 @@ static int send(dxl_bus *bus, uint8_t id, uint8_t inst, const uint8_t *params, s
   if (w != len) { bus->stats.port_errors++; return DXL_COMM_TX_FAIL; }
   bus->stats.tx_packets++;
   bus->stats.tx_bytes += (uint64_t)len;
+  /* write() returns while the UART still sends: the bus is busy until the bytes are out */
+  double now = dxl_now(), bt = dxl_port_byte_time(bus->port);
+  bus->tx_until = (bus->tx_until > now ? bus->tx_until : now) + len * bt;
   return len;
 }
 
@@ -103,10 +106,12 @@ static int receive(dxl_bus *bus, dxl_bulk_item *items, int n, double deadline) {
   return rc ? rc : answered;
 }
 
-/* Deadline for answers of `rxbytes` after sending `txbytes`. */
+/* Deadline for answers of `rxbytes` after the request of `txbytes` (already counted in
+ * tx_until, with whatever was still queued before it) has left. */
 static double deadline_for(dxl_bus *bus, int txbytes, int rxbytes) {
-  double bt = dxl_port_byte_time(bus->port);
-  return dxl_now() + (txbytes + rxbytes) * bt * 1.25 + bus->timeout_margin;
+  double bt = dxl_port_byte_time(bus->port), now = dxl_now();
+  double start = bus->tx_until > now ? bus->tx_until : now;
+  return start + (0.25 * txbytes + 1.25 * rxbytes) * bt + bus->timeout_margin;
 }
 
 static int single(dxl_bus *bus, uint8_t id, uint8_t inst, const uint8_t *params, size_t np,

@@ -188,6 +188,7 @@ typedef struct dxl_bus {
   double timeout_margin;           /* s added to the wire time of an expected answer (USB latency,
                                       return delay); default 0.002 */
   dxl_bus_stats stats;
+  double tx_until;                 /* dxl_now() when the bytes written so far have left the wire */
   uint8_t rx[4096];                /* receive buffer */
   size_t rxlen;
   uint8_t tx[DXL_MAX_PACKET];

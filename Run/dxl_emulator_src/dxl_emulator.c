@@ -455,7 +455,7 @@ int main(int argc, char **argv) {
         nq = 0;
         if (timing) {
           /* on a real bus the request occupies it for its bytes: answers start after that */
-          bus_free = arrived + (double)used * byte_time();
+          bus_free = (bus_free > arrived ? bus_free : arrived) + (double)used * byte_time();
         }
         handle(&pkt);
         /* each answer leaves when the emulated bus has carried it (all at once without
