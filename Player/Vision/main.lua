@@ -149,13 +149,14 @@ local function step(timeout)
   local frame, msg, code = cam:grab(timeout)
   if not frame then
     camera_error(msg, code)
-    return
+    return false
   end
   local ok, perr = pcall(process, frame)
   if not ok then
     counts.errors = counts.errors + 1
     if counts.errors < 10 or counts.errors % 1000 == 0 then log('error on frame %d: %s', frame.seq, perr) end
   end
+  return true
 end
 
 local wall0 = shm.C.shm_now()
@@ -187,16 +188,28 @@ log('camera %s %dx%d, lut %s', cam_settings.driver, ccfg.width, ccfg.height,
 
 local participant
 local function lockstep_on() return sync.lockstep[0] == 1 end
+local next_wake = 0
 
 while true do
   if lockstep_on() and cam.driver == 'sim' then
-    -- lockstep: every tick, take the frame the DCM published for it (if any), then report done
-    participant = participant or lockstep.join()
+    -- lockstep: at each tick we are due, take the frame the DCM published for it (if any) and
+    -- report done. After a frame the next one cannot come for 1/fps, so the DCM is told not to
+    -- wait for us until then: ticks without a frame go on without a round trip.
+    if not participant then
+      participant = lockstep.join()
+      next_wake = 0
+    end
     local tick = sync.tick[0]
     local done = participant.sync.done_tick[participant.slot]
-    if tick ~= done then
-      step(0)
-      participant:done(tick)
+    if tick ~= done and tick >= next_wake then
+      local got = step(0)
+      local skip = 1
+      local period = sensor.period[0]
+      if got and period > 0 and cam_settings.fps > 0 then
+        skip = math.max(1, math.floor(1 / (cam_settings.fps * period)))
+      end
+      next_wake = tick + skip
+      participant:done(tick, next_wake)
     else
       shm.C.shm_futex_wait(sync.tick, tick, 0.1)
     end
