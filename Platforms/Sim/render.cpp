@@ -1,9 +1,10 @@
 // render: ground by per-pixel ray casting into a field texture; solids by convex polygon scan
-// conversion in painter's order; the ball by exact ray-sphere tests; then luma noise.
+// conversion in painter's order; the ball by exact ray-sphere tests; luma noise from a seeded table.
 #include "render.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <random>
 
 namespace sim {
@@ -21,8 +22,18 @@ const Vec3 kLight = Vec3(0.3, 0.2, 0.93).normalized();
 
 // Writes pixels u0..u1 of a row: luma per pixel from ys (or y), chroma per YUYV pair; a pair only
 // half covered gets the average of its old chroma and the new one.
-inline void put_span(uint8_t *row, int u0, int u1, const uint8_t *ys, int y, int cu, int cv) {
-  for (int u = u0; u <= u1; u++) row[2 * u] = ys ? ys[u - u0] : (uint8_t)y;
+inline uint8_t sat(int y) { return (uint8_t)(y < 0 ? 0 : (y > 255 ? 255 : y)); }
+
+// Noise of pixel `index` (row-major) in a frame: a seeded table walked from a per-frame offset.
+struct Noise {
+  const int8_t *table;
+  uint32_t offset;
+  int at(uint32_t index) const { return table[(index + offset) & 0xffff]; }
+};
+
+inline void put_span(uint8_t *row, int u0, int u1, const uint8_t *ys, int y, int cu, int cv, const Noise &nz,
+                     uint32_t row_index) {
+  for (int u = u0; u <= u1; u++) row[2 * u] = sat((ys ? ys[u - u0] : y) + nz.at(row_index + u));
   for (int pu = u0 & ~1; pu <= u1; pu += 2) {
     uint8_t *c = row + 2 * pu;
     const bool full = pu >= u0 && pu + 1 <= u1;
@@ -43,24 +54,28 @@ bool camera_project(const Camera &c, const Vec3 &p, double *u, double *v) {
 }
 
 Renderer::Renderer(const Params &p, uint64_t seed) : seed_(seed) {
+  // The markings are symmetric in |X| and |Y|: one quarter of the carpet at 1 cm, stored in
+  // 8 x 8 texel tiles (one cache line each) so that rays walking in any direction stay cached.
   res_ = 0.01;
   const double L = p.field_length / 2, W = p.field_width / 2, b = p.border;
-  x0_ = -L - b;
-  y0_ = -W - b;
-  tw_ = (int)std::ceil((2 * (L + b)) / res_);
-  th_ = (int)std::ceil((2 * (W + b)) / res_);
-  tex_.assign((size_t)tw_ * th_, 1);
+  x0_ = 0;
+  y0_ = 0;
+  tw_ = ((int)std::ceil((L + b) / res_) + 7) & ~7;
+  th_ = ((int)std::ceil((W + b) / res_) + 7) & ~7;
+  tex_.assign((size_t)(tw_ / 8) * (th_ / 8), 0);
+  carpet_x_ = (float)((L + b) / res_);
+  carpet_y_ = (float)((W + b) / res_);
   const double lw = p.line_width / 2;
   const double R = p.circle_diameter / 2;
   auto near_ = [lw](double a, double b_) { return std::fabs(a - b_) <= lw; };
   for (int j = 0; j < th_; j++) {
-    const double Y = y0_ + (j + 0.5) * res_, ay = std::fabs(Y);
+    const double ay = (j + 0.5) * res_;
     for (int i = 0; i < tw_; i++) {
-      const double X = x0_ + (i + 0.5) * res_, ax = std::fabs(X);
+      const double ax = (i + 0.5) * res_;
       bool line =
           (near_(ay, W) && ax <= L + lw) || (near_(ax, L) && ay <= W + lw) ||   // boundary
-          (near_(X, 0) && ay <= W + lw) ||                                    // halfway line
-          std::fabs(std::hypot(X, Y) - R) <= lw ||                            // centre circle
+          (ax <= lw && ay <= W + lw) ||                                        // halfway line
+          std::fabs(std::hypot(ax, ay) - R) <= lw ||                           // centre circle
           (near_(ax, L - p.goal_area_length) && ay <= p.goal_area_width / 2 + lw) ||
           (near_(ay, p.goal_area_width / 2) && ax >= L - p.goal_area_length - lw && ax <= L) ||
           (near_(ax, L - p.penalty_area_length) && ay <= p.penalty_area_width / 2 + lw) ||
@@ -70,7 +85,7 @@ Renderer::Renderer(const Params &p, uint64_t seed) : seed_(seed) {
       const double mx = L - p.penalty_mark_distance;
       if ((std::fabs(ax - mx) <= m && ay <= lw) || (std::fabs(ax - mx) <= lw && ay <= m)) line = true;
       if ((ax <= m && ay <= lw) || (ax <= lw && ay <= m)) line = true;
-      tex_[(size_t)j * tw_ + i] = line ? 2 : 1;
+      if (line) tex_[(size_t)(j >> 3) * (tw_ >> 3) + (i >> 3)] |= 1ull << (((j & 7) << 3) + (i & 7));
     }
   }
   std::mt19937_64 rng(seed ^ 0x9e3779b97f4a7c15ull);
@@ -79,49 +94,100 @@ Renderer::Renderer(const Params &p, uint64_t seed) : seed_(seed) {
   for (int8_t &x : noise_) x = (int8_t)std::max(-100.0, std::min(100.0, std::round(n(rng))));
 }
 
-void Renderer::ground(const Camera &c, uint8_t *img) const {
+void Renderer::ground(const Camera &c, uint32_t frame, uint8_t *img) const {
+  const Noise nz{noise_.data(), noise_offset(frame)};
   const int W = c.width, H = c.height;
-  const float f = (float)c.focal();
-  const float cu = (W - 1) / 2.0f, cv = (H - 1) / 2.0f;
+  const double f = c.focal();
+  const double cu = (W - 1) / 2.0, cv = (H - 1) / 2.0;
   const Mat3 &R = c.rot;
   const float cx = (float)c.pos.x(), cy = (float)c.pos.y(), cz = (float)c.pos.z();
   const Vec3 du = R * Vec3(0, -1.0 / f, 0);
   const float dux = (float)du.x(), duy = (float)du.y(), duz = (float)du.z();
   const float inv_res = (float)(1.0 / res_), tx0 = (float)x0_, ty0 = (float)y0_;
-  const uint8_t *col[3] = {kFloor, kGreen, kWhite};
+  const float fw = carpet_x_, fh = carpet_y_;
+  const uint8_t *col[4] = {kFloor, kGreen, kWhite, kSky};
+  const uint64_t *tex = tex_.data();
+  const int tiles_x = tw_ >> 3;
+  std::vector<uint8_t> cls(W);
   for (int v = 0; v < H; v++) {
     uint8_t *row = img + (size_t)v * W * 2;
     const Vec3 d0 = R * Vec3(1, cu / f, -(v - cv) / f);
-    float dx = (float)d0.x(), dy = (float)d0.y(), dz = (float)d0.z();
-    for (int u = 0; u < W; u += 2) {
-      int cls[2];
-      for (int k = 0; k < 2; k++) {
-        int cl = 3;   // sky
-        if (dz < -1e-4f) {
-          const float t = -cz / dz;
-          if (t < 200.0f) {
-            const float X = cx + t * dx, Y = cy + t * dy;
-            const int i = (int)std::floor((X - tx0) * inv_res), j = (int)std::floor((Y - ty0) * inv_res);
-            cl = (i >= 0 && j >= 0 && i < tw_ && j < th_) ? tex_[(size_t)j * tw_ + i] : 0;
+    const float dx0 = (float)d0.x(), dy0 = (float)d0.y(), dz0 = (float)d0.z();
+    // the ray hits the ground where dz(u) = dz0 + u * duz < 0: one interval of u per row
+    int ua = 0, ub = W - 1;
+    const float eps = -1e-4f;
+    if (std::fabs(duz) < 1e-12f) {
+      if (!(dz0 < eps)) ub = -1;
+    } else {
+      const double uz = (eps - dz0) / duz;   // dz(uz) = eps
+      if (duz > 0) ub = std::min(W - 1, (int)std::ceil(uz) - 1);
+      else ua = std::max(0, (int)std::floor(uz) + 1);
+    }
+    for (int u = 0; u < std::min(ua, W); u++) cls[u] = 3;
+    for (int u = std::max(ub + 1, 0); u < W; u++) cls[u] = 3;
+    // exact ground coordinates every 8 pixels, linear in between (the perspective error over 8
+    // pixels is far below a texel except next to the horizon, where every pixel is exact)
+    // by-value captures: the uint8_t stores into cls may alias anything captured by reference
+    auto ground_xy = [=](int uu, float *gx, float *gy) {
+      const float t = -cz / (dz0 + uu * duz);
+      *gx = (cx + t * (dx0 + uu * dux) - tx0) * inv_res;
+      *gy = (cy + t * (dy0 + uu * duy) - ty0) * inv_res;
+    };
+    auto lookup = [=](float gx, float gy) -> uint8_t {
+      const float fx = std::fabs(gx), fy = std::fabs(gy);
+      if (!(fx < fw && fy < fh)) return 0;
+      const int i = (int)fx, j = (int)fy;
+      return (uint8_t)(1 + ((tex[(size_t)(j >> 3) * tiles_x + (i >> 3)] >> (((j & 7) << 3) + (i & 7))) & 1));
+    };
+    int u = std::max(ua, 0);
+    if (ub >= u) {
+      float gx0, gy0;
+      ground_xy(u, &gx0, &gy0);
+      while (u + 8 <= ub) {
+        float gx1, gy1;
+        ground_xy(u + 8, &gx1, &gy1);
+        // only where the span is short in texels: near the horizon one step jumps metres
+        if (std::fabs(gx1 - gx0) + std::fabs(gy1 - gy0) > 400.0f) break;
+        // most blocks lie inside one 8 x 8 texel tile without line bits: plain carpet
+        const bool same_side = (gx0 >= 0) == (gx1 >= 0) && (gy0 >= 0) == (gy1 >= 0);
+        const float ax0 = std::fabs(gx0), ay0 = std::fabs(gy0), ax1 = std::fabs(gx1), ay1 = std::fabs(gy1);
+        if (same_side && ax0 < fw && ay0 < fh && ax1 < fw && ay1 < fh) {
+          const int i0 = (int)ax0 >> 3, j0 = (int)ay0 >> 3;
+          if (i0 == ((int)ax1 >> 3) && j0 == ((int)ay1 >> 3) && tex[(size_t)j0 * tiles_x + i0] == 0) {
+            memset(&cls[u], 1, 8);
+            u += 8;
+            gx0 = gx1;
+            gy0 = gy1;
+            continue;
           }
         }
-        cls[k] = cl;
-        dx += dux;
-        dy += duy;
-        dz += duz;
+        const float sx = (gx1 - gx0) * 0.125f, sy = (gy1 - gy0) * 0.125f;
+        float gx = gx0, gy = gy0;
+        for (int k = 0; k < 8; k++, gx += sx, gy += sy) cls[u + k] = lookup(gx, gy);
+        u += 8;
+        gx0 = gx1;
+        gy0 = gy1;
       }
-      const uint8_t *a = cls[0] == 3 ? kSky : col[cls[0]];
-      const uint8_t *b = cls[1] == 3 ? kSky : col[cls[1]];
+    }
+    for (; u <= ub; u++) {
+      float gx, gy;
+      ground_xy(u, &gx, &gy);
+      cls[u] = lookup(gx, gy);
+    }
+    const uint32_t base = (uint32_t)(v * W);
+    for (u = 0; u < W; u += 2) {
+      const uint8_t *a = col[cls[u]], *b = col[cls[u + 1]];
       uint8_t *p = row + 2 * u;
-      p[0] = a[0];
+      p[0] = sat(a[0] + nz.at(base + u));
       p[1] = (uint8_t)((a[1] + b[1]) >> 1);
-      p[2] = b[0];
+      p[2] = sat(b[0] + nz.at(base + u + 1));
       p[3] = (uint8_t)((a[2] + b[2]) >> 1);
     }
   }
 }
 
-void Renderer::solid(const Camera &c, const Solid &s, uint8_t *img) const {
+void Renderer::solid(const Camera &c, const Solid &s, uint32_t frame, uint8_t *img) const {
+  const Noise nz{noise_.data(), noise_offset(frame)};
   const int W = c.width, H = c.height;
   const double f = c.focal(), cu = (W - 1) / 2.0, cv = (H - 1) / 2.0;
   Vec3 centre = Vec3::Zero();
@@ -181,12 +247,13 @@ void Renderer::solid(const Camera &c, const Solid &s, uint8_t *img) const {
         }
       }
       const int u0 = std::max(0, (int)std::ceil(xl)), u1 = std::min(W - 1, (int)std::floor(xr));
-      if (u0 <= u1) put_span(img + (size_t)v * W * 2, u0, u1, nullptr, Y, s.yuv[1], s.yuv[2]);
+      if (u0 <= u1) put_span(img + (size_t)v * W * 2, u0, u1, nullptr, Y, s.yuv[1], s.yuv[2], nz, (uint32_t)(v * W));
     }
   }
 }
 
-void Renderer::ball(const Camera &c, const Vec3 &centre, double r, uint8_t *img) const {
+void Renderer::ball(const Camera &c, const Vec3 &centre, double r, uint32_t frame, uint8_t *img) const {
+  const Noise nz{noise_.data(), noise_offset(frame)};
   const int W = c.width, H = c.height;
   const double f = c.focal(), cu = (W - 1) / 2.0, cv = (H - 1) / 2.0;
   const Vec3 s = c.rot.transpose() * (centre - c.pos);
@@ -210,41 +277,41 @@ void Renderer::ball(const Camera &c, const Vec3 &centre, double r, uint8_t *img)
     v1 = std::min(H - 1, (int)std::ceil(vmax));
   }
   const double r2 = r * r, ss = s.squaredNorm();
+  const Vec3 lc = c.rot.transpose() * kLight;   // light direction in camera coordinates
+  const double sx = s.x(), sy = s.y(), sz = s.z(), inv_f = 1.0 / f, inv_r = 1.0 / r;
   std::vector<uint8_t> ys(W);
   for (int v = v0; v <= v1; v++) {
     int first = -1, last = -2;
+    const double dz = -(v - cv) * inv_f;
     for (int u = u0; u <= u1; u++) {
-      const Vec3 d(1, -(u - cu) / f, -(v - cv) / f);
-      const double dd = d.squaredNorm(), sd = s.dot(d);
+      const double dy = -(u - cu) * inv_f;   // ray (1, dy, dz)
+      const double dd = 1 + dy * dy + dz * dz, sd = sx + sy * dy + sz * dz;
       if (sd <= 0) continue;
       const double disc = sd * sd - dd * (ss - r2);
       if (disc < 0) continue;
       const double t = (sd - std::sqrt(disc)) / dd;
-      if (t * std::sqrt(dd) < kNear) continue;
-      const Vec3 n = c.rot * ((t * d - s) / r);
-      const double shade = 0.45 + 0.55 * std::max(0.0, n.dot(kLight));
+      if (t < kNear) continue;
+      const double nx = (t - sx) * inv_r, ny = (t * dy - sy) * inv_r, nzz = (t * dz - sz) * inv_r;
+      const double shade = 0.45 + 0.55 * std::max(0.0, nx * lc.x() + ny * lc.y() + nzz * lc.z());
       if (first < 0) first = u;
       last = u;
-      ys[u - first] = (uint8_t)std::min(255, (int)std::lround(kOrange[0] * shade));
+      ys[u - first] = (uint8_t)std::min(255, (int)(kOrange[0] * shade + 0.5));
     }
     // the silhouette of a sphere is convex: one span per row
-    if (first >= 0) put_span(img + (size_t)v * W * 2, first, last, ys.data(), 0, kOrange[1], kOrange[2]);
+    if (first >= 0) {
+      put_span(img + (size_t)v * W * 2, first, last, ys.data(), 0, kOrange[1], kOrange[2], nz, (uint32_t)(v * W));
+    }
   }
 }
 
-void Renderer::noise(const Camera &c, uint32_t frame, uint8_t *img) const {
-  const size_t n = (size_t)c.width * c.height;
-  uint32_t off = (uint32_t)((frame * 2654435761u) ^ (uint32_t)seed_);
-  for (size_t i = 0; i < n; i++) {
-    const int y = img[2 * i] + noise_[(i + off) & 0xffff];
-    img[2 * i] = (uint8_t)(y < 0 ? 0 : (y > 255 ? 255 : y));
-  }
+uint32_t Renderer::noise_offset(uint32_t frame) const {
+  return (uint32_t)((frame * 2654435761u) ^ (uint32_t)seed_);
 }
 
 void Renderer::render(const Camera &c, const std::vector<Solid> &solids, int self,
                       const std::vector<int> &hide, const Vec3 &ball_centre, double ball_radius,
                       uint32_t frame, uint8_t *img) const {
-  ground(c, img);
+  ground(c, frame, img);
   // painter's order: farthest first; index -1 is the ball
   std::vector<std::pair<double, int>> order;
   for (size_t i = 0; i < solids.size(); i++) {
@@ -260,10 +327,9 @@ void Renderer::render(const Camera &c, const std::vector<Solid> &solids, int sel
     return a.first > b.first || (a.first == b.first && a.second < b.second);
   });
   for (const auto &o : order) {
-    if (o.second < 0) ball(c, ball_centre, ball_radius, img);
-    else solid(c, solids[o.second], img);
+    if (o.second < 0) ball(c, ball_centre, ball_radius, frame, img);
+    else solid(c, solids[o.second], frame, img);
   }
-  noise(c, frame, img);
 }
 
 }  // namespace sim
