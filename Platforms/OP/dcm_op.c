@@ -573,6 +573,11 @@ int main(int argc, char **argv) {
          d->c.port, d->c.baud);
 
   /* the USB adapter's latency timer (skipped cleanly when there is none) */
+  dxl_usb_info usb[8];
+  int nusb = dxl_usb_find(usb, 8, err, sizeof err);
+  for (int k = 0; k < nusb; k++)
+    logmsg(d, "USB adapter %04x:%04x %s (bus %d, device %d)", usb[k].vendor, usb[k].product,
+           usb[k].name, usb[k].bus, usb[k].address);
   int nset = dxl_usb_set_latency(d->c.port, d->c.latency_timer, err, sizeof err);
   if (nset > 0) logmsg(d, "latency timer %d ms set on %d adapter(s)", d->c.latency_timer, nset);
 
