@@ -96,16 +96,22 @@ local function send(name, values)
 end
 
 -- Changes a walk parameter in the running motion process (checked; errors on a caller mistake).
+-- One change at a time: while the previous one is not yet taken up by the motion process (it
+-- takes one tick), returns nil, 'pending' -- try again after wait(0.01).
 function M.set(name, value)
   if type(name) ~= 'string' or #name == 0 or #name > 63 then error('Walk.set: parameter name expected', 2) end
   local values, _, msg = M.check(config(), name, value)
   if not values then error('Walk.set: ' .. msg, 2) end
+  local m = motion()
+  if m.param_ack[0] ~= m.param_seq[0] and m.pid[0] ~= 0 then return nil, 'pending' end
   send(name, values)
   return true
 end
 
--- Re-reads the walk config file in the motion process.
+-- Re-reads the walk config file in the motion process (nil, 'pending' as for set).
 function M.reload()
+  local m = motion()
+  if m.param_ack[0] ~= m.param_seq[0] and m.pid[0] ~= 0 then return nil, 'pending' end
   send('', nil)
   return true
 end

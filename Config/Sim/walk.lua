@@ -33,9 +33,9 @@ return {
   feedback = {
     gyroTimeConstant = 0.02,    -- s, low-pass on the gyro
     gyroDeadband = { 0.0, 0.0 },-- rad/s
-    ankle = { 0.1, 0.1 },       -- rad per rad/s: { roll, pitch }
+    ankle = { 0.2, 0.15 },      -- rad per rad/s: { roll, pitch }
     knee = 0.0,                 -- pitch
-    hip = { 0.0, 0.0 },         -- { roll, pitch }
+    hip = { 0.1, 0.0 },         -- { roll, pitch }
     arm = { 0.0, 0.0 },         -- { roll, pitch }
     torso = { 0.0, 0.0 },       -- rad per rad of torso angle error (proprioception): { roll, pitch }
     torsoTimeConstant = 0.05,   -- s

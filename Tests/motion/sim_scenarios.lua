@@ -42,7 +42,7 @@ for kv in (os.getenv('WALK_PARAMS') or ''):gmatch('[^;]+') do
   local k, v = kv:match('^(.-)=(.*)$')
   local vals = {}
   for x in v:gmatch('[^,]+') do vals[#vals + 1] = tonumber(x) end
-  Walk.set(k, #vals == 1 and vals[1] or vals)
+  while not Walk.set(k, #vals == 1 and vals[1] or vals) do wait(0.01) end
   note('walk parameter %s = %s', k, v)
 end
 
@@ -79,7 +79,7 @@ local function walk_for(vx, vy, va, seconds, ramp)
     local s = Sim.truth()
     yaw = yaw + wrap(s.yaw - last)
     last = s.yaw
-    if s.fallen or Motion.falls() > 0 and Motion.state() ~= 'walk' then fell = true break end
+    if s.fallen or Motion.state() ~= 'walk' then fell = true break end
   end
   local b = Sim.truth()
   local dt = Body.get_time() - t0
@@ -169,6 +169,7 @@ function scenarios.random(seconds, seed)
   start_clean()
   Motion.request('walk')
   local lim = { Walk.get('velLimitX'), Walk.get('velLimitY'), Walk.get('velLimitA') }
+  local falls0 = Motion.falls()
   local t0 = Body.get_time()
   local fell, changes = false, 0
   while Body.get_time() - t0 < seconds and not fell do
@@ -181,7 +182,7 @@ function scenarios.random(seconds, seed)
     local t1 = Body.get_time()
     while Body.get_time() - t1 < hold do
       wait(0.1)
-      if Sim.truth().fallen or Motion.falls() > 0 then fell = true break end
+      if Sim.truth().fallen or Motion.falls() > falls0 then fell = true break end
     end
   end
   note('random: %d commands in %.0f s', changes, Body.get_time() - t0)
@@ -250,20 +251,25 @@ function scenarios.kick(side)
   tap(not Sim.truth().fallen and Motion.state() == 'stance', 'kick ' .. side .. ': stays up, back in stance')
 end
 
--- largest sideways push (N for 0.1 s) survived while walking in place at 0.1 m/s forward
+-- largest sideways push (N for 0.1 s) survived while walking at 0.2 m/s forward
 function scenarios.pushmax(label)
-  local lo, hi = 0, 80
+  local lo, hi = 0, 40
+  -- survived if survived at four moments of the gait cycle (each step's start, middle), both sides
   local function survives(f)
-    start_clean()
-    Motion.request('walk')
-    Walk.set_velocity(0.1, 0, 0)
-    wait(3)
-    local a = Sim.truth()
-    Sim.push(-f * math.sin(a.yaw), f * math.cos(a.yaw), 0.1)
-    local fell = wait_until(function() return Sim.truth().fallen or Motion.falls() > 0 end, 4)
-    return not fell
+    for k = 0, 3 do
+      start_clean()
+      Motion.request('walk')
+      Walk.set_velocity(0.2, 0, 0)
+      wait(3 + k * 0.125)
+      local a = Sim.truth()
+      local falls0 = Motion.falls()
+      Sim.push(-f * math.sin(a.yaw), f * math.cos(a.yaw), 0.1)
+      local fell = wait_until(function() return Sim.truth().fallen or Motion.falls() > falls0 end, 3)
+      if fell then return false end
+    end
+    return true
   end
-  for _ = 1, 6 do
+  for _ = 1, 7 do
     local mid = 0.5 * (lo + hi)
     if survives(mid) then lo = mid else hi = mid end
   end
