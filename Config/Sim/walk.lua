@@ -45,12 +45,13 @@ return {
   kick = {
     supportY = 0.01,         -- m, COM over the support foot: outward from its ankle
     phases = {
-      { duration = 0.6, shift = 1 },                        -- weight onto the support foot
-      { duration = 0.3, shift = 1, x = -0.04, z = 0.04 },   -- lift and draw back
-      { duration = 0.1, shift = 1, x = 0.10, z = 0.035 },   -- swing through
-      { duration = 0.3, shift = 1, x = 0.0, z = 0.03 },     -- back
-      { duration = 0.3, shift = 1, x = 0.0, z = 0.0 },      -- down
-      { duration = 0.5, shift = 0 },                        -- weight back to the middle
+      { duration = 0.6, shift = 1, x = 0, z = 0, hip = 0, knee = 0, ankle = 0 },            -- weight over
+      { duration = 0.3, shift = 1, x = -0.02, z = 0.06, hip = 0.7, knee = 1.4, ankle = 0.4 }, -- wind up
+      { duration = 0.03, shift = 1, x = 0.1, z = 0.04, hip = -1.3, knee = 0, ankle = -0.5 },  -- swing
+      { duration = 0.2, shift = 1, x = 0.1, z = 0.04, hip = -1.3, knee = 0, ankle = -0.5 },   -- follow
+      { duration = 0.3, shift = 1, x = 0.0, z = 0.03, hip = 0, knee = 0, ankle = 0 },       -- back
+      { duration = 0.3, shift = 1, x = 0.0, z = 0.0, hip = 0, knee = 0, ankle = 0 },        -- down
+      { duration = 0.5, shift = 0, x = 0.0, z = 0.0, hip = 0, knee = 0, ankle = 0 },        -- weight back
     },
   },
   -- stance and transitions

@@ -2,8 +2,11 @@
 -- returns, all as foot and COM targets through the walk's geometry and leg IK (so it follows the
 -- walk's posture parameters on every robot). Phases come from the walk config's `kick.phases`:
 --   { duration = s, shift = 0..1 (COM from the middle to over the support foot),
---     x = m, y = m (outward), z = m  (kicking foot offset from its stance position) }
--- each reached from the previous phase with a smooth profile.
+--     x = m, y = m (outward), z = m  (kicking foot offset from its stance position),
+--     hip, knee, ankle = rad (optional: added to the kicking leg's pitch joints after the IK, as
+--     rotations about the torso's y axis: negative hip swings the leg forward, positive knee bends) }
+-- each reached from the previous phase with a smooth profile. A short phase (a few ms) makes the
+-- servos run at their speed limit: that is the swing.
 local Walk = require('Motion.walk')
 
 local M = {}
@@ -14,7 +17,7 @@ function M.new(walk)
   return setmetatable({ walk = walk, from = {}, cur = {}, done = true }, Kick)
 end
 
-local KEYS = { 'shift', 'x', 'y', 'z' }
+local KEYS = { 'shift', 'x', 'y', 'z', 'hip', 'knee', 'ankle' }
 
 -- Starts a kick with the foot on `side` ('left' or 'right') at time t.
 function Kick:start(side, t)
@@ -67,6 +70,11 @@ function Kick:update(t, q, sensors, dt)
   local support = (cur.shift > 0.5) and (left and Walk.RIGHT or Walk.LEFT) or nil
   w:joint_angles(q, sensors, dt, support)
   w:update_com_offset(q, 0.3)
+  local legi = w.legs[left and Walk.LEFT or Walk.RIGHT]
+  local ay = w.ay
+  q[legi[3]] = q[legi[3]] + ay[legi[3]] * cur.hip
+  q[legi[4]] = q[legi[4]] + ay[legi[4]] * cur.knee
+  q[legi[5]] = q[legi[5]] + ay[legi[5]] * cur.ankle
   return self.done
 end
 

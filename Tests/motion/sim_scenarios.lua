@@ -234,10 +234,18 @@ function scenarios.kick(side)
   side = side or 'left'
   start_clean()
   local r = Sim.truth()
-  -- ball centre 0.1 m ahead of the kicking foot's toe, in line with the foot's centre
+  -- ball centre 0.1 m ahead of the kicking foot's toe, in line with the sole's centre; the foot
+  -- from the measured leg angles (forward kinematics, torso frame, tilt ignored)
   local sgn = side == 'left' and 1 or -1
-  local toe, foot_y = 0.0635, 0.048
-  local bx, by = 0.0 + toe + 0.1, sgn * foot_y
+  local model = require('kinematics').load()
+  local pre = side == 'left' and 'l_' or 'r_'
+  local q6 = {}
+  for k, j in ipairs({ 'hip_yaw', 'hip_roll', 'hip_pitch', 'knee', 'ank_pitch', 'ank_roll' }) do
+    q6[k] = Body.get_position(pre .. j)
+  end
+  local foot = model:leg_fk(side, q6)
+  local toe, sole_y = 0.0635, 0.0125 -- sole: front edge ahead of the ankle, centre outward of it
+  local bx, by = foot[1] + toe + 0.1, foot[2] + sgn * sole_y
   local c, s = math.cos(r.yaw), math.sin(r.yaw)
   Sim.teleport_ball(r.x + c * bx - s * by, r.y + s * bx + c * by)
   wait(0.5)
