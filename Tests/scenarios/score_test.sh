@@ -29,6 +29,14 @@ run_one() {
   ROBOT_ID=$id HRP_SEED=$seed HRP_GC_PORT=$((40000 + id % 20000)) \
     ./run_main --sim --quiet --dcm-arg --lockstep --dcm-arg --seed --dcm-arg "$seed" >"$mainlog" 2>&1 &
   local main_pid=$!
+  # the REPL script attaches only once the sim DCM has created the robot's blocks and its clock
+  # runs (a script that came first would create the blocks itself and race the DCM)
+  local i tick
+  for i in $(seq 1 300); do
+    tick=$(Run/shm --robot "$id" dump sync tick 2>/dev/null | awk '{print $NF}')
+    [ -n "$tick" ] && [ "$tick" != 0 ] && break
+    sleep 0.1
+  done
   ROBOT_ID=$id MAIN_LOG="$mainlog" timeout 900 ./run_repl Tests/scenarios/score_one.lua "$seed" "$LIMIT" $kill_at \
     >"$LOGDIR/run_$seed${kill_at:+_kill}.log" 2>&1
   kill -TERM "$main_pid" 2>/dev/null
