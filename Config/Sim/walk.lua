@@ -29,6 +29,9 @@ return {
   qRArm = { 0.0, 0.25, 0.0 },
   armSwing = 0.0,            -- rad of arm pitch per m of foot lead
   hipRollCompensation = 0.0, -- rad, support hip roll added in single support
+  -- heading: the IMU's yaw follows the integral of the commanded turning rate
+  headingGain = 1.0,         -- rad/s of extra turning per rad of heading error
+  headingMaxCorrection = 0.3,-- rad/s
   -- feedback: rotations about the torso's x (roll) and y (pitch) axes, restoring when positive
   feedback = {
     gyroTimeConstant = 0.02,    -- s, low-pass on the gyro

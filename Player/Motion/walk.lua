@@ -92,6 +92,8 @@ function M.new(params, model)
   w.gyro_f = { 0, 0, 0 }
   w.fb = { 0, 0, 0, 0 }    -- torso-angle feedback state (roll, pitch) filtered
   w.stats = { steps = 0 }
+  w.vel_eff = { 0, 0, 0 }
+  w.va_correction = 0      -- rad/s added to the turning of each step (heading feedback)
   w:reset()
   return w
 end
@@ -230,6 +232,10 @@ function Walk:begin_step()
     self.support = 1 - self.support
   end
   local sY = p.supportY
+  -- heading correction from outside (IMU yaw against the commanded turning), rad/s
+  local ve = self.vel_eff
+  ve[1], ve[2], ve[3] = v[1], v[2], v[3] + self.va_correction
+  v = ve
   if self.support == LEFT then
     self.uRight2 = self:step_target(self.uLeft1, false, v)
     self.uLeft2 = self.uLeft1

@@ -12,7 +12,7 @@ return {
     -- arms down towards the ground, legs straight: the chest comes up
     { duration = 0.5, hardness = 1.0, q = sym(0, { -1.57, 1.4, 0 }, { 0, 0, 0, 0, 0, 0 }) },
     -- knees under the body
-    { duration = 0.6, hardness = 1.0, q = sym(0, { -1.57, 1.4, 0 }, { 0, 0, -1.8, 2.4, 1.2, 0 }) },
+    { duration = 0.6, hardness = 1.0, q = sym(0, { -1.57, 1.4, 0 }, { 0, 0, -1.5, 2.4, 1.2, 0 }) },
     -- arms push the torso up over the feet
     { duration = 0.8, hardness = 1.0, q = sym(0, { -0.3, 1.4, 0 }, { 0, 0, -1.8, 2.4, 1.2, 0 }) },
     -- squat, upright

@@ -1,13 +1,23 @@
 -- walk: the ZMP walk at the commanded velocity; stops into stance when something else is asked.
+-- Heading feedback: the IMU's yaw is held to the integral of the commanded turning rate.
 local M = {}
+
+local yaw_ref
+
+local function wrap(a) return (a + math.pi) % (2 * math.pi) - math.pi end
 
 function M.entry(c)
   c.walk:start()
+  yaw_ref = c.angle[3]
 end
 
 function M.update(c)
-  local w, v = c.walk, c.vel_cmd
+  local w, v, p = c.walk, c.vel_cmd, c.p
   w:set_velocity(v[1], v[2], v[3])
+  yaw_ref = wrap(yaw_ref + w.vel[3] * c.dt)
+  local err = wrap(yaw_ref - c.angle[3])
+  local lim = p.headingMaxCorrection
+  w.va_correction = math.max(-lim, math.min(lim, p.headingGain * err))
   if c.want ~= 'walk' then w:stop() end
   local active = w:advance(c.dt)
   w:joint_angles(c.q, c.sensors, c.dt)
