@@ -105,6 +105,10 @@ function M.set(name, value)
   local m = motion()
   if m.param_ack[0] ~= m.param_seq[0] and m.pid[0] ~= 0 then return nil, 'pending' end
   send(name, values)
+  -- this process's copy too (set_velocity clamps with it)
+  local parent, key, cur = lookup(config(), name)
+  if type(cur) == 'number' then rawset(parent, key, values[1])
+  else for i = 1, #values do cur[i] = values[i] end end
   return true
 end
 

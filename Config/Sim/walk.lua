@@ -48,13 +48,18 @@ return {
   kick = {
     supportY = 0.01,         -- m, COM over the support foot: outward from its ankle
     phases = {
-      { duration = 0.6, shift = 1, x = 0, z = 0, hip = 0, knee = 0, ankle = 0 },            -- weight over
-      { duration = 0.3, shift = 1, x = -0.02, z = 0.06, hip = 0.7, knee = 1.4, ankle = 0.4 }, -- wind up
-      { duration = 0.03, shift = 1, x = 0.1, z = 0.04, hip = -1.3, knee = 0, ankle = -0.5 },  -- swing
-      { duration = 0.2, shift = 1, x = 0.1, z = 0.04, hip = -1.3, knee = 0, ankle = -0.5 },   -- follow
-      { duration = 0.3, shift = 1, x = 0.0, z = 0.03, hip = 0, knee = 0, ankle = 0 },       -- back
-      { duration = 0.3, shift = 1, x = 0.0, z = 0.0, hip = 0, knee = 0, ankle = 0 },        -- down
-      { duration = 0.5, shift = 0, x = 0.0, z = 0.0, hip = 0, knee = 0, ankle = 0 },        -- weight back
+      -- weight over the support foot
+      { duration = 0.6, shift = 1, lean = 0, x = 0, z = 0, hip = 0, knee = 0, ankle = 0 },
+      -- wind up: foot back and up, knee bent
+      { duration = 0.3, shift = 1, lean = 0, x = -0.02, z = 0.06, hip = 0.7, knee = 1.4, ankle = 0.4 },
+      -- swing: a short phase, so the servos run at their speed limit
+      { duration = 0.03, shift = 1, lean = 0, x = 0.1, z = 0.02, hip = -1.3, knee = 0, ankle = -0.5 },
+      -- follow through
+      { duration = 0.2, shift = 1, lean = 0, x = 0.1, z = 0.02, hip = -1.3, knee = 0, ankle = -0.5 },
+      -- back, down, weight back to the middle
+      { duration = 0.3, shift = 1, lean = 0, x = 0.0, z = 0.03, hip = 0, knee = 0, ankle = 0 },
+      { duration = 0.3, shift = 1, lean = 0, x = 0.0, z = 0.0, hip = 0, knee = 0, ankle = 0 },
+      { duration = 0.5, shift = 0, lean = 0, x = 0.0, z = 0.0, hip = 0, knee = 0, ankle = 0 },
     },
   },
   -- stance and transitions

@@ -2,6 +2,7 @@
 -- returns, all as foot and COM targets through the walk's geometry and leg IK (so it follows the
 -- walk's posture parameters on every robot). Phases come from the walk config's `kick.phases`:
 --   { duration = s, shift = 0..1 (COM from the middle to over the support foot),
+--     lean = m (optional: the body moves forward over the support foot, adding to the swing),
 --     x = m, y = m (outward), z = m  (kicking foot offset from its stance position),
 --     hip, knee, ankle = rad (optional: added to the kicking leg's pitch joints after the IK, as
 --     rotations about the torso's y axis: negative hip swings the leg forward, positive knee bends) }
@@ -17,7 +18,7 @@ function M.new(walk)
   return setmetatable({ walk = walk, from = {}, cur = {}, done = true }, Kick)
 end
 
-local KEYS = { 'shift', 'x', 'y', 'z', 'hip', 'knee', 'ankle' }
+local KEYS = { 'shift', 'lean', 'x', 'y', 'z', 'hip', 'knee', 'ankle' }
 
 -- Starts a kick with the foot on `side` ('left' or 'right') at time t.
 function Kick:start(side, t)
@@ -56,8 +57,8 @@ function Kick:update(t, q, sensors, dt)
   local sgn = left and 1 or -1
   local mid = Walk.interp(0.5, w.uLeft2, w.uRight2)
   local sup = Walk.pose_global({ p.supportX, -sgn * p.kick.supportY, 0 }, uS)
-  local cx = mid[1] + cur.shift * (sup[1] - mid[1])
-  local cy = mid[2] + cur.shift * (sup[2] - mid[2])
+  local cx = mid[1] + cur.shift * (sup[1] - mid[1]) + cur.lean * math.cos(mid[3])
+  local cy = mid[2] + cur.shift * (sup[2] - mid[2]) + cur.lean * math.sin(mid[3])
   local foot = Walk.pose_global({ cur.x, sgn * cur.y, 0 }, uK)
   local ta = mid[3]
   local ox, oy = w.com_offset[1] + p.footX, w.com_offset[2]
