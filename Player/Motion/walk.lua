@@ -45,6 +45,14 @@ local function interp(t, u1, u2)
 end
 M.pose_global, M.pose_relative, M.interp = pose_global, pose_relative, interp
 
+local function copy3(dst, src) dst[1], dst[2], dst[3] = src[1], src[2], src[3] return dst end
+local function set3(dst, a, b, c) dst[1], dst[2], dst[3] = a, b, c return dst end
+local function interp_into(out, t, u1, u2)
+  out[1], out[2] = u1[1] + t * (u2[1] - u1[1]), u1[2] + t * (u2[2] - u1[2])
+  out[3] = wrap(u1[3] + t * wrap(u2[3] - u1[3]))
+  return out
+end
+
 -- quintic 0..1 with zero velocity and acceleration at both ends
 local function smooth(t) return t * t * t * (10 + t * (-15 + 6 * t)) end
 
@@ -102,12 +110,14 @@ end
 function Walk:reset(u)
   u = u or { 0, 0, 0 }
   local p = self.p
+  -- the current poses are tables of their own (filled in place every tick, no garbage); the
+  -- step's start and end poses are replaced by new tables at each step
   self.uTorso = { u[1], u[2], u[3] }
   self.uLeft = pose_global({ 0, p.footY, 0 }, u)
   self.uRight = pose_global({ 0, -p.footY, 0 }, u)
-  self.uLeft1, self.uLeft2 = self.uLeft, self.uLeft
-  self.uRight1, self.uRight2 = self.uRight, self.uRight
-  self.uTorso1, self.uTorso2 = self.uTorso, self.uTorso
+  self.uLeft1, self.uLeft2 = { unpack(self.uLeft) }, { unpack(self.uLeft) }
+  self.uRight1, self.uRight2 = { unpack(self.uRight) }, { unpack(self.uRight) }
+  self.uTorso1, self.uTorso2 = { u[1], u[2], u[3] }, { u[1], u[2], u[3] }
   self.com = { self.uTorso[1], self.uTorso[2] }
   self.comd = { 0, 0 }
   self.zmp = { self.uTorso[1], self.uTorso[2] }
@@ -120,12 +130,12 @@ function Walk:reset(u)
   self.vel[1], self.vel[2], self.vel[3] = 0, 0, 0
 end
 
+local function finite(v) return type(v) == 'number' and v == v and v ~= math.huge and v ~= -math.huge end
+
 -- Clamps a velocity to the limits of the config; NaN/inf refused (returns nil, message).
 function M.clamp_velocity(p, vx, vy, va)
-  for _, v in ipairs({ vx, vy, va }) do
-    if type(v) ~= 'number' or v ~= v or v == math.huge or v == -math.huge then
-      return nil, 'walk velocity must be finite numbers'
-    end
+  if not finite(vx) or not finite(vy) or not finite(va) then
+    return nil, 'walk velocity must be finite numbers'
   end
   vx = clamp(vx, p.velLimitX[1], p.velLimitX[2])
   vy = clamp(vy, p.velLimitY[1], p.velLimitY[2])
@@ -220,7 +230,7 @@ function Walk:begin_step()
   if self.stopping and still and self:feet_together() and self.support ~= nil and self.steps_still >= 1 then
     self.active = false
     self.stopping = false
-    self.uTorso = self.uTorso2
+    copy3(self.uTorso, self.uTorso2)
     return false
   end
   self.steps_still = still and (self.steps_still or 0) + 1 or 0
@@ -271,12 +281,16 @@ function Walk:advance(dt)
   end
   if not self.active then
     -- stance: COM over the middle of the feet
-    local mid = interp(0.5, self.uLeft2, self.uRight2)
-    local u = pose_global({ p.supportX, 0, 0 }, mid)
-    self.uLeft, self.uRight = self.uLeft2, self.uRight2
-    self.com[1], self.com[2], self.comd[1], self.comd[2] = u[1], u[2], 0, 0
-    self.zmp[1], self.zmp[2] = u[1], u[2]
-    self.uTorso = u
+    local uL, uR = self.uLeft2, self.uRight2
+    local a = wrap(uL[3] + 0.5 * wrap(uR[3] - uL[3]))
+    local c, sn = cos(a), sin(a)
+    local ux = 0.5 * (uL[1] + uR[1]) + c * p.supportX
+    local uy = 0.5 * (uL[2] + uR[2]) + sn * p.supportX
+    copy3(self.uLeft, uL)
+    copy3(self.uRight, uR)
+    self.com[1], self.com[2], self.comd[1], self.comd[2] = ux, uy, 0, 0
+    self.zmp[1], self.zmp[2] = ux, uy
+    set3(self.uTorso, ux, uy, a)
     self.ph = 0
     self.swing_z = 0
   else
@@ -295,16 +309,16 @@ function Walk:advance(dt)
     local lift = 16 * phs * phs * (1 - phs) * (1 - phs)
     self.swing_z = p.stepHeight * lift
     if self.support == LEFT then
-      self.uRight = interp(s, self.uRight1, self.uRight2)
-      self.uLeft = self.uLeft1
+      interp_into(self.uRight, s, self.uRight1, self.uRight2)
+      copy3(self.uLeft, self.uLeft1)
     else
-      self.uLeft = interp(s, self.uLeft1, self.uLeft2)
-      self.uRight = self.uRight1
+      interp_into(self.uLeft, s, self.uLeft1, self.uLeft2)
+      copy3(self.uRight, self.uRight1)
     end
     -- heading: turns at a constant rate over the whole step (no yaw jerk from the swing)
-    local a1 = interp(0.5, self.uLeft1, self.uRight1)[3]
-    local a2 = interp(0.5, self.uLeft2, self.uRight2)[3]
-    self.uTorso = { x, y, wrap(a1 + ph * wrap(a2 - a1)) }
+    local a1 = wrap(self.uLeft1[3] + 0.5 * wrap(self.uRight1[3] - self.uLeft1[3]))
+    local a2 = wrap(self.uLeft2[3] + 0.5 * wrap(self.uRight2[3] - self.uLeft2[3]))
+    set3(self.uTorso, x, y, wrap(a1 + ph * wrap(a2 - a1)))
   end
   -- torso origin from the COM: subtract the COM offset (torso frame, rotated by the heading)
   local ta = self.uTorso[3]
@@ -405,10 +419,9 @@ function Walk:joint_angles(q, sensors, dt, support)
   gf[2] = gf[2] + alpha * (g[2] - gf[2])
   local gx, gy = deadband(gf[1], fb.gyroDeadband[1]), deadband(gf[2], fb.gyroDeadband[2])
   local lim = fb.maxCorrection
-  local function corr(k, x) return clamp(k * x, -lim, lim) end
-  local ankx, anky = corr(fb.ankle[1], gx), corr(fb.ankle[2], gy)
-  local kny = corr(fb.knee, gy)
-  local hipx, hipy = corr(fb.hip[1], gx), corr(fb.hip[2], gy)
+  local ankx, anky = clamp(fb.ankle[1] * gx, -lim, lim), clamp(fb.ankle[2] * gy, -lim, lim)
+  local kny = clamp(fb.knee * gy, -lim, lim)
+  local hipx, hipy = clamp(fb.hip[1] * gx, -lim, lim), clamp(fb.hip[2] * gy, -lim, lim)
   -- torso angle from proprioception: the support foot is flat, so its measured pose in the torso
   -- frame gives the torso's real tilt; the difference from the commanded tilt goes to the hips
   local tx, ty = 0, 0
@@ -425,7 +438,7 @@ function Walk:joint_angles(q, sensors, dt, support)
     local beta = clamp(dt / (dt + fb.torsoTimeConstant), 0, 1)
     fs[1] = fs[1] + beta * (er - fs[1])
     fs[2] = fs[2] + beta * (ep - fs[2])
-    tx, ty = corr(fb.torso[1], fs[1]), corr(fb.torso[2], fs[2])
+    tx, ty = clamp(fb.torso[1] * fs[1], -lim, lim), clamp(fb.torso[2] * fs[2], -lim, lim)
   end
   for side = LEFT, RIGHT do
     local w = (sup == nil or sup == side) and 1 or 0
@@ -438,7 +451,7 @@ function Walk:joint_angles(q, sensors, dt, support)
       add_rot(self, q, legi[6], ankx, 0)
     end
   end
-  local armx, army = corr(fb.arm[1], gx), corr(fb.arm[2], gy)
+  local armx, army = clamp(fb.arm[1] * gx, -lim, lim), clamp(fb.arm[2] * gy, -lim, lim)
   add_rot(self, q, ji.l_sho_pitch, 0, army)
   add_rot(self, q, ji.r_sho_pitch, 0, army)
   add_rot(self, q, ji.l_sho_roll, armx, 0)

@@ -24,7 +24,8 @@ for s in "${SCEN[@]}"; do
   n=$((n + 1))
   id=$((BASE_ID + n))
   read -r -a parts <<<"$s"
-  ROBOT_ID=$id ./run_main --sim --quiet --no-restart --dcm-arg --lockstep --dcm-arg --seed --dcm-arg 1 motion \
+  ROBOT_ID=$id ./run_main --sim --quiet --no-restart --dcm-arg --lockstep --dcm-arg --seed --dcm-arg 1 \
+    --dcm-arg --no-camera motion \
     >"$LOGDIR/main_${parts[0]}.log" 2>&1 &
   main_pid=$!
   # the script joins the lockstep once the DCM's clock runs and the motion process is started
