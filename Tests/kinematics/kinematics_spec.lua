@@ -62,7 +62,7 @@ for _, platform in ipairs({ 'Sim', 'OP' }) do
         local sy = side == 'l' and 1 or -1
         local y0 = m:leg_fk(side, { 0, 0, 0, 0, 0, 0 })[2]
         for _ = 1, 3000 do
-          local pose = { R(-0.09, 0.09), y0 + sy * R(-0.03, 0.06), -leg_len + R(0.02, 0.12),
+          local pose = { R(-0.09, 0.09), y0 + sy * R(-0.03, 0.06), -leg_len + R(0.02, 0.08),
             R(-0.3, 0.3), R(-0.3, 0.3), R(-0.6, 0.6) }
           local _, flags = m:leg_ik(side, pose, q)
           if flags == 0 then
@@ -149,12 +149,9 @@ for _, platform in ipairs({ 'Sim', 'OP' }) do
     it('joint limits: a target beyond them is clamped and flagged', function()
       local y0 = m:leg_fk('l', { 0, 0, 0, 0, 0, 0 })[2]
       local q, flags = m:leg_ik('l', 0, y0, -leg_len + 0.05, 0, 0, 2.0) -- hip yaw 2 rad, limit 1.2
-      if platform == 'Sim' then
-        assert.are.equal(kin.JOINT_LIMIT, flags)
-        assert.is_true(abs(q[1]) <= 1.2 + 1e-12)
-      else
-        assert.are.equal(0, flags) -- Config/OP has no limits yet
-      end
+      -- both platforms limit hip yaw to +-1.2 rad (Config/<platform>/robot.lua)
+      assert.are.equal(kin.JOINT_LIMIT, flags)
+      assert.is_true(abs(q[1]) <= 1.2 + 1e-12)
     end)
 
     it('look_at points the optical axis at the target', function()
