@@ -72,6 +72,20 @@ return {
     align_timeout = 12.0,      -- s: give up aligning and just walk into the ball
     kick_timeout = 4.0,        -- s waiting for the kick to finish
     use_kick = true,           -- false: dribble the ball into the goal
+    -- walking the ball to the goal instead of kicking (the kick moves the ball < 1 m in the sim)
+    dribble = {
+      enabled = true,
+      start_side = 0.06,         -- m: ball this near the centre line ahead of the feet to start
+      start_angle = 0.3,         -- rad: attack direction this near to straight ahead to start
+      max_side = 0.16,           -- m: the ball this far to the side: align again
+      max_ahead = 0.6,           -- m: the ball this far ahead: approach again
+      max_angle = 0.8,           -- rad: attack direction this far off: align again
+      speed = 0.25,              -- m/s forward
+      side_gain = 1.0,           -- 1/s: side-step per m of the ball's sideways offset
+      turn_gain = 0.8,           -- 1/s
+      max_va = 0.4,              -- rad/s
+    },
+    attack_depth = 0.5,        -- m behind the goal line: the point aimed at
     dribble_distance = 1.2,    -- m: nearer than this to the goal line, walk the ball in
     follow_time = 3.0,         -- s walking after the ball following a kick
     reposition = { -1.5, 0.0 }, -- field point to walk to when the ball is lost

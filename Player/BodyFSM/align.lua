@@ -17,7 +17,9 @@ function M.update(ctx)
   if dist > cfg.align_distance + 0.3 then return 'far' end
   -- keep the kicking side unless the ball moved clearly to the other one
   if by * side < -0.05 then side = -side end
-  local ex, ey = bx - cfg.kick_x, by - side * cfg.kick_y
+  local dribble = cfg.dribble.enabled
+  -- dribbling: the ball centred between the feet; kicking: ahead of the kicking foot
+  local ex, ey = bx - cfg.kick_x, by - (dribble and 0 or side * cfg.kick_y)
   local ea = nav.wrap(math.atan2(uy, ux))
   -- turn around the ball: sideways motion couples with the turn
   local vx = nav.clamp(0.7 * ex, -0.06, 0.12)
@@ -28,6 +30,12 @@ function M.update(ctx)
     and math.abs(ea) < cfg.kick_tolerance_angle
   good = ok and good + 1 or 0
   ctx.kick_side = side > 0 and 'left' or 'right'
+  if dribble then
+    local d = cfg.dribble
+    if math.abs(ey) < d.start_side and math.abs(ea) < d.start_angle and ex > -0.1 and ex < 0.1 then
+      return 'dribble'
+    end
+  end
   if good >= 3 or ctx.t - t0 > cfg.align_timeout then return 'done' end
 end
 

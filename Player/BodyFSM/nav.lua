@@ -13,7 +13,8 @@ M.wrap = wrap
 function M.attack(ctx)
   local w = ctx.world
   local bx, by = w.ball.x, w.ball.y
-  local gx, gy = w:goal_in_robot_frame()
+  -- aim behind the goal line: a pose estimate a little too far forward then still attacks forward
+  local gx, gy = w:to_robot(w.cfg.field.length / 2 + (ctx.cfg.body.attack_depth or 0), 0)
   local dx, dy = gx - bx, gy - by
   local d = sqrt(dx * dx + dy * dy)
   if d < 1e-6 then return bx, by, 1, 0, 0 end

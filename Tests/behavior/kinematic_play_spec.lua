@@ -135,6 +135,8 @@ describe('behavior with an idealised robot', function()
       local behavior = require('Behavior.behavior').new({ port = 0 })
       behavior.gc.state = 3 -- playing (no GameController in this test)
       behavior.gc.gc_seen = true
+      -- the stand-in models a kick, not the feet pushing a ball along: play by kicking
+      behavior.cfg.body.dribble.enabled = false
       local ok, t = play(behavior, seed, 120)
       behavior.gc:close()
       print(string.format('# seed %d: %s after %.1f s', seed, ok and 'goal' or 'no goal', t))

@@ -2,7 +2,7 @@
 --   ./run_repl Tests/scenarios/score_one.lua SEED LIMIT_S [KILL_VISION_AT_S]
 -- Places robot and ball from SEED (both anywhere in the own half, any heading), lets the robot play
 -- and prints one line: "result seed=N goal=1 time=T" (or goal=0) plus where things ended.
--- luacheck: globals Sim wait arg shm Body
+-- luacheck: globals Sim wait arg shm Body world game vision
 local seed, limit, kill_at = tonumber(arg[1]), tonumber(arg[2] or '120'), tonumber(arg[3] or '')
 assert(seed and limit, 'usage: score_one.lua SEED LIMIT_S [KILL_VISION_AT_S]')
 
@@ -53,8 +53,28 @@ local ffi = require('ffi')
 ffi.cdef('int kill(int pid, int sig);')
 local killed = false
 local goal, own = false, false
+-- optional trace ($TRUTH_LOG): truth, world model and states every step, for plotting
+-- (Tests/scenarios/plot_paths.py)
+local trace = os.getenv('TRUTH_LOG') and io.open(os.getenv('TRUTH_LOG'), 'w')
+local body_names = require('BodyFSM.machine').states or {}
+local function log_step()
+  if not trace then return end
+  local T = Sim.truth()
+  local ok, mstate = pcall(function() return require('Motion').state() end)
+  trace:write(string.format('%.2f %.3f %.3f %.3f %.3f %.3f %d %.3f %.3f %.3f %.3f %.3f %.1f %s %s\n',
+    Body.get_time() - t0, T.x, T.y, T.yaw, T.ball.x, T.ball.y, T.fallen and 1 or 0,
+    world.pose[0], world.pose[1], world.pose[2], world.ball[0], world.ball[1],
+    Body.get_time() - world.ball_time[0], body_names[game.body_state[0] + 1] or tostring(game.body_state[0]),
+    ok and tostring(mstate) or '?'))
+  for i = 0, math.min(2, vision.goal_posts[0]) - 1 do
+    trace:write(string.format('post %.2f %.3f %.3f\n', Body.get_time() - t0, vision.goal_position[2 * i],
+      vision.goal_position[2 * i + 1]))
+  end
+end
+if trace then trace:write('# t x y yaw bx by fallen px py pyaw wbx wby ball_age body motion\n') end
 while Body.get_time() - t0 < limit do
   wait(0.25)
+  log_step()
   local plus, minus = Sim.score()
   if plus > plus0 then goal = true break end
   if minus > minus0 then own = true break end
@@ -69,3 +89,4 @@ end
 local T = Sim.truth()
 print(string.format('result seed=%d goal=%d time=%.2f own=%d robot=(%.2f,%.2f) ball=(%.2f,%.2f) fallen=%s',
   seed, goal and 1 or 0, Body.get_time() - t0, own and 1 or 0, T.x, T.y, T.ball.x, T.ball.y, tostring(T.fallen)))
+if trace then trace:close() end

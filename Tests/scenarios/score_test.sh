@@ -37,7 +37,7 @@ run_one() {
     [ -n "$tick" ] && [ "$tick" != 0 ] && break
     sleep 0.1
   done
-  ROBOT_ID=$id MAIN_LOG="$mainlog" timeout 900 ./run_repl Tests/scenarios/score_one.lua "$seed" "$LIMIT" $kill_at \
+  ROBOT_ID=$id MAIN_LOG="$mainlog" TRUTH_LOG="$LOGDIR/trace_$seed${kill_at:+_kill}.txt" timeout 900 ./run_repl Tests/scenarios/score_one.lua "$seed" "$LIMIT" $kill_at \
     >"$LOGDIR/run_$seed${kill_at:+_kill}.log" 2>&1
   kill -TERM "$main_pid" 2>/dev/null
   wait "$main_pid" 2>/dev/null
