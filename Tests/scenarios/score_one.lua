@@ -28,7 +28,10 @@ while true do
   end
   if n >= 4 then break end -- them and this script
   if os.time() > deadline then error('the robot processes did not join the lockstep within 60 s') end
-  wait(0.1)
+  -- a process that has joined holds the clock until its first step, which may take a few seconds
+  -- of start-up on a loaded machine: wait() then reports a stopped clock, and we try again
+  local ok, err = pcall(wait, 0.1)
+  if not ok and not tostring(err):find('not advancing', 1, true) then error(err, 0) end
 end
 
 Sim.teleport_robot(rx, ry, ryaw)
