@@ -44,6 +44,7 @@ return {
     },
     ball_lost_after = 3.0,      -- s without a sighting: the ball is lost
     max_odometry_step = 0.5,    -- m: a larger jump means the motion process restarted
+    imu_yaw = true,             -- turn between steps from the IMU's yaw changes, not the walk's plan
   },
 
   head = {

@@ -84,7 +84,7 @@ function Behavior:step()
   end
   self.vision_changed = self.vision_changed or t
   ctx.vision_stale = (t - self.vision_changed) > self.cfg.vision_stale_after
-  self.world:update(t, odom, vis)
+  self.world:update(t, odom, vis, self.cfg.world.imu_yaw and Body.get_angle()[3] or nil)
   self.world:publish(self.blocks.world)
 
   local state, penalized = self.gc:update(t, Body.get_button(1) ~= 0)

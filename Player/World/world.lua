@@ -50,11 +50,21 @@ M.odom_delta = odom_delta
 
 -- One step at robot time t. odometry = {x, y, yaw} (cumulative, from the motion block);
 -- vision = { frame, time, ball_detected, ball = {x, y}, posts = {{x, y}, ...} } or nil.
-function World:update(t, odometry, vision)
+-- imu_yaw (optional): the IMU's yaw (rad); only its changes are used, as the turn between steps
+-- in place of the walk's (the walk reports the turn it planned, not how the body actually turned
+-- when a foot slips or pushes the ball).
+function World:update(t, odometry, vision, imu_yaw)
   local dt = self.t and (t - self.t) or 0
   self.t = t
+  local imu_da
+  if imu_yaw and self.imu_yaw then
+    imu_da = wrap(imu_yaw - self.imu_yaw)
+    if math.abs(imu_da) > 0.5 then imu_da = nil end -- a glitch (or lying on the ground): not a turn
+  end
+  self.imu_yaw = imu_yaw
   if self.odom then
     local dx, dy, da = odom_delta(self.odom, odometry)
+    if imu_da and math.abs(da) <= 1.0 then da = imu_da end
     if dx * dx + dy * dy > self.cfg.max_odometry_step ^ 2 or math.abs(da) > 1.0 then
       -- the motion process restarted (its odometry began again): skip this step
       self.odometry_jumps = self.odometry_jumps + 1

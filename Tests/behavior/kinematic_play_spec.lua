@@ -71,6 +71,7 @@ local function play(behavior, seed, limit)
       end
     end
     motion.odometry[0], motion.odometry[1], motion.odometry[2] = ox, oy, oa
+    sensor.angle[2] = ra -- a perfect IMU yaw
     -- ball rolls
     bx, by = bx + bvx * STEP, by + bvy * STEP
     bvx, bvy = bvx * math.exp(-0.8 * STEP), bvy * math.exp(-0.8 * STEP)
