@@ -78,9 +78,28 @@ function World:update(t, odometry, vision, imu_yaw)
   if vision and vision.frame ~= self.frame then
     self.frame = vision.frame
     if vision.ball_detected then self.ball:observe(vision.ball[1], vision.ball[2], t) end
-    if vision.posts and #vision.posts > 0 then self.pose:observe_posts(vision.posts) end
+    local posts = self:plausible_posts(vision.posts)
+    if posts then self.pose:observe_posts(posts) end
   end
   self.pose:estimate()
+end
+
+-- The sightings worth giving the pose filter: none nearer than a robot can stand to a post, and a
+-- pair only when its spacing fits a goal's width (false posts from lines and robots are common).
+function World:plausible_posts(posts)
+  if not posts or #posts == 0 then return nil end
+  local min_r = self.cfg.post_min_range
+  local out = {}
+  for _, p in ipairs(posts) do
+    if sqrt(p[1] * p[1] + p[2] * p[2]) >= min_r then out[#out + 1] = p end
+  end
+  if #out == 2 then
+    local sep = sqrt((out[1][1] - out[2][1]) ^ 2 + (out[1][2] - out[2][2]) ^ 2)
+    if math.abs(sep - self.cfg.field.goal_width) > self.cfg.post_pair_tolerance then return nil end
+  end
+  if #out == 0 then return nil end
+  self.posts_used = (self.posts_used or 0) + #out
+  return out
 end
 
 -- Seconds since the ball was last seen.

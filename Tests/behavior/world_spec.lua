@@ -92,4 +92,28 @@ describe('world', function()
     assert.is_near(0, dy, 1e-9)
     assert.is_near(0.1, da, 1e-9)
   end)
+
+  local wcfg = { field = field, ball = bcfg, pose = pcfg, seed = 1, ball_lost_after = 3,
+    max_odometry_step = 0.5, post_min_range = 0.5, post_pair_tolerance = 0.8 }
+
+  it('passes only plausible goal-post sightings to the pose filter', function()
+    local w = World.new(wcfg)
+    assert.is_nil(w:plausible_posts({}))
+    assert.is_nil(w:plausible_posts({ { 0.2, 0.1 } }))                 -- too near to be a post
+    assert.is_nil(w:plausible_posts({ { 3.0, 0.3 }, { 3.0, -0.3 } }))  -- 0.6 m apart: not a goal
+    assert.are.equal(2, #w:plausible_posts({ { 3.0, 1.3 }, { 3.0, -1.2 } }))
+    local one = w:plausible_posts({ { 0.25, 0.0 }, { 3.0, 1.3 } })    -- the near one dropped
+    assert.are.equal(1, #one)
+    assert.are.equal(3.0, one[1][1])
+  end)
+
+  it('takes the turn from the IMU yaw changes when given', function()
+    local w = World.new(wcfg)
+    w:update(0, { 0, 0, 0 }, nil, 1.0)
+    w:update(0.1, { 0.1, 0, 0 }, nil, 1.3) -- the walk planned no turn; the body turned 0.3 rad
+    local before = w.pose.a
+    w:update(0.2, { 0.1, 0, 0 }, nil, 1.6)
+    local turned = ((w.pose.a - before) + math.pi) % (2 * math.pi) - math.pi
+    assert.is_true(math.abs(turned - 0.3) < 0.1, 'turned ' .. turned)
+  end)
 end)
