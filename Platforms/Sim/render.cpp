@@ -119,7 +119,8 @@ void Renderer::ground(const Camera &c, uint32_t frame, uint8_t *img) const {
     if (std::fabs(duz) < 1e-12f) {
       if (!(dz0 < eps)) ub = -1;
     } else {
-      const double uz = (eps - dz0) / duz;   // dz(uz) = eps
+      // dz(uz) = eps; clamped before the conversion to int (|uz| can be huge)
+      const double uz = std::min(std::max((double)(eps - dz0) / duz, -2.0), W + 2.0);
       if (duz > 0) ub = std::min(W - 1, (int)std::ceil(uz) - 1);
       else ua = std::max(0, (int)std::floor(uz) + 1);
     }
@@ -311,6 +312,10 @@ uint32_t Renderer::noise_offset(uint32_t frame) const {
 void Renderer::render(const Camera &c, const std::vector<Solid> &solids, int self,
                       const std::vector<int> &hide, const Vec3 &ball_centre, double ball_radius,
                       uint32_t frame, uint8_t *img) const {
+  if (!c.pos.allFinite() || !c.rot.allFinite()) {
+    memset(img, 0, (size_t)c.width * c.height * 2);   // a broken pose: a black frame, never a crash
+    return;
+  }
   ground(c, frame, img);
   // painter's order: farthest first; index -1 is the ball
   std::vector<std::pair<double, int>> order;
