@@ -28,8 +28,10 @@ function M.join()
       local p = pids[i]
       if p == pid then return M._setup(sync, i) end
       if p == 0 or (pass == 2 and C.shm_pid_alive(p) == 0) then
-        -- mark as not needing the current tick before claiming, so the DCM never waits on a half-set slot
-        sync.wake_tick[i] = 0xffffffff
+        -- claim the slot as "not done with anything yet": from the moment the DCM sees this pid it
+        -- waits for our first done() at its first tick > 0, so it cannot run ahead of us
+        sync.done_tick[i] = 0
+        sync.wake_tick[i] = 0
         if C.shm_cas_i32(pids + i, p, pid) == 1 then return M._setup(sync, i) end
       end
     end
@@ -38,11 +40,13 @@ function M.join()
 end
 
 function M._setup(sync, slot)
-  -- consulted from the current tick on: the clock waits for this process's first done(), so what
-  -- it does before that (commands, Sim requests) lands on a defined tick
-  local tick = sync.tick[0]
-  sync.done_tick[slot] = tick - 1
-  sync.wake_tick[slot] = tick
+  -- A DCM held at tick 0 for its first participant steps once (done_tick 0 >= 0) and then waits
+  -- for us at tick 1: wait for that, so a script's first commands land on a defined tick.
+  if sync.lockstep[0] == 1 then
+    local deadline = C.shm_now() + 2.0
+    local word = ffi.cast('volatile uint32_t *', sync.tick)
+    while word[0] < 1 and C.shm_now() < deadline do C.shm_futex_wait(word, word[0], 0.01) end
+  end
   return setmetatable({ sync = sync, slot = slot }, Participant)
 end
 

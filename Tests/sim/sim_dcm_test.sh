@@ -107,6 +107,7 @@ cp Config/Sim/sim.lua "$tmp/Config/Sim/"
 sed "s#urdf = .*#urdf = '$tmp/broken.urdf',#" Config/Sim/robot.lua >"$tmp/Config/Sim/robot.lua"
 sed 's#<mass value="1.34928"/>##' Config/Sim/op3.urdf >"$tmp/broken.urdf"
 cp Config/shm.schema "$tmp/Config/"
+cp -r Config/Common "$tmp/Config/"
 err=$(HRP_ROOT=$tmp HRP_SCHEMA=$HRP_ROOT/Config/shm.schema timeout 10 build/bin/dcm_sim --quiet 2>&1)
 rc=$?
 echo "# $err"
