@@ -134,7 +134,10 @@ function Filter:observe_posts(posts)
     fit = fit + self.w[i] * l
   end
   self.fit = 0.8 * (self.fit or 1) + 0.2 * math.min(1, fit / 0.3)
-  if #posts == 2 and ((self.confidence or 0) < self.cfg.reset_below or fit < 0.05) then
+  -- one badly explained sighting is more likely a false post than a wrong belief: re-seed only
+  -- when the belief is weak or sightings have kept contradicting it (the running fit is low)
+  local contradicted = self.fit < 0.3
+  if #posts == 2 and ((self.confidence or 0) < self.cfg.reset_below or contradicted) then
     -- sensor resetting: a few particles jump to the poses this sighting implies
     local cands = self:poses_from_two_posts(posts[1], posts[2])
     -- each candidate in proportion to how well the current belief supports it (the history
@@ -150,7 +153,7 @@ function Filter:observe_posts(posts)
       total_support = total_support + sum
     end
     if #cands > 0 then
-      local k = floor(self.n * (fit < 0.05 and 0.3 or self.cfg.reset_fraction))
+      local k = floor(self.n * (contradicted and 0.3 or self.cfg.reset_fraction))
       for _ = 1, k do
         local u, ci = self.rng() * total_support, 1
         while ci < #cands and u > support[ci] do u = u - support[ci] ci = ci + 1 end

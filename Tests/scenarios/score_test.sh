@@ -6,11 +6,13 @@
 # trace (truth, world model, states, post sightings) in build/test-logs/scenarios/trace_SEED.txt;
 # Tests/scenarios/plot_paths.py draws them to PNG.
 #   Tests/scenarios/score_test.sh [SEEDS...]        (default 1..10)
+# env: SCORE_LIMIT (s), SKIP_KILL=1, SCORE_LOGDIR, SCORE_BEHAVIOR=FILE (run FILE as the behavior
+# process: Tests/bench/score_given_pose.sh)
 # TAP output; logs in build/test-logs/scenarios/.
 set -u
 cd "$(dirname "$0")/../.."
 source Run/env.sh
-LOGDIR="$HRP_ROOT/build/test-logs/scenarios"
+LOGDIR="$HRP_ROOT/${SCORE_LOGDIR:-build/test-logs/scenarios}"
 mkdir -p "$LOGDIR"
 SEEDS=("$@")
 [ ${#SEEDS[@]} -eq 0 ] && SEEDS=(1 2 3 4 5 6 7 8 9 10)
@@ -29,7 +31,7 @@ run_one() {
   local seed=$1 id=$2 kill_at=${3:-}
   local mainlog="$LOGDIR/main_$seed${kill_at:+_kill}.log"
   ROBOT_ID=$id HRP_SEED=$seed HRP_GC_PORT=$((40000 + id % 20000)) \
-    ./run_main --sim --quiet --dcm-arg --lockstep --dcm-arg --seed --dcm-arg "$seed" >"$mainlog" 2>&1 &
+    ./run_main --sim --quiet ${SCORE_BEHAVIOR:+--script behavior=$SCORE_BEHAVIOR} --dcm-arg --lockstep --dcm-arg --seed --dcm-arg "$seed" >"$mainlog" 2>&1 &
   local main_pid=$!
   # the REPL script attaches only once the sim DCM has created the robot's blocks and its clock
   # runs (a script that came first would create the blocks itself and race the DCM)
