@@ -18,7 +18,7 @@ function M.new(walk)
   return setmetatable({ walk = walk, from = {}, cur = {}, done = true }, Kick)
 end
 
-local KEYS = { 'shift', 'lean', 'x', 'y', 'z', 'hip', 'knee', 'ankle' }
+local KEYS = { 'shift', 'lean', 'x', 'y', 'z', 'hip', 'knee', 'ankle', 'tilt', 'height', 'shp', 'skn', 'sank' }
 
 -- Starts a kick with the foot on `side` ('left' or 'right') at time t.
 function Kick:start(side, t)
@@ -64,7 +64,7 @@ function Kick:update(t, q, sensors, dt)
   local ox, oy = w.com_offset[1] + p.footX, w.com_offset[2]
   local c, sn = math.cos(ta), math.sin(ta)
   local tx, ty = cx - (c * ox - sn * oy), cy - (sn * ox + c * oy)
-  local tz, tp = p.bodyHeight, p.bodyTilt
+  local tz, tp = p.bodyHeight + cur.height, p.bodyTilt + cur.tilt
   local kp, sp = left and w.lpose or w.rpose, left and w.rpose or w.lpose
   Walk.foot_in_torso(kp, foot[1], foot[2], cur.z, foot[3], tx, ty, tz, ta, tp, 0)
   Walk.foot_in_torso(sp, uS[1], uS[2], 0, uS[3], tx, ty, tz, ta, tp, 0)
@@ -76,6 +76,10 @@ function Kick:update(t, q, sensors, dt)
   q[legi[3]] = q[legi[3]] + ay[legi[3]] * cur.hip
   q[legi[4]] = q[legi[4]] + ay[legi[4]] * cur.knee
   q[legi[5]] = q[legi[5]] + ay[legi[5]] * cur.ankle
+  local legs = w.legs[left and Walk.RIGHT or Walk.LEFT]
+  q[legs[3]] = q[legs[3]] + ay[legs[3]] * cur.shp
+  q[legs[4]] = q[legs[4]] + ay[legs[4]] * cur.skn
+  q[legs[5]] = q[legs[5]] + ay[legs[5]] * cur.sank
   return self.done
 end
 
