@@ -631,10 +631,11 @@ int main(int argc, char **argv) {
       }
     }
 
-    // ---- publish
+    // ---- publish: truth (and frames, above) before the sensors, so that a process woken by the
+    // new sensor tick finds everything else of that tick in place
     for (size_t r = 0; r < io.size(); r++) {
-      publish_sensors(w, (int)r, io[r], tick, p);
       publish_truth(w, (int)r, io[r], rtf);
+      publish_sensors(w, (int)r, io[r], tick, p);
     }
 
     // ---- statistics and the real-time factor
