@@ -67,7 +67,7 @@ return {
     width = 640, height = 480,
     rate = 30,                   -- frames per second of simulated time
     fovy_deg = 43.3,             -- vertical field of view (OP3)
-    latency_ticks = 3,           -- a frame exposed at tick N is delivered with sensor tick N + 3
+    latency_ticks = 4,           -- a frame exposed at tick N is delivered with sensor tick N + 4 (32 ms)
     noise = 2,                   -- standard deviation of the luma noise, grey levels
   },
 

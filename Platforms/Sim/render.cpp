@@ -88,6 +88,13 @@ Renderer::Renderer(const Params &p, uint64_t seed) : seed_(seed) {
       if (line) tex_[(size_t)(j >> 3) * (tw_ >> 3) + (i >> 3)] |= 1ull << (((j & 7) << 3) + (i & 7));
     }
   }
+  // coarse level: one flag per 8 x 8 tiles (64 cm square), set if any line texel is inside
+  cells_x_ = (tw_ / 8 + 7) / 8;
+  const int cells_y = (th_ / 8 + 7) / 8;
+  cells_.assign((size_t)cells_x_ * cells_y, 0);
+  for (int tj = 0; tj < th_ / 8; tj++)
+    for (int ti = 0; ti < tw_ / 8; ti++)
+      if (tex_[(size_t)tj * (tw_ / 8) + ti]) cells_[(size_t)(tj / 8) * cells_x_ + ti / 8] = 1;
   std::mt19937_64 rng(seed ^ 0x9e3779b97f4a7c15ull);
   std::normal_distribution<double> n(0, std::max(0.0, p.cam_noise));
   noise_.resize(65536);
@@ -108,6 +115,8 @@ void Renderer::ground(const Camera &c, uint32_t frame, uint8_t *img) const {
   const uint8_t *col[4] = {kFloor, kGreen, kWhite, kSky};
   const uint64_t *tex = tex_.data();
   const int tiles_x = tw_ >> 3;
+  const uint8_t *cells = cells_.data();
+  const int cells_x = cells_x_;
   std::vector<uint8_t> cls(W);
   for (int v = 0; v < H; v++) {
     uint8_t *row = img + (size_t)v * W * 2;
@@ -153,8 +162,9 @@ void Renderer::ground(const Camera &c, uint32_t frame, uint8_t *img) const {
         const bool same_side = (gx0 >= 0) == (gx1 >= 0) && (gy0 >= 0) == (gy1 >= 0);
         const float ax0 = std::fabs(gx0), ay0 = std::fabs(gy0), ax1 = std::fabs(gx1), ay1 = std::fabs(gy1);
         if (same_side && ax0 < fw && ay0 < fh && ax1 < fw && ay1 < fh) {
-          const int i0 = (int)ax0 >> 3, j0 = (int)ay0 >> 3;
-          if (i0 == ((int)ax1 >> 3) && j0 == ((int)ay1 >> 3) && tex[(size_t)j0 * tiles_x + i0] == 0) {
+          const int i0 = (int)ax0 >> 3, j0 = (int)ay0 >> 3, i1 = (int)ax1 >> 3, j1 = (int)ay1 >> 3;
+          if ((i0 == i1 && j0 == j1 && tex[(size_t)j0 * tiles_x + i0] == 0) ||
+              ((i0 >> 3) == (i1 >> 3) && (j0 >> 3) == (j1 >> 3) && cells[(size_t)(j0 >> 3) * cells_x + (i0 >> 3)] == 0)) {
             memset(&cls[u], 1, 8);
             u += 8;
             gx0 = gx1;

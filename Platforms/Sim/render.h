@@ -53,6 +53,8 @@ class Renderer {
   // 64-bit word: 28 KB, so the ray casts stay in the L1 cache
   std::vector<uint64_t> tex_;
   float carpet_x_, carpet_y_;    // carpet half-size in texels
+  std::vector<uint8_t> cells_;   // 1 where a 64 x 64 texel cell holds any line texel
+  int cells_x_;
   std::vector<int8_t> noise_;    // luma noise table
   uint64_t seed_;
 };
