@@ -40,11 +40,14 @@ return {
       roughen_angle = 0.02,     -- rad
       reset_below = 0.5,        -- confidence under which two-post sightings re-seed particles
       reset_fraction = 0.05,
+      gate_confidence = 0.6,    -- a belief this confident ignores a sighting ...
+      gate_fit = 0.01,          -- ... that it explains this badly (mean likelihood)
       margin = 0.5,             -- m the robot may be outside the field lines
     },
     ball_lost_after = 3.0,      -- s without a sighting: the ball is lost
     max_odometry_step = 0.5,    -- m: a larger jump means the motion process restarted
     post_min_range = 0.5,       -- m: nearer post sightings are false (a robot cannot stand there)
+    post_max_range = 8.0,       -- m: further sightings are not used (range errors grow with range)
     post_pair_tolerance = 0.8,  -- m: two posts whose spacing is further off the goal's width are ignored
     imu_yaw = true,             -- turn between steps from the IMU's yaw changes, not the walk's plan
   },

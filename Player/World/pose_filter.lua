@@ -134,6 +134,12 @@ function Filter:observe_posts(posts)
     fit = fit + self.w[i] * l
   end
   self.fit = 0.8 * (self.fit or 1) + 0.2 * math.min(1, fit / 0.3)
+  -- gate: a sighting a confident belief cannot explain at all is taken for a false post (only
+  -- the running fit remembers it, so that sightings that keep contradicting end in a re-seed)
+  if (self.confidence or 0) > self.cfg.gate_confidence and fit < self.cfg.gate_fit and self.fit >= 0.3 then
+    self.gated = (self.gated or 0) + 1
+    return
+  end
   -- one badly explained sighting is more likely a false post than a wrong belief: re-seed only
   -- when the belief is weak or sightings have kept contradicting it (the running fit is low)
   local contradicted = self.fit < 0.3

@@ -84,14 +84,16 @@ function World:update(t, odometry, vision, imu_yaw)
   self.pose:estimate()
 end
 
--- The sightings worth giving the pose filter: none nearer than a robot can stand to a post, and a
--- pair only when its spacing fits a goal's width (false posts from lines and robots are common).
+-- The sightings worth giving the pose filter: none nearer than a robot can stand to a post or
+-- further than ranges are trusted, and a pair only when its spacing fits a goal's width (false
+-- posts from lines and robots are common).
 function World:plausible_posts(posts)
   if not posts or #posts == 0 then return nil end
   local min_r = self.cfg.post_min_range
   local out = {}
   for _, p in ipairs(posts) do
-    if sqrt(p[1] * p[1] + p[2] * p[2]) >= min_r then out[#out + 1] = p end
+    local r = sqrt(p[1] * p[1] + p[2] * p[2])
+    if r >= min_r and r <= self.cfg.post_max_range then out[#out + 1] = p end
   end
   if #out == 2 then
     local sep = sqrt((out[1][1] - out[2][1]) ^ 2 + (out[1][2] - out[2][2]) ^ 2)

@@ -9,7 +9,7 @@ local field = { length = 9, width = 6, goal_width = 2.6 }
 local pcfg = { particles = 300, prior = { -4.5, 0, -3, 3 }, odom_trans_noise = 0.15, odom_rot_noise = 0.1,
   odom_rot_per_m = 0.05, post_range_noise = 0.15, post_bearing_noise = 0.12, outlier = 0.05,
   inject_fraction = 0.01, margin = 0.5, roughen_position = 0.03, roughen_angle = 0.02,
-  reset_below = 0.5, reset_fraction = 0.05 }
+  reset_below = 0.5, reset_fraction = 0.05, gate_confidence = 0.6, gate_fit = 0.01 }
 
 describe('ball filter', function()
   it('keeps a still ball in place while the robot walks and turns', function()
@@ -94,12 +94,13 @@ describe('world', function()
   end)
 
   local wcfg = { field = field, ball = bcfg, pose = pcfg, seed = 1, ball_lost_after = 3,
-    max_odometry_step = 0.5, post_min_range = 0.5, post_pair_tolerance = 0.8 }
+    max_odometry_step = 0.5, post_min_range = 0.5, post_max_range = 4.0, post_pair_tolerance = 0.8 }
 
   it('passes only plausible goal-post sightings to the pose filter', function()
     local w = World.new(wcfg)
     assert.is_nil(w:plausible_posts({}))
     assert.is_nil(w:plausible_posts({ { 0.2, 0.1 } }))                 -- too near to be a post
+    assert.is_nil(w:plausible_posts({ { 5.0, 0.1 } }))                 -- too far to trust
     assert.is_nil(w:plausible_posts({ { 3.0, 0.3 }, { 3.0, -0.3 } }))  -- 0.6 m apart: not a goal
     assert.are.equal(2, #w:plausible_posts({ { 3.0, 1.3 }, { 3.0, -1.2 } }))
     local one = w:plausible_posts({ { 0.25, 0.0 }, { 3.0, 1.3 } })    -- the near one dropped
