@@ -38,7 +38,7 @@ return {
       inject_fraction = 0.01,
       roughen_position = 0.03, -- m, spread added after resampling
       roughen_angle = 0.02,     -- rad
-      reset_below = 0.5,        -- confidence under which two-post sightings re-seed particles
+      reset_below = 0.25,       -- confidence under which two-post sightings re-seed particles
       reset_fraction = 0.05,
       gate_confidence = 0.6,    -- a belief this confident ignores a sighting ...
       gate_fit = 0.01,          -- ... that it explains this badly (mean likelihood)
