@@ -44,22 +44,26 @@ return {
     torsoTimeConstant = 0.05,   -- s
     maxCorrection = 0.3,        -- rad, per joint
   },
-  -- kick (Player/Motion/kick.lua): phases reached one after the other, each over its duration
+  -- kick (Player/Motion/kick.lua): phases reached one after the other, each over its duration.
+  -- Tuned in the sim (Tests/motion/kick_trace.sh): the hip and knee run at the servos' speed limit
+  -- through contact (toe ~1.8 m/s, ball ~1.8 m/s off the foot, ~1.1 m/s once rolling: ~1.2 m).
   kick = {
     supportY = 0.01,         -- m, COM over the support foot: outward from its ankle
     phases = {
-      -- weight over the support foot
-      { duration = 0.6, shift = 1, lean = 0, x = 0, z = 0, hip = 0, knee = 0, ankle = 0 },
-      -- wind up: foot back and up, knee bent
-      { duration = 0.3, shift = 1, lean = 0, x = -0.02, z = 0.06, hip = 0.7, knee = 1.4, ankle = 0.4 },
-      -- swing: a short phase, so the servos run at their speed limit
-      { duration = 0.03, shift = 1, lean = 0, x = 0.1, z = 0.02, hip = -1.3, knee = 0, ankle = -0.5 },
+      -- weight over the support foot, body a little higher
+      { duration = 0.6, shift = 1, height = 0.005 },
+      -- wind up: foot back and up, knee bent, toe down
+      { duration = 0.3, shift = 1, height = 0.005, x = -0.015, z = 0.06, hip = 0.87, knee = 1.4, ankle = 0.4 },
+      -- swing: a short phase, so the servos run at their speed limit (hip and knee together)
+      { duration = 0.025, shift = 1, height = 0.005, tilt = 0.05, x = 0.095, z = 0.02, hip = -1.75, knee = 0.15,
+        ankle = -0.5 },
       -- follow through
-      { duration = 0.2, shift = 1, lean = 0, x = 0.1, z = 0.02, hip = -1.3, knee = 0, ankle = -0.5 },
+      { duration = 0.2, shift = 1, height = 0.005, tilt = 0.05, x = 0.095, z = 0.02, hip = -1.75, knee = 0.15,
+        ankle = -0.5 },
       -- back, down, weight back to the middle
-      { duration = 0.3, shift = 1, lean = 0, x = 0.0, z = 0.03, hip = 0, knee = 0, ankle = 0 },
-      { duration = 0.3, shift = 1, lean = 0, x = 0.0, z = 0.0, hip = 0, knee = 0, ankle = 0 },
-      { duration = 0.5, shift = 0, lean = 0, x = 0.0, z = 0.0, hip = 0, knee = 0, ankle = 0 },
+      { duration = 0.3, shift = 1, z = 0.03 },
+      { duration = 0.3, shift = 1 },
+      { duration = 0.5, shift = 0 },
     },
   },
   -- stance and transitions
