@@ -13,6 +13,9 @@ int close(int fd);
 int mkfifo(const char *path, unsigned mode);
 int unlink(const char *path);
 int sched_yield(void);
+struct hrp_sched_param { int sched_priority; };
+int sched_setscheduler(int pid, int policy, const struct hrp_sched_param *param);
+int sched_setaffinity(int pid, size_t size, const uint64_t *mask);
 ]]
 
 local N = tonumber(arg and arg[1]) or 100000
@@ -21,6 +24,15 @@ local dir = os.tmpname()
 os.remove(dir)
 local data_fifo, ack_fifo = dir .. '.data', dir .. '.ack'
 assert(ffi.C.mkfifo(data_fifo, 384) == 0 and ffi.C.mkfifo(ack_fifo, 384) == 0, 'mkfifo failed')
+
+-- real-time priority on core 0 (the reader takes core 1), as a DCM and motion process would run;
+-- falls back to normal priority without permission
+local mask = ffi.new('uint64_t[16]')
+mask[0] = 1
+local pinned = ffi.C.sched_setaffinity(0, ffi.sizeof(mask), mask) == 0
+local prio = ffi.new('struct hrp_sched_param', { 10 })
+local rt = ffi.C.sched_setscheduler(0, 1, prio) == 0   -- 1 = SCHED_FIFO
+print(string.format('writer: %s, %s', pinned and 'pinned to cpu 0' or 'not pinned', rt and 'SCHED_FIFO' or 'normal priority'))
 
 local bench = shm.open('bench')
 bench.ack[0] = 0
