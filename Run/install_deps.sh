@@ -9,7 +9,7 @@ DEBIAN_PACKAGES=(
   libode-dev libeigen3-dev libopencv-dev
   libusb-1.0-0-dev liburdfdom-dev libreadline-dev
   clang libclang-rt-14-dev
-  python3 python3-numpy
+  libpng-dev python3 python3-numpy python3-pip
 )
 
 missing=()
@@ -26,7 +26,7 @@ if [ "${#missing[@]}" -gt 0 ]; then
   echo "deps: installing Debian packages: ${missing[*]}"
   export DEBIAN_FRONTEND=noninteractive
   $SUDO apt-get update -qq
-  $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+  $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 else
   echo "deps: all Debian packages present"
 fi
