@@ -32,7 +32,8 @@ mask[0] = 1
 local pinned = ffi.C.sched_setaffinity(0, ffi.sizeof(mask), mask) == 0
 local prio = ffi.new('struct hrp_sched_param', { 10 })
 local rt = ffi.C.sched_setscheduler(0, 1, prio) == 0   -- 1 = SCHED_FIFO
-print(string.format('writer: %s, %s', pinned and 'pinned to cpu 0' or 'not pinned', rt and 'SCHED_FIFO' or 'normal priority'))
+print(string.format('writer: %s, %s', pinned and 'pinned to cpu 0' or 'not pinned',
+  rt and 'SCHED_FIFO' or 'normal priority'))
 
 local bench = shm.open('bench')
 bench.ack[0] = 0
