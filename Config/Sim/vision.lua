@@ -28,8 +28,14 @@ return {
   },
   goal = {
     color = 16,                 -- label bit (white posts)
-    min_height = 4,             -- block pixels (8 px of the frame each)
-    min_ratio = 2.5,            -- height / width of the post's region, block pixels
+    green = 8,                  -- label bit of the field under a post's base
+    diameter = 0.1,             -- m, of a post
+    min_rise = 0.6,             -- m: a post's white run reaches this high above the ground (posts
+                                -- are 1.2 m, the camera about 0.45 m: lines never rise at all)
+    min_rows = 6,               -- label rows of a post's white run, at least
+    gap = 2,                    -- label pixels of noise bridged inside a post's run
+    width_tolerance = { 0.5, 1.8 }, -- post width in the image / width expected at its base's range
+    max_range = 10.5,           -- m, farther posts are refused (the carpet's diagonal)
   },
   publish_labels = false,       -- write label images to shm for debugging
 }

@@ -44,7 +44,7 @@ end
 local vcfg = Config.load('vision', { scale = 'number', block = 'number', colors = 'table',
   ball = { color = 'number', diameter = 'number', min_area = 'number', min_fill = 'number',
            max_aspect = 'number', green_below = 'number', max_range = 'number' },
-  goal = { color = 'number', min_height = 'number', min_ratio = 'number' } })
+  goal = { color = 'number', diameter = 'number', min_rise = 'number' } })
 local ccfg = Config.load('camera', { driver = 'string', width = 'number', height = 'number',
   fps = 'number', fovy = 'number' })
 
