@@ -12,6 +12,9 @@ namespace {
 
 const int kGround = 0, kBall = 1, kRobot = 2;
 const double kWorldCfm = 1e-5;
+// collision category bits: 0..47 the links of a robot, 48..62 robots, 63 static parts
+const int kLinkBits = 48;
+const unsigned long kStatic = 1ul << 63;
 
 Mat3 rot_z(double a) { return Eigen::AngleAxisd(a, Vec3::UnitZ()).toRotationMatrix(); }
 
@@ -144,7 +147,6 @@ World::World(const Params &p, const Model &m, int nrobots, uint64_t seed)
   dWorldSetContactMaxCorrectingVel(world_, 1.0);
   dWorldSetAutoDisableFlag(world_, 0);
   top_ = dSimpleSpaceCreate(nullptr);
-  env_ = dSimpleSpaceCreate(top_);
   contacts_ = dJointGroupCreate(0);
   cfb_.reserve(4096);
   cfb_owner_.reserve(4096);
@@ -168,24 +170,36 @@ void World::build_env() {
     infos_.push_back(g);
     return g;
   };
-  dGeomID ground = dCreatePlane(env_, 0, 0, 1, 0);
+  // The static parts sit at the top level, each goal in a space of its own: a robot (space) is
+  // then tested against the carpet and against a goal only where their bounding boxes meet, and
+  // static parts never against each other (category kStatic, collide bits without it).
+  auto make_static = [](dGeomID g) {
+    dGeomSetCategoryBits(g, kStatic);
+    dGeomSetCollideBits(g, ~kStatic);
+  };
+  dGeomID ground = dCreatePlane(top_, 0, 0, 1, 0);
   dGeomSetData(ground, info(kGround));
+  make_static(ground);
   // goals: posts and crossbar (seen and collidable), nets (collidable only)
   const double d = p_.post_diameter, hw = p_.goal_width / 2 + d / 2;
   const double ph = p_.goal_height + d;
   for (int side = -1; side <= 1; side += 2) {
     const double gx = side * p_.field_length / 2;
+    dSpaceID env = dSimpleSpaceCreate(top_);
+    make_static((dGeomID)env);
     for (int k = -1; k <= 1; k += 2) {
-      dGeomID g = dCreateCylinder(env_, d / 2, ph);
+      dGeomID g = dCreateCylinder(env, d / 2, ph);
       dGeomSetPosition(g, gx, k * hw, ph / 2);
       dGeomSetData(g, info(kGround));
+      make_static(g);
       Solid s;
       cylinder_solid(Vec3(gx, k * hw, ph / 2), Mat3::Identity(), d / 2, ph, 12, &s);
       set_yuv(&s, 235, 128, 128);
       goal_solids_.push_back(s);
     }
     Mat3 Rx = Eigen::AngleAxisd(M_PI / 2, Vec3::UnitX()).toRotationMatrix();
-    dGeomID bar = dCreateCylinder(env_, d / 2, 2 * hw + d);
+    dGeomID bar = dCreateCylinder(env, d / 2, 2 * hw + d);
+    make_static(bar);
     dGeomSetPosition(bar, gx, 0, p_.goal_height + d / 2);
     dMatrix3 R;
     dRFromAxisAndAngle(R, 1, 0, 0, M_PI / 2);
@@ -204,9 +218,10 @@ void World::build_env() {
         {gx + side * depth / 2, 0, h + t / 2, depth, 2 * hw, t},
     };
     for (auto &n : nets) {
-      dGeomID g = dCreateBox(env_, n.sx, n.sy, n.sz);
+      dGeomID g = dCreateBox(env, n.sx, n.sy, n.sz);
       dGeomSetPosition(g, n.x, n.y, n.z);
       dGeomSetData(g, info(kGround));
+      make_static(g);
     }
   }
   // ball: a hollow shell (I = 2/3 m r^2)
@@ -282,7 +297,6 @@ void World::build_robot(int r) {
       dJointSetHingeParam(j, dParamHiStop, l.upper);
       dJointSetHingeParam(j, dParamStopERP, 0.2);
       dJointSetHingeParam(j, dParamStopCFM, kWorldCfm);
-      dJointSetFeedback(j, &rb.fb[i]);
       rb.hinge[i] = j;
     }
   }
@@ -318,6 +332,24 @@ void World::build_robot(int r) {
       if (dCollide(g1, g2, 1, cg, sizeof(dContactGeom)) > 0) {
         rb.allowed[a * nl + b] = rb.allowed[b * nl + a] = 0;
       }
+    }
+  }
+  // The same filter as ODE category/collide bits, so the spaces skip the pairs that can never make
+  // a contact before their bounding-box test and our callback: category = the link's bit and the
+  // robot's bit, collide = the links it may touch and every other robot (static parts pass
+  // through their own collide bits, the ball has all bits). (Pairs are only left out, never added: contacts and their order stay the same.)
+  const int nr = (int)robots_.size();
+  if (nl <= kLinkBits && nr <= 63 - kLinkBits) {
+    const unsigned long robots_mask = ((1ul << (kLinkBits + nr)) - 1) & ~((1ul << kLinkBits) - 1);
+    const unsigned long self = 1ul << (kLinkBits + r);
+    for (int i = 0; i < ng; i++) {
+      dGeomID g = dSpaceGetGeom(rb.space, i);
+      const int a = ((GeomInfo *)dGeomGetData(g))->link;
+      unsigned long links = 0;
+      for (int b = 0; b < nl; b++)
+        if (rb.allowed[a * nl + b]) links |= 1ul << b;
+      dGeomSetCategoryBits(g, (1ul << a) | self);
+      dGeomSetCollideBits(g, links | (robots_mask & ~self));
     }
   }
 }
@@ -546,6 +578,14 @@ void World::physics_step() {
   time_ += p_.timestep;
 }
 
+void World::set_hinge_feedback(bool on) {
+  for (Robot &rb : robots_) {
+    for (size_t i = 0; i < rb.hinge.size(); i++) {
+      if (rb.hinge[i]) dJointSetFeedback(rb.hinge[i], on ? &rb.fb[i] : nullptr);
+    }
+  }
+}
+
 void World::check_goal() {
   const dReal *b = dBodyGetPosition(ball_);
   const double r = p_.ball_diameter / 2;
@@ -566,7 +606,13 @@ void World::step() {
     rb.vel_start = Vec3(v[0], v[1], v[2]);
     rb.foot_acc[0] = rb.foot_acc[1] = 0;
   }
-  for (int i = 0; i < substeps_; i++) physics_step();
+  // joint torques (`load`) are read once per tick: ODE computes the hinges' feedback in the last
+  // physics step only (feedback is output, it does not enter the dynamics)
+  for (int i = 0; i < substeps_; i++) {
+    if (i == substeps_ - 1) set_hinge_feedback(true);
+    physics_step();
+  }
+  set_hinge_feedback(false);
   for (Robot &rb : robots_) {
     const dReal *v = dBodyGetLinearVel(rb.body[0]);
     Vec3 a = (Vec3(v[0], v[1], v[2]) - rb.vel_start) / p_.period + Vec3(0, 0, p_.gravity);

@@ -133,6 +133,7 @@ class World {
   void build_robot(int r);
   void servo_update(Robot &rb);
   void physics_step();
+  void set_hinge_feedback(bool on);
   static void near_cb(void *data, dGeomID o1, dGeomID o2);
   void collide(dGeomID o1, dGeomID o2);
   void check_goal();
@@ -142,7 +143,7 @@ class World {
   Params p_;
   Model m_;
   dWorldID world_ = nullptr;
-  dSpaceID top_ = nullptr, env_ = nullptr;
+  dSpaceID top_ = nullptr;
   dJointGroupID contacts_ = nullptr;
   dBodyID ball_ = nullptr;
   dGeomID ball_geom_ = nullptr;

@@ -77,6 +77,9 @@ int main(int argc, char **argv) {
            frames ? 1e3 * render_cpu / frames : 0.0);
     printf("robot 0: x %.4f y %.4f z %.4f roll %.4f pitch %.4f yaw %.4f fallen %d\n", tr.x, tr.y, tr.z,
            tr.roll, tr.pitch, tr.yaw, tr.fallen);
+    // the exact end state, to check that a speed-up leaves the physics bit for bit the same
+    printf("end state: %a %a %a %a %a %a ball %a %a %a\n", tr.x, tr.y, tr.z, tr.roll, tr.pitch, tr.yaw,
+           tr.ball[0], tr.ball[1], tr.ball[2]);
   } catch (const std::exception &e) {
     fprintf(stderr, "sim_bench_world: %s\n", e.what());
     return 1;
