@@ -47,6 +47,11 @@ function M.toe_in_torso(side, q6)
   return { f[1] + o[1], f[2] + o[2], f[3] + o[3] }
 end
 
+-- the kicking foot's pitch in the torso frame (toe down positive), from 6 leg angles
+function M.foot_pitch(side, q6)
+  return get_model():leg_fk(side, q6)[5]
+end
+
 -- the toe's velocity relative to the torso (torso frame) from the joint velocities: J(q) qd by
 -- central differences of the forward kinematics
 function M.toe_velocity_in_torso(side, q6, qd6)

@@ -34,7 +34,7 @@ local f = assert(io.open(out, 'w'))
 local names = { 'hip_yaw', 'hip_roll', 'hip_pitch', 'knee', 'ank_pitch', 'ank_roll' }
 local sup = side == 'left' and 'r_' or 'l_'
 local head = { 't', 'state', 'x', 'y', 'z', 'roll', 'pitch', 'yaw', 'bx', 'by', 'bz', 'bvx', 'bvy',
-  'toe_x', 'toe_y', 'toe_z', 'toe_wz', 'toe_rvx', 'toe_rvz', 'toe_wvx', 'toe_wvy', 'toe_wvz' }
+  'toe_x', 'toe_y', 'toe_z', 'toe_wz', 'toe_rvx', 'toe_rvz', 'toe_wvx', 'toe_wvy', 'toe_wvz', 'foot_pitch' }
 for _, n in ipairs(names) do head[#head + 1] = 'q_' .. n end
 for _, n in ipairs(names) do head[#head + 1] = 'qd_' .. n end
 for _, n in ipairs({ 'hip_pitch', 'knee', 'ank_pitch' }) do head[#head + 1] = 'sq_' .. n end
@@ -75,7 +75,8 @@ while Body.get_time() - t0 < 7 do
   if fwd > peak_toe then peak_toe = fwd end
   fell = fell or r.fallen
   local row = { t, STATES[Motion.state()] or 3, r.x, r.y, r.z, r.roll, r.pitch, r.yaw, r.ball.x, r.ball.y,
-    r.ball.z, bvx, bvy, toe[1], toe[2], toe[3], tw[3], rv[1], rv[3], fwd, -s * wv[1] + c * wv[2], wv[3] }
+    r.ball.z, bvx, bvy, toe[1], toe[2], toe[3], tw[3], rv[1], rv[3], fwd, -s * wv[1] + c * wv[2], wv[3],
+    ks.foot_pitch(side, q6) + r.pitch }
   for k = 1, 6 do row[#row + 1] = q6[k] end
   for k = 1, 6 do row[#row + 1] = qd6[k] end
   for _, n in ipairs({ 'hip_pitch', 'knee', 'ank_pitch' }) do row[#row + 1] = Body.get_position(sup .. n) end

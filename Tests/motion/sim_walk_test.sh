@@ -4,7 +4,7 @@
 # and backwards 0.1 m/s; turning on the spot 1 rad/s; 60 s of random commands; pushed over
 # forwards and backwards: fall detected within 0.3 s, stands up, walks again; a kick sends the
 # ball >= 2 m. Each scenario runs in its own sim (Tests/motion/sim_scenarios.lua prints TAP).
-#   Tests/motion/sim_walk_test.sh [SCENARIO...]
+#   [SIM_SEED=N] Tests/motion/sim_walk_test.sh [SCENARIO...]   (the sim's seed, default 1)
 set -u
 cd "$(dirname "$0")/../.."
 source Run/env.sh
@@ -24,7 +24,7 @@ for s in "${SCEN[@]}"; do
   n=$((n + 1))
   id=$((BASE_ID + n))
   read -r -a parts <<<"$s"
-  ROBOT_ID=$id ./run_main --sim --quiet --no-restart --dcm-arg --lockstep --dcm-arg --seed --dcm-arg 1 \
+  ROBOT_ID=$id ./run_main --sim --quiet --no-restart --dcm-arg --lockstep --dcm-arg --seed --dcm-arg "${SIM_SEED:-1}" \
     --dcm-arg --no-camera motion \
     >"$LOGDIR/main_${parts[0]}.log" 2>&1 &
   main_pid=$!
