@@ -11,4 +11,9 @@ function M.update(ctx)
   ctx.act.head(0, 0)
 end
 
+-- Leaving initial: the robot has been placed in its own half; localize afresh from there.
+function M.exit(ctx)
+  if ctx.world and ctx.world.reset_pose then ctx.world:reset_pose() end
+end
+
 return M

@@ -40,6 +40,15 @@ function M.new(cfg)
   return w
 end
 
+-- Back to the prior (anywhere in the own half, any heading): the robot may have been carried
+-- while the game was in its initial state (placed by hand, or by a scenario), and a belief formed
+-- before that would be confident and wrong (the two goals look alike, so no later sighting
+-- contradicts a mirrored belief).
+function World:reset_pose()
+  self.pose:init_prior()
+  self.pose.fit = nil
+end
+
 -- Odometry delta (dx, dy in the old robot frame, da) between two odometry readings {x, y, a}.
 local function odom_delta(o0, o1)
   local ddx, ddy = o1[1] - o0[1], o1[2] - o0[2]
