@@ -6,6 +6,9 @@
 #include <cmath>
 #include <cstring>
 #include <random>
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
 
 namespace sim {
 
@@ -99,6 +102,9 @@ Renderer::Renderer(const Params &p, uint64_t seed) : seed_(seed) {
   std::normal_distribution<double> n(0, std::max(0.0, p.cam_noise));
   noise_.resize(65536);
   for (int8_t &x : noise_) x = (int8_t)std::max(-100.0, std::min(100.0, std::round(n(rng))));
+  // the table's start repeated after its end: a row of up to kNoiseExtra pixels reads it unwrapped
+  noise_.resize(65536 + kNoiseExtra);
+  std::copy(noise_.begin(), noise_.begin() + kNoiseExtra, noise_.begin() + 65536);
 }
 
 void Renderer::ground(const Camera &c, uint32_t frame, uint8_t *img) const {
@@ -186,7 +192,39 @@ void Renderer::ground(const Camera &c, uint32_t frame, uint8_t *img) const {
       cls[u] = lookup(gx, gy);
     }
     const uint32_t base = (uint32_t)(v * W);
-    for (u = 0; u < W; u += 2) {
+    u = 0;
+#ifdef __SSE2__
+    // 16 pixels at a time, the same integer arithmetic as the loop below (bit-identical output):
+    // colours picked by class masks, luma + noise saturated, chroma the floor mean of each pair
+    if (W <= kNoiseExtra) {
+      const int8_t *nrow = noise_.data() + ((base + nz.offset) & 0xffff);   // no wrap within a row
+      const __m128i zero = _mm_setzero_si128(), low = _mm_set1_epi16(0x00ff);
+      const __m128i k1 = _mm_set1_epi8(1), k2 = _mm_set1_epi8(2), k3 = _mm_set1_epi8(3);
+      for (; u + 16 <= W; u += 16) {
+        const __m128i cl = _mm_loadu_si128((const __m128i *)&cls[u]);
+        const __m128i m0 = _mm_cmpeq_epi8(cl, zero), m1 = _mm_cmpeq_epi8(cl, k1);
+        const __m128i m2 = _mm_cmpeq_epi8(cl, k2), m3 = _mm_cmpeq_epi8(cl, k3);
+        auto pick = [&](int k) {
+          return _mm_or_si128(_mm_or_si128(_mm_and_si128(m0, _mm_set1_epi8((char)col[0][k])),
+                                           _mm_and_si128(m1, _mm_set1_epi8((char)col[1][k]))),
+                              _mm_or_si128(_mm_and_si128(m2, _mm_set1_epi8((char)col[2][k])),
+                                           _mm_and_si128(m3, _mm_set1_epi8((char)col[3][k]))));
+        };
+        const __m128i n = _mm_loadu_si128((const __m128i *)(nrow + u));
+        const __m128i pos = _mm_and_si128(n, _mm_cmpgt_epi8(n, zero));
+        const __m128i neg = _mm_and_si128(_mm_sub_epi8(zero, n), _mm_cmpgt_epi8(zero, n));
+        const __m128i y = _mm_subs_epu8(_mm_adds_epu8(pick(0), pos), neg);
+        const __m128i cu8 = pick(1), cv8 = pick(2);
+        const __m128i U = _mm_srli_epi16(_mm_add_epi16(_mm_and_si128(cu8, low), _mm_srli_epi16(cu8, 8)), 1);
+        const __m128i V = _mm_srli_epi16(_mm_add_epi16(_mm_and_si128(cv8, low), _mm_srli_epi16(cv8, 8)), 1);
+        const __m128i lo = _mm_or_si128(_mm_and_si128(y, low), _mm_slli_epi16(U, 8));   // Y0 U
+        const __m128i hi = _mm_or_si128(_mm_srli_epi16(y, 8), _mm_slli_epi16(V, 8));    // Y1 V
+        _mm_storeu_si128((__m128i *)(row + 2 * u), _mm_unpacklo_epi16(lo, hi));
+        _mm_storeu_si128((__m128i *)(row + 2 * u + 16), _mm_unpackhi_epi16(lo, hi));
+      }
+    }
+#endif
+    for (; u < W; u += 2) {
       const uint8_t *a = col[cls[u]], *b = col[cls[u + 1]];
       uint8_t *p = row + 2 * u;
       p[0] = sat(a[0] + nz.at(base + u));

@@ -55,7 +55,8 @@ class Renderer {
   float carpet_x_, carpet_y_;    // carpet half-size in texels
   std::vector<uint8_t> cells_;   // 1 where a 64 x 64 texel cell holds any line texel
   int cells_x_;
-  std::vector<int8_t> noise_;    // luma noise table
+  static constexpr int kNoiseExtra = 4096;
+  std::vector<int8_t> noise_;    // luma noise table (65536 entries, then the first kNoiseExtra again)
   uint64_t seed_;
 };
 
