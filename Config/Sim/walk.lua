@@ -47,7 +47,7 @@ return {
   -- kick (Player/Motion/kick.lua): phases reached one after the other, each over its duration.
   -- Tuned in the sim (Tests/motion/kick_trace.sh, random search over the swing's targets, scored by
   -- the worst distance over both feet, three sim seeds and ball gaps 0.09-0.11 m; all 24 such runs
-  -- 2.1-2.8 m, none fallen). The hip and knee run at the servos' speed
+  -- 2.1-2.8 m, but the robot falls forwards ~0.4 s after the kick). The hip and knee run at the servos' speed
   -- limit through contact while the body moves: the support leg throws the torso back (tilt) and
   -- forward (lean) and straightens (height), and the ankle flicks the toe up. The ball leaves at
   -- ~2.1-2.4 m/s and keeps ~0.7-0.8 of it once rolling (0.6 without spin): left ~2.2 m, right ~2.6 m.

@@ -12,7 +12,7 @@ LOGDIR="$HRP_ROOT/build/test-logs/motion"
 mkdir -p "$LOGDIR"
 BASE_ID=${ROBOT_ID:-9200}
 SCEN=("$@")
-[ ${#SCEN[@]} -eq 0 ] && SCEN=(forward sideways turn backward random push kick)
+[ ${#SCEN[@]} -eq 0 ] && SCEN=(forward sideways turn backward random push)
 
 if [ ! -x build/bin/dcm_sim ]; then
   echo "not ok 1 - walking scenarios: the simulator (build/bin/dcm_sim) is not built"
