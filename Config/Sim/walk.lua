@@ -45,26 +45,28 @@ return {
     maxCorrection = 0.3,        -- rad, per joint
   },
   -- kick (Player/Motion/kick.lua): phases reached one after the other, each over its duration.
-  -- Tuned in the sim (Tests/motion/kick_trace.sh, random search over the swing's targets, scored by
-  -- the worst distance over both feet, three sim seeds and ball gaps 0.09-0.11 m; all 24 such runs
-  -- 2.1-2.8 m, but the robot falls forwards ~0.4 s after the kick). The hip and knee run at the servos' speed
-  -- limit through contact while the body moves: the support leg throws the torso back (tilt) and
-  -- forward (lean) and straightens (height), and the ankle flicks the toe up. The ball leaves at
-  -- ~2.1-2.4 m/s and keeps ~0.7-0.8 of it once rolling (0.6 without spin): left ~2.2 m, right ~2.6 m.
+  -- Tuned in the sim (Tests/motion/kick_trace.sh): the hip and knee run at the servos' speed limit
+  -- through contact (toe ~1.8 m/s, ball ~1.8 m/s off the foot, ~1.1 m/s once rolling: ~1.2 m).
+  -- A longer kick was found (Tests/motion/sim_walk_test.sh kick, random search over the swing):
+  -- the same wind-up at x = 0.019, hip = 1.095, ankle = 0.283, then swing and follow-through with
+  --   height = 0.023, tilt = -0.653, lean = 0.053, x = 0.135, z = 0.03, hip = -1.737, knee = -0.246,
+  --   ankle = -1.359 (the support leg throws the torso back and forward while the kicking leg swings)
+  -- sends the ball 2.1-2.3 m (left) and 2.3-2.8 m (right) over seeds and gaps 0.09-0.11 m, but the
+  -- robot falls ~0.35 s after contact in every run: the swing spins it ~0.6 rad about the support
+  -- foot (yaw) while the support knee locks straight, and no recovery phase tried caught it.
   kick = {
     supportY = 0.01,         -- m, COM over the support foot: outward from its ankle
     phases = {
       -- weight over the support foot, body a little higher
       { duration = 0.6, shift = 1, height = 0.005 },
-      -- wind up: foot up, thigh back, knee bent, toe down
-      { duration = 0.3, shift = 1, x = 0.019, z = 0.06, hip = 1.095, knee = 1.4, ankle = 0.283 },
-      -- swing: a short phase, so the servos run at their speed limit (hip, knee, ankle and the
-      -- support leg together)
-      { duration = 0.025, shift = 1, height = 0.023, tilt = -0.653, lean = 0.053, x = 0.135, z = 0.03,
-        hip = -1.737, knee = -0.246, ankle = -1.359 },
+      -- wind up: foot back and up, knee bent, toe down
+      { duration = 0.3, shift = 1, height = 0.005, x = -0.015, z = 0.06, hip = 0.87, knee = 1.4, ankle = 0.4 },
+      -- swing: a short phase, so the servos run at their speed limit (hip and knee together)
+      { duration = 0.025, shift = 1, height = 0.005, tilt = 0.05, x = 0.095, z = 0.02, hip = -1.75, knee = 0.15,
+        ankle = -0.5 },
       -- follow through
-      { duration = 0.2, shift = 1, height = 0.023, tilt = -0.653, lean = 0.053, x = 0.135, z = 0.03,
-        hip = -1.737, knee = -0.246, ankle = -1.359 },
+      { duration = 0.2, shift = 1, height = 0.005, tilt = 0.05, x = 0.095, z = 0.02, hip = -1.75, knee = 0.15,
+        ankle = -0.5 },
       -- back, down, weight back to the middle
       { duration = 0.3, shift = 1, z = 0.03 },
       { duration = 0.3, shift = 1 },
