@@ -47,7 +47,7 @@ return {
     ball_lost_after = 3.0,      -- s without a sighting: the ball is lost
     max_odometry_step = 0.5,    -- m: a larger jump means the motion process restarted
     post_min_range = 0.5,       -- m: nearer post sightings are false (a robot cannot stand there)
-    post_max_range = 8.0,       -- m: further sightings are not used (range errors grow with range)
+    post_max_range = 10.5,      -- m: further sightings are not used (vision: range error <= 3.2% to 9 m)
     post_pair_tolerance = 0.8,  -- m: two posts whose spacing is further off the goal's width are ignored
     imu_yaw = true,             -- turn between steps from the IMU's yaw changes, not the walk's plan
   },
