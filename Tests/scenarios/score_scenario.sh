@@ -5,7 +5,9 @@
 # killed during one run, restarted by run_main, and the robot still scores. Each run leaves a
 # trace (truth, world model, states, post sightings) in build/test-logs/scenarios/trace_SEED.txt;
 # Tests/scenarios/plot_paths.py draws them to PNG.
-#   Tests/scenarios/score_test.sh [SEEDS...]        (default 1..10)
+#   Tests/scenarios/score_scenario.sh [SEEDS...]        (default 1..10)
+# Not part of `make test` while the robot scores in fewer than 9 of 10 (issue 6 is open; the outcome
+# of a seed still varies between runs): `make bench` runs it and prints goals/10 and the median time.
 # env: SCORE_LIMIT (s), SKIP_KILL=1, SCORE_LOGDIR, SCORE_BEHAVIOR=FILE (run FILE as the behavior
 # process: Tests/bench/score_given_pose.sh)
 # TAP output; logs in build/test-logs/scenarios/.
