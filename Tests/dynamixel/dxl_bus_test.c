@@ -91,12 +91,12 @@ int main(void) {
   char err[256] = "";
   dxl_port *port = NULL;
   int rc = dxl_port_open(name, 1000000, &port, err, sizeof err);
-  tap_ok(rc == 0, "open a pty at 1 Mbps");
+  check(rc == 0, "open a pty at 1 Mbps");
   if (rc) { printf("# %s\n", err); return tap_done(); }
-  tap_ok(dxl_port_set_baud(port, 4500000, err, sizeof err) == 0 && dxl_port_baud(port) == 4500000,
+  check(dxl_port_set_baud(port, 4500000, err, sizeof err) == 0 && dxl_port_baud(port) == 4500000,
          "custom rate 4.5 Mbps accepted (termios2)");
   dxl_port_set_baud(port, 1000000, err, sizeof err);
-  tap_ok(dxl_port_byte_time(port) > 9.9e-6 && dxl_port_byte_time(port) < 10.1e-6,
+  check(dxl_port_byte_time(port) > 9.9e-6 && dxl_port_byte_time(port) < 10.1e-6,
          "10 microseconds per byte at 1 Mbps");
 
   dxl_bus bus;
@@ -109,16 +109,16 @@ int main(void) {
   add_status(step(), 1, 7, 0, (const uint8_t[]){ 29, 0 }, 2, 0);
   uint16_t model = 0;
   rc = dxl_ping(&bus, 7, &model, NULL, &err8);
-  tap_ok(rc == 0 && model == 29, "1.0 ping reads the model number (MX-28: 29)");
+  check(rc == 0 && model == 29, "1.0 ping reads the model number (MX-28: 29)");
 
   /* ---- read with error bits */
   script_reset(1);
   add_status(step(), 1, 7, DXL1_ERR_OVERLOAD, (const uint8_t[]){ 0x34, 0x12 }, 2, 0);
   uint8_t d[8] = { 0 };
   rc = dxl_read(&bus, 7, 36, 2, d, &err8);
-  tap_ok(rc == 0 && dxl_get16(d) == 0x1234 && err8 == DXL1_ERR_OVERLOAD &&
+  check(rc == 0 && dxl_get16(d) == 0x1234 && err8 == DXL1_ERR_OVERLOAD &&
          bus.stats.status_errors == 1, "1.0 read returns data and error bits");
-  tap_bytes(last_inst, last_inst_len, (const uint8_t[]){ 0xFF, 0xFF, 7, 4, 2, 36, 2, 0xCC }, 8,
+  check_bytes(last_inst, last_inst_len, (const uint8_t[]){ 0xFF, 0xFF, 7, 4, 2, 36, 2, 0xCC }, 8,
             "1.0 read instruction on the wire");
 
   /* ---- corrupt answer, then nothing: timeout */
@@ -126,20 +126,20 @@ int main(void) {
   add_status(step(), 1, 7, 0, (const uint8_t[]){ 1, 2 }, 2, 1);
   uint64_t c0 = bus.stats.corrupt, t0 = bus.stats.timeouts;
   rc = dxl_read(&bus, 7, 36, 2, d, &err8);
-  tap_ok(rc == DXL_COMM_RX_TIMEOUT && bus.stats.corrupt == c0 + 1 && bus.stats.timeouts == t0 + 1,
+  check(rc == DXL_COMM_RX_TIMEOUT && bus.stats.corrupt == c0 + 1 && bus.stats.timeouts == t0 + 1,
          "corrupt answer counted and skipped, read times out");
 
   /* ---- no answer at all */
   script_reset(1);
   step();
   rc = dxl_read(&bus, 7, 36, 2, d, &err8);
-  tap_ok(rc == DXL_COMM_RX_TIMEOUT, "missing servo times out");
+  check(rc == DXL_COMM_RX_TIMEOUT, "missing servo times out");
 
   /* ---- write waits for the status */
   script_reset(1);
   add_status(step(), 1, 7, 0, NULL, 0, 0);
   rc = dxl_write(&bus, 7, 30, (const uint8_t[]){ 0x00, 0x08 }, 2, &err8);
-  tap_ok(rc == 0, "1.0 write acknowledged");
+  check(rc == 0, "1.0 write acknowledged");
 
   /* ---- sync write: one broadcast packet, no answer */
   script_reset(1);
@@ -148,7 +148,7 @@ int main(void) {
   const uint8_t gp[6] = { 0x00, 0x08, 0x10, 0x08, 0x20, 0x08 };
   rc = dxl_sync_write(&bus, 30, 2, ids, 3, gp);
   usleep(20000);
-  tap_bytes(last_inst, last_inst_len,
+  check_bytes(last_inst, last_inst_len,
             (const uint8_t[]){ 0xFF, 0xFF, 0xFE, 0x0D, 0x83, 30, 2, 1, 0x00, 0x08, 2, 0x10, 0x08, 3,
                                0x20, 0x08, 0x03 }, 17, "1.0 sync write on the wire");
 
@@ -165,10 +165,10 @@ int main(void) {
   dxl_bulk_item items[3] = { { 1, 36, 2, o1, 0, 0 }, { 2, 36, 2, o2, 0, 0 }, { 3, 36, 4, o3, 0, 0 } };
   dxl_bus_stats s0 = bus.stats;
   rc = dxl_bulk_read(&bus, items, 3);
-  tap_ok(rc == 2 && items[0].result == DXL_COMM_RX_TIMEOUT && items[1].result == 0 &&
+  check(rc == 2 && items[0].result == DXL_COMM_RX_TIMEOUT && items[1].result == 0 &&
          items[2].result == 0 && dxl_get16(o2) == 0x0222 && dxl_get32(o3) == 0x04440333,
          "1.0 bulk read: answers matched by id, a skipped id marked missing");
-  tap_ok(bus.stats.misaddressed == s0.misaddressed + 1 && bus.stats.corrupt == s0.corrupt + 1 &&
+  check(bus.stats.misaddressed == s0.misaddressed + 1 && bus.stats.corrupt == s0.corrupt + 1 &&
          bus.stats.timeouts == s0.timeouts + 1, "misaddressed, corrupt and missing counted");
 
   /* ---- out of order: 1, 1 again, 3, 2 (late) */
@@ -180,7 +180,7 @@ int main(void) {
   add_status(k, 1, 2, 0, (const uint8_t[]){ 2, 0 }, 2, 0);
   s0 = bus.stats;
   rc = dxl_bulk_read(&bus, items, 3);
-  tap_ok(rc == 2 && items[1].result == DXL_COMM_RX_TIMEOUT &&
+  check(rc == 2 && items[1].result == DXL_COMM_RX_TIMEOUT &&
          bus.stats.out_of_order == s0.out_of_order + 1,
          "duplicate answer counted as out of order and skipped");
 
@@ -191,7 +191,7 @@ int main(void) {
   add_status(step(), 2, 1, 0, (const uint8_t[]){ 0xFC, 0x03, 45 }, 3, 0);
   uint8_t fw = 0;
   rc = dxl_ping(&bus, 1, &model, &fw, &err8);
-  tap_ok(rc == 0 && model == 1020 && fw == 45, "2.0 ping: model 1020 (XM430-W350), firmware");
+  check(rc == 0 && model == 1020 && fw == 45, "2.0 ping: model 1020 (XM430-W350), firmware");
   script_reset(2);
   k = step();
   add_status(k, 2, 1, 0, (const uint8_t[]){ 0xFF, 0xFF, 0xFD, 0x01 }, 4, 0);
@@ -199,9 +199,9 @@ int main(void) {
   uint8_t p1[4], p2[4];
   dxl_bulk_item sr[2] = { { 1, 0, 0, p1, 0, 0 }, { 2, 0, 0, p2, 0, 0 } };
   rc = dxl_sync_read(&bus, 132, 4, sr, 2);
-  tap_ok(rc == 2 && dxl_get32(p1) == 0x01FDFFFF && dxl_get32(p2) == 0x800 &&
+  check(rc == 2 && dxl_get32(p1) == 0x01FDFFFF && dxl_get32(p2) == 0x800 &&
          sr[1].error == DXL2_ERR_ALERT, "2.0 sync read: stuffed data and alert bit");
-  tap_bytes(last_inst, last_inst_len,
+  check_bytes(last_inst, last_inst_len,
             (const uint8_t[]){ 0xFF, 0xFF, 0xFD, 0x00, 0xFE, 0x09, 0x00, 0x82, 0x84, 0x00, 0x04,
                                0x00, 0x01, 0x02, 0xCE, 0xFA }, 16,
             "2.0 sync read on the wire (e-Manual example)");
@@ -212,9 +212,9 @@ int main(void) {
   uint8_t b1[2], b2[6];
   dxl_bulk_item br[2] = { { 1, 132, 2, b1, 0, 0 }, { 200, 30, 6, b2, 0, 0 } };
   rc = dxl_bulk_read(&bus, br, 2);
-  tap_ok(rc == 2 && b2[5] == 6, "2.0 bulk read of two lengths");
+  check(rc == 2 && b2[5] == 6, "2.0 bulk read of two lengths");
   dxl_bus_init(&bus, port, 1);
-  tap_ok(dxl_sync_read(&bus, 132, 4, sr, 2) == DXL_COMM_NOT_AVAILABLE, "1.0 has no sync read");
+  check(dxl_sync_read(&bus, 132, 4, sr, 2) == DXL_COMM_NOT_AVAILABLE, "1.0 has no sync read");
 
   /* ---- the port disappears */
   dxl_bus_init(&bus, port, 1);
@@ -222,10 +222,10 @@ int main(void) {
   pthread_join(th, NULL);
   close(master_fd);
   rc = dxl_read(&bus, 7, 36, 2, d, &err8);
-  tap_ok(rc < 0 && !dxl_port_is_open(port) && bus.stats.port_errors >= 1,
+  check(rc < 0 && !dxl_port_is_open(port) && bus.stats.port_errors >= 1,
          "a lost port is reported and closed");
   close(slave);
-  tap_ok(dxl_port_reopen(port, err, sizeof err) < 0 && strlen(err) > 0,
+  check(dxl_port_reopen(port, err, sizeof err) < 0 && strlen(err) > 0,
          "reopening a vanished port fails with a message");
   dxl_port_close(port);
 
@@ -233,6 +233,6 @@ int main(void) {
   dxl_usb_info usb[4];
   int nu = dxl_usb_find(usb, 4, err, sizeof err);
   printf("# USB adapters found: %d\n", nu);
-  tap_ok(nu >= 0, "USB adapter look-up returns cleanly");
+  check(nu >= 0, "USB adapter look-up returns cleanly");
   return tap_done();
 }

@@ -5,6 +5,7 @@
 // with every offset it must handle (hip yaw axis off the hip centre, knee off the hip-ankle line,
 // sole off the ankle, mirrored axis signs), and FK(IK(x)) = x is checked over sampled poses.
 #include "kinematics/kinematics.h"
+#include "tap.h"
 
 #include <cmath>
 #include <cstdio>
@@ -14,13 +15,7 @@
 
 namespace {
 
-int g_test = 0, g_fail = 0;
-
-void ok(bool cond, const char *name, const char *detail = "") {
-  g_test++;
-  if (!cond) g_fail++;
-  std::printf("%sok %d - %s%s%s\n", cond ? "" : "not ", g_test, name, detail[0] ? " # " : "", detail);
-}
+void ok(bool cond, const char *name, const char *detail = "") { tap_ok(cond, name, detail); }
 
 struct Geometry {
   // joint order: 0 head_pan 1 head_tilt | 2..4 left arm | 5..10 left leg | 11..16 right leg | 17..19 right arm
@@ -380,6 +375,5 @@ int main() {
   rc = kin_model_create(bind(badg), &m, err, sizeof err);
   ok(rc == KIN_EMODEL && std::strstr(err, "mass"), "NaN mass: refused", err);
 
-  std::printf("1..%d\n", g_test);
-  return g_fail ? 1 : 0;
+  return tap_done();
 }

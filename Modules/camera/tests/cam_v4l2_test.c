@@ -3,6 +3,7 @@
  * negotiation, controls, buffer queueing and mapping, frames delivered intact (also with padded
  * lines), short frames, a device that disappears mid-run and comes back, and bad devices. TAP. */
 #include "camera/camera.h"
+#include "tap.h"
 
 #include <dlfcn.h>
 #include <linux/videodev2.h>
@@ -17,13 +18,6 @@
 
 #define DEV "/dev/fakevideo-hrp-test"
 
-static int ntest = 0, nfail = 0;
-static void check(int cond, const char *name) {
-  ntest++;
-  if (!cond) nfail++;
-  printf("%s %d - %s\n", cond ? "ok" : "not ok", ntest, name);
-  fflush(stdout);
-}
 
 static void (*set_present)(int);
 static void (*short_frames)(int);
@@ -207,10 +201,9 @@ int main(int argc, char **argv) {
   set_pad = (void (*)(int))dlsym(RTLD_DEFAULT, "fake_uvc_set_pad");
   fake_get = (int (*)(const char *))dlsym(RTLD_DEFAULT, "fake_uvc_get");
   check(set_present && short_frames && set_pad && fake_get, "fake UVC shim preloaded");
-  if (!fake_get) { printf("1..%d\n", ntest); return 1; }
+  if (!fake_get) { tap_done(); return 1; }
   test_lifecycle();
   test_padded_lines();
   test_bad_devices();
-  printf("1..%d\n", ntest);
-  return nfail ? 1 : 0;
+  return tap_done();
 }

@@ -1,6 +1,7 @@
 /* Unit tests of libhrpimg: LUT files, labelling, block OR, regions, colour statistics.
  * Each function is checked against a slow, obvious reference on seeded random images. TAP. */
 #include "imageproc/imageproc.h"
+#include "tap.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -8,13 +9,6 @@
 #include <string.h>
 #include <unistd.h>
 
-static int ntest = 0, nfail = 0;
-static void check(int cond, const char *name) {
-  ntest++;
-  if (!cond) nfail++;
-  printf("%s %d - %s\n", cond ? "ok" : "not ok", ntest, name);
-  fflush(stdout);
-}
 
 static uint32_t rng_state = 12345;
 static uint32_t rnd(void) {
@@ -294,6 +288,5 @@ int main(void) {
   test_block_or();
   test_regions();
   test_stats();
-  printf("1..%d\n", ntest);
-  return nfail ? 1 : 0;
+  return tap_done();
 }

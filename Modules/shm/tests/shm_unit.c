@@ -1,5 +1,6 @@
 /* Unit tests of the shm module (TAP). Uses ROBOT_ID from the environment (test runner). */
 #include "shm/shm.h"
+#include "tap.h"
 
 #include <errno.h>
 #include <signal.h>
@@ -12,13 +13,6 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-static int ntest, nfail;
-static void check(int cond, const char *name) {
-  ntest++;
-  if (!cond) nfail++;
-  printf("%s %d - %s\n", cond ? "ok" : "not ok", ntest, name);
-  fflush(stdout);
-}
 
 static char dir[256];
 static const char *write_file(const char *name, const char *text) {
@@ -241,9 +235,8 @@ int main(void) {
   test_seqlock_consistency();
   test_dead_writer();
   test_default_schema();
-  printf("1..%d\n", ntest);
   char cmd[300];
   snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
-  if (system(cmd) != 0) return 1;
-  return nfail ? 1 : 0;
+  const int status = tap_done();
+  return system(cmd) != 0 ? 1 : status;
 }
