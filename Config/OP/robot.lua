@@ -6,12 +6,16 @@
 local here = debug.getinfo(1, 'S').source:match('^@(.*)/[^/]*$') or 'Config/OP'
 local family = dofile(here .. '/../Common/op_family.lua')
 
+local op3 = (os.getenv('OP_ROBOT') or 'darwin') == 'op3'
+
 return {
-  name = (os.getenv('OP_ROBOT') or 'darwin') == 'op3' and 'op3' or 'darwin-op',
+  name = op3 and 'op3' or 'darwin-op',
   joints = family.joints,     -- Config/Common/op_family.lua
   groups = family.groups,
   limits = family.limits,
   urdf = 'Config/Sim/op3.urdf',
+  -- kinematic and mass model: the OP3's is the simulated robot's; the DARwIn-OP's is kinematics.lua
+  kinematics = op3 and dofile(here .. '/../Sim/robot.lua').kinematics or dofile(here .. '/kinematics.lua'),
   -- the DCM's control period, s (125 Hz)
   period = 0.008,
 }
