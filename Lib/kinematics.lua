@@ -243,25 +243,21 @@ function Model:legs_ik(lpose, rpose, q)
   return flags
 end
 
--- Leg FK: 6 angles -> foot pose {x, y, z, roll, pitch, yaw}, flags.
-function Model:leg_fk(side, q6, out)
+-- a limb's FK through the C function fk: n angles in, nout numbers out
+local function limb_fk(model, fk, side, q, n, nout, out)
   local s = side_of(side)
-  for k = 0, 5 do b_in[k] = q6[k + 1] end
-  local flags = C.kin_leg_fk(self.cm, s, b_in, b_out, nil)
+  for k = 0, n - 1 do b_in[k] = q[k + 1] end
+  local flags = fk(model.cm, s, b_in, b_out, nil)
   out = out or {}
-  for k = 1, 6 do out[k] = b_out[k - 1] end
+  for k = 1, nout do out[k] = b_out[k - 1] end
   return out, flags
 end
 
+-- Leg FK: 6 angles -> foot pose {x, y, z, roll, pitch, yaw}, flags.
+function Model:leg_fk(side, q6, out) return limb_fk(self, C.kin_leg_fk, side, q6, 6, 6, out) end
+
 -- Arm FK: 3 angles -> hand position {x, y, z}, flags.
-function Model:arm_fk(side, q3, out)
-  local s = side_of(side)
-  for k = 0, 2 do b_in[k] = q3[k + 1] end
-  local flags = C.kin_arm_fk(self.cm, s, b_in, b_out, nil)
-  out = out or {}
-  for k = 1, 3 do out[k] = b_out[k - 1] end
-  return out, flags
-end
+function Model:arm_fk(side, q3, out) return limb_fk(self, C.kin_arm_fk, side, q3, 3, 3, out) end
 
 -- Arm IK: hand position {3} -> q3 (start guess in, solution out; zeros if nil), flags.
 function Model:arm_ik(side, pos, q3)

@@ -116,6 +116,22 @@ Pose chain_pose(const kin_model *m, int last, const double *qfull, int *flags) {
   return T;
 }
 
+// Every joint's link pose (rotation and the displacement of reference points) for all angles q;
+// parents come before their children in the joint list.
+std::vector<Pose> all_poses(const kin_model *m, const double *q, int *flags) {
+  const int n = (int)m->joints.size();
+  std::vector<Pose> T(n);
+  for (int j = 0; j < n; j++) {
+    const Joint &J = m->joints[j];
+    Matrix3d E = rot_axis(J.axis, clean(q[j], flags));
+    Vector3d e = J.anchor - E * J.anchor;
+    Pose P = J.parent < 0 ? Pose{Matrix3d::Identity(), Vector3d::Zero()} : T[J.parent];
+    T[j].p = P.R * e + P.p;
+    T[j].R = P.R * E;
+  }
+  return T;
+}
+
 // Same as chain_pose for a limb given by its own angles (limb order) instead of all joints.
 Pose limb_pose(const kin_model *m, const int *idx, int n, const double *qlimb, int *flags) {
   double qfull[64] = {0};
@@ -335,15 +351,9 @@ double kin_total_mass(const kin_model *m) { return m ? m->total_mass : 0.0; }
 int kin_link_poses(const kin_model *m, const double *q, double *out) {
   if (!m || !q || !out) return KIN_EINVAL;
   int flags = 0;
-  int n = (int)m->joints.size();
-  std::vector<Pose> T(n);
+  const int n = (int)m->joints.size();
+  const std::vector<Pose> T = all_poses(m, q, &flags);
   for (int j = 0; j < n; j++) {
-    const Joint &J = m->joints[j];
-    Matrix3d E = rot_axis(J.axis, clean(q[j], &flags));
-    Vector3d e = J.anchor - E * J.anchor;
-    Pose P = J.parent < 0 ? Pose{Matrix3d::Identity(), Vector3d::Zero()} : T[J.parent];
-    T[j].p = P.R * e + P.p;
-    T[j].R = P.R * E;
     put_rot(T[j].R, out + 12 * j);
     Vector3d o = T[j].R * m->origin + T[j].p - m->origin;  // link frame origin, torso frame
     for (int k = 0; k < 3; k++) out[12 * j + 9 + k] = o[k];
@@ -409,18 +419,10 @@ int kin_camera_pose(const kin_model *m, const double *q, const double *rpy, doub
 int kin_com(const kin_model *m, const double *q, double *com) {
   if (!m || !q || !com) return KIN_EINVAL;
   int flags = 0;
-  int n = (int)m->joints.size();
-  std::vector<Pose> T(n);
+  const int n = (int)m->joints.size();
+  const std::vector<Pose> T = all_poses(m, q, &flags);
   Vector3d sum = m->torso_mass * m->torso_com;
-  for (int j = 0; j < n; j++) {
-    const Joint &J = m->joints[j];
-    Matrix3d E = rot_axis(J.axis, clean(q[j], &flags));
-    Vector3d e = J.anchor - E * J.anchor;
-    Pose P = J.parent < 0 ? Pose{Matrix3d::Identity(), Vector3d::Zero()} : T[J.parent];
-    T[j].p = P.R * e + P.p;
-    T[j].R = P.R * E;
-    sum += J.mass * (T[j].R * J.com + T[j].p);
-  }
+  for (int j = 0; j < n; j++) sum += m->joints[j].mass * (T[j].R * m->joints[j].com + T[j].p);
   Vector3d c = sum / m->total_mass - m->origin;
   for (int k = 0; k < 3; k++) com[k] = c[k];
   return flags;
