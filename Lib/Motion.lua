@@ -23,11 +23,7 @@ local index = {}
 for i, s in ipairs(M.STATES) do index[s] = i - 1 end
 M.INDEX = index
 
-local block
-local function motion()
-  block = block or shm.open('motion')
-  return block
-end
+local motion = shm.lazy('motion')
 
 -- Asks the motion process for a motion; errors on an unknown name.
 function M.request(name)

@@ -15,11 +15,7 @@ local walkgen = require('Motion.walk')
 
 local M = {}
 
-local block
-local function motion()
-  block = block or shm.open('motion')
-  return block
-end
+local motion = shm.lazy('motion')
 
 local params
 local function config()

@@ -126,6 +126,16 @@ function M.open(name, opts)
   return b
 end
 
+-- A function returning block `name`, opened at its first call (modules that are loaded before
+-- the DCM has created the blocks, e.g. in the REPL).
+function M.lazy(name, opts)
+  local b
+  return function()
+    b = b or M.open(name, opts)
+    return b
+  end
+end
+
 -- Removes a block's segment (existing mappings stay valid). True if it existed.
 function M.unlink(name, robot)
   cache[(robot or M.robot_id()) .. '/' .. name] = nil
