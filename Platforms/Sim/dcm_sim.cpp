@@ -2,32 +2,36 @@
 // camera.image for every simulated robot (ROBOT_ID, ROBOT_ID+1, ...) from one ODE world.
 //
 //   dcm_sim [--lockstep] [--seed N] [--robots N | --ids A,B,..] [--duration SIM_SECONDS]
-//           [--no-camera] [--report WALL_SECONDS] [--quiet]
+//           [--no-camera] [--report WALL_SECONDS] [--quiet] [--profile]
 //
 // Pacing: real time by default (absolute deadlines, one tick per control period). With --lockstep
 // the DCM publishes dcm.sensor for tick N, sets sync.tick = N and wakes the participants, then waits
 // until every live participant whose wake_tick <= N reports done_tick >= N (Lib/lockstep.lua), and
 // only then reads dcm.actuator and steps: runs are deterministic and as fast as the machine allows.
 // Sim requests (Lib/Sim.lua) are applied between ticks, also while waiting on participants.
+//
+// Camera: after the step to an exposure tick the physics thread takes a snapshot (camera pose, link
+// poses, ball); once the tick is published the render thread (camera_worker.h) gets it, renders the
+// frame and copies it into camera.image while the physics steps to the delivery tick. --profile
+// prints at exit the wall time per tick of each phase and the CPU seconds per simulated second.
 #include <signal.h>
+#include <sys/resource.h>
 #include <time.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <condition_variable>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <deque>
 #include <memory>
-#include <mutex>
 #include <stdexcept>
 #include <string>
-#include <thread>
 #include <vector>
 
+#include "camera_worker.h"
 #include "render.h"
 #include "shm/shm.h"
 #include "world.h"
@@ -40,7 +44,7 @@ const double kSpinSeconds = 100e-6;
 void on_signal(int) { g_stop = true; }
 
 struct Options {
-  bool lockstep = false, camera = true, quiet = false;
+  bool lockstep = false, camera = true, quiet = false, profile = false;
   uint64_t seed = 1;
   std::vector<int> ids;
   double duration = -1;
@@ -50,7 +54,7 @@ struct Options {
 void usage() {
   fprintf(stderr,
           "usage: dcm_sim [--lockstep] [--seed N] [--robots N | --ids A,B,..] [--duration SIM_S]\n"
-          "               [--no-camera] [--report WALL_S] [--quiet]\n");
+          "               [--no-camera] [--report WALL_S] [--quiet] [--profile]\n");
 }
 
 // Fields of one block, looked up once.
@@ -69,12 +73,17 @@ shm_block *open_block(const shm_schema *s, const char *name, int id) {
   return b;
 }
 
-struct Frame {                  // a camera frame being rendered or waiting for delivery
+// A camera frame from its exposure to its delivery. The physics thread takes the snapshot at
+// exposure; after publishing the tick it hands the frame to the render worker, which renders it and,
+// while the physics steps to the delivery tick, copies it into camera.image.
+struct Frame {
+  uint32_t number;              // camera.image frame (1, 2, ... per robot)
   uint32_t deliver_tick;
-  double time;
+  double time;                  // exposure
   double head[2];
+  sim::CameraWorker::Job job;
   std::vector<uint8_t> img;
-  bool done = false;
+  uint64_t render = 0, copy = 0;   // the worker's tickets (0: not queued yet)
 };
 
 // One simulated robot's blocks.
@@ -114,73 +123,50 @@ struct RobotIO {
   uint32_t nan_count = 0, wd_trips = 0;
   double button_until[2] = {-1, -1};
   double next_frame = 0;
-  uint32_t frames = 0;
-  std::deque<std::shared_ptr<Frame>> pending;
+  uint32_t exposed = 0;
+  std::deque<Frame> pending;
   std::vector<std::vector<uint8_t>> spare;   // image buffers of delivered frames, for reuse
 };
 
-// A worker thread that renders frames in order of submission.
-class RenderWorker {
- public:
-  explicit RenderWorker(const sim::Renderer &r) : ren_(r), th_([this] { run(); }) {}
-  ~RenderWorker() {
-    {
-      std::lock_guard<std::mutex> l(mu_);
-      quit_ = true;
-    }
-    cv_.notify_all();
-    th_.join();
-  }
-  struct Job {
-    std::shared_ptr<Frame> frame;
-    sim::Camera cam;
-    std::shared_ptr<const std::vector<sim::Solid>> solids;
-    int self;
-    sim::Vec3 ball;
-    double radius;
-    uint32_t seq;
-  };
-  void submit(Job j) {
-    {
-      std::lock_guard<std::mutex> l(mu_);
-      jobs_.push_back(std::move(j));
-    }
-    cv_.notify_all();
-  }
-  void wait(const std::shared_ptr<Frame> &f) {
-    std::unique_lock<std::mutex> l(mu_);
-    done_cv_.wait(l, [&] { return f->done; });
-  }
-  std::vector<int> hide;
-
- private:
-  void run() {
-    for (;;) {
-      Job j;
-      {
-        std::unique_lock<std::mutex> l(mu_);
-        cv_.wait(l, [&] { return quit_ || !jobs_.empty(); });
-        if (jobs_.empty()) return;
-        j = jobs_.front();
-        jobs_.pop_front();
-      }
-      ren_.render(j.cam, *j.solids, j.self, hide, j.ball, j.radius, j.seq, j.frame->img.data());
-      {
-        std::lock_guard<std::mutex> l(mu_);
-        j.frame->done = true;
-      }
-      done_cv_.notify_all();
-    }
-  }
-  const sim::Renderer &ren_;
-  std::mutex mu_;
-  std::condition_variable cv_, done_cv_;
-  std::deque<Job> jobs_;
-  bool quit_ = false;
-  std::thread th_;
-};
-
 double now() { return shm_now(); }
+
+double cpu_seconds(clockid_t clock) {
+  struct timespec ts;
+  clock_gettime(clock, &ts);
+  return ts.tv_sec + 1e-9 * ts.tv_nsec;
+}
+
+// --profile: wall time of each phase of a tick on the physics thread, and CPU time per simulated
+// second (the figure that depends least on what else the machine is doing).
+struct Profile {
+  enum Phase { kWait, kCommands, kPhysics, kFrames, kExpose, kPublish, kHandOver, kCount };
+  double sum[kCount] = {};
+  double mark = 0;
+  void start() { mark = now(); }
+  void lap(Phase p) {
+    const double t = now();
+    sum[p] += t - mark;
+    mark = t;
+  }
+  void print(uint32_t ticks, double sim_seconds) const {
+    static const char *names[kCount] = {"wait for participants", "commands", "physics", "deliver frames",
+                                        "expose frames", "publish", "hand frames to the worker"};
+    double total = 0;
+    for (int k = 0; k < kCount; k++) total += sum[k];
+    if (ticks == 0 || !(sim_seconds > 0) || !(total > 0)) return;
+    printf("dcm_sim profile: %.2f s simulated in %.2f s wall (real-time factor %.2f); us per tick:", sim_seconds,
+           total, sim_seconds / total);
+    for (int k = 0; k < kCount; k++) printf("%s %s %.1f", k ? "," : "", names[k], 1e6 * sum[k] / ticks);
+    printf("\n");
+    struct rusage ru;
+    getrusage(RUSAGE_SELF, &ru);
+    const double proc = ru.ru_utime.tv_sec + 1e-6 * ru.ru_utime.tv_usec + ru.ru_stime.tv_sec + 1e-6 * ru.ru_stime.tv_usec;
+    const double main_cpu = cpu_seconds(CLOCK_THREAD_CPUTIME_ID);
+    printf("dcm_sim profile: CPU s per simulated s: %.4f (physics thread %.4f, camera thread %.4f)\n",
+           proc / sim_seconds, main_cpu / sim_seconds, (proc - main_cpu) / sim_seconds);
+    fflush(stdout);
+  }
+};
 
 void open_robot(const shm_schema *schema, int id, int nj, const sim::Params &p, RobotIO *io) {
   io->id = id;
@@ -337,6 +323,73 @@ void publish_sensors(sim::World &w, int r, RobotIO &io, uint32_t tick, const sim
   shm_write_end(io.sensor);
 }
 
+// Camera of robot r after the step to `tick`: if a frame is due, its snapshot (`scene` is taken
+// once per tick for all robots) and its place in the queue of frames to deliver.
+void expose(const sim::World &w, int r, RobotIO &x, uint32_t tick, double t_offset, const sim::Params &p,
+            const std::vector<int> &head_idx, sim::Scene *scene, bool *have_scene) {
+  if (w.time() + 1e-9 < x.next_frame) return;
+  x.next_frame += 1.0 / p.cam_rate;
+  if (!*have_scene) {
+    w.snapshot(scene);
+    *have_scene = true;
+  }
+  x.pending.emplace_back();
+  Frame &f = x.pending.back();
+  f.number = ++x.exposed;
+  f.deliver_tick = tick + (uint32_t)std::max(0, p.cam_latency_ticks);
+  f.time = t_offset + w.time();
+  const std::vector<double> q = w.joint_positions(r);
+  f.head[0] = head_idx[0] >= 0 ? q[head_idx[0]] : 0;
+  f.head[1] = head_idx[1] >= 0 ? q[head_idx[1]] : 0;
+  if (!x.spare.empty()) {
+    // a buffer that is already mapped: no page faults and zeroing on the physics thread
+    f.img = std::move(x.spare.back());
+    x.spare.pop_back();
+  }
+  f.img.resize(x.cam_bytes);
+  sim::CameraWorker::Job &j = f.job;
+  w.camera_pose(r, &j.cam.pos, &j.cam.rot);
+  j.cam.width = p.cam_width;
+  j.cam.height = p.cam_height;
+  j.cam.fovy = p.cam_fovy;
+  j.scene = *scene;
+  j.self = r;
+  j.seq = f.number + 7919u * (uint32_t)r;
+  j.out = f.img.data();
+}
+
+// Once tick `tick` is published: hands the new frames to the worker, and the frames due at the
+// next tick, whose copy into camera.image the worker then makes while the physics steps. Called
+// while the participants work on the tick, so its system calls cost the physics thread nothing.
+void hand_over(sim::CameraWorker &wk, RobotIO &x, uint32_t tick) {
+  for (Frame &f : x.pending) {
+    if (!f.render) f.render = wk.submit(std::move(f.job));
+    if (!f.copy && f.deliver_tick <= tick + 1) {
+      // camera.image is written by this worker job only (the physics thread never touches it)
+      f.copy = wk.post([&x, src = f.img.data(), n = f.number, t = f.time, h0 = f.head[0], h1 = f.head[1]] {
+        shm_write_begin(x.cam);
+        memcpy(x.c_yuyv, src, x.cam_bytes);
+        *x.c_time = t;
+        x.c_head[0] = h0;
+        x.c_head[1] = h1;
+        *x.c_frame = n;
+        shm_write_end(x.cam);
+      });
+    }
+  }
+}
+
+// Returns once every frame due at `tick` is in camera.image (before the tick's sensors appear).
+void deliver(sim::CameraWorker &wk, RobotIO &x, uint32_t tick) {
+  while (!x.pending.empty() && x.pending.front().deliver_tick <= tick) {
+    Frame &f = x.pending.front();
+    if (!f.copy) hand_over(wk, x, tick - 1);   // not handed over yet (no latency)
+    wk.wait(f.copy);
+    x.spare.push_back(std::move(f.img));   // copied: the worker is done with it
+    x.pending.pop_front();
+  }
+}
+
 }  // namespace
 
 int main(int argc, char **argv) {
@@ -365,6 +418,7 @@ int main(int argc, char **argv) {
     else if (a == "--no-camera") o.camera = false;
     else if (a == "--report") o.report = atof(next());
     else if (a == "--quiet") o.quiet = true;
+    else if (a == "--profile") o.profile = true;
     else if (a == "-h" || a == "--help") {
       usage();
       return 0;
@@ -466,12 +520,12 @@ int main(int argc, char **argv) {
     fflush(stdout);
   }
 
-  std::unique_ptr<RenderWorker> worker;
+  std::unique_ptr<sim::CameraWorker> worker;
   if (o.camera) {
-    worker.reset(new RenderWorker(*ren));
-    worker->hide = {m.link_index("head_pan_link"), m.link_index("head_tilt_link")};
+    std::vector<int> hide = {m.link_index("head_pan_link"), m.link_index("head_tilt_link")};
     int cl = m.frame_index(p.camera_frame);
-    if (cl >= 0) worker->hide.push_back(m.frames[cl].link);
+    if (cl >= 0) hide.push_back(m.frames[cl].link);
+    worker.reset(new sim::CameraWorker(w, *ren, hide));
   }
   std::vector<int> head_idx = {-1, -1};
   for (int j = 0; j < nj; j++) {
@@ -487,8 +541,11 @@ int main(int argc, char **argv) {
   double deadline = wall0;
   uint32_t cycles = 0, missed = 0;
   uint32_t dropped = 0;
+  Profile prof;
+  const double sim0 = w.time();
 
   while (!g_stop) {
+    prof.start();
     // ---- wait: lockstep participants or the wall clock
     if (o.lockstep) {
       for (size_t r = 0; r < io.size(); r++) {
@@ -496,6 +553,10 @@ int main(int argc, char **argv) {
         shm_store_release_u32(x.y_tick, tick);
         shm_futex_wake(x.y_tick);
       }
+      prof.lap(Profile::kPublish);
+      for (RobotIO &x : io)
+        if (worker) hand_over(*worker, x, tick);
+      prof.lap(Profile::kHandOver);
       // no participant anywhere: hold the clock until one joins (a lockstep run starts on a
       // defined tick and burns no CPU meanwhile)
       for (;;) {
@@ -503,7 +564,9 @@ int main(int argc, char **argv) {
         for (size_t r = 0; r < io.size() && !any; r++) {
           for (int k = 0; k < io[r].nsync && !any; k++) {
             const int pid = __atomic_load_n(&io[r].y_pid[k], __ATOMIC_ACQUIRE);
-            if (pid != 0 && shm_pid_alive(pid)) any = true;
+            // one that answered the last tick needs no system call to prove it is alive
+            const bool answered = __atomic_load_n(&io[r].y_done[k], __ATOMIC_ACQUIRE) + 1 >= tick;
+            if (pid != 0 && (answered || shm_pid_alive(pid))) any = true;
           }
         }
         if (any || g_stop) break;
@@ -511,6 +574,7 @@ int main(int argc, char **argv) {
           while (apply_request(w, (int)r, io[r])) publish_truth(w, (int)r, io[r], rtf);
         }
         shm_futex_wait(io[0].y_done_count, shm_load_acquire_u32(io[0].y_done_count), 0.02);
+        prof.start();   // time without any participant is not the DCM's
       }
       for (size_t r = 0; r < io.size() && !g_stop; r++) {
         RobotIO &x = io[r];
@@ -546,6 +610,9 @@ int main(int argc, char **argv) {
         }
       }
     } else {
+      for (RobotIO &x : io)
+        if (worker) hand_over(*worker, x, tick);
+      prof.lap(Profile::kHandOver);
       deadline += p.period;
       double late = now() - deadline;
       if (late < 0) {
@@ -562,6 +629,7 @@ int main(int argc, char **argv) {
       }
     }
     if (g_stop) break;
+    prof.lap(Profile::kWait);
 
     // ---- commands and requests, then one control period of physics
     for (size_t r = 0; r < io.size(); r++) {
@@ -575,75 +643,20 @@ int main(int argc, char **argv) {
       }
       while (apply_request(w, (int)r, x)) {}
     }
+    prof.lap(Profile::kCommands);
     w.step();
     tick++;
     cycles++;
+    prof.lap(Profile::kPhysics);
 
     // ---- camera: expose now, deliver latency_ticks later
-    for (size_t r = 0; r < io.size() && worker; r++) {
-      RobotIO &x = io[r];
-      while (!x.pending.empty() && x.pending.front()->deliver_tick <= tick) {
-        std::shared_ptr<Frame> f = x.pending.front();
-        x.pending.pop_front();
-        worker->wait(f);
-        shm_write_begin(x.cam);
-        memcpy(x.c_yuyv, f->img.data(), x.cam_bytes);
-        *x.c_time = f->time;
-        x.c_head[0] = f->head[0];
-        x.c_head[1] = f->head[1];
-        *x.c_frame = ++x.frames;
-        shm_write_end(x.cam);
-        x.spare.push_back(std::move(f->img));   // rendered and copied: the worker is done with it
-      }
-    }
     if (worker) {
-      std::shared_ptr<std::vector<sim::Solid>> solids;
-      for (size_t r = 0; r < io.size(); r++) {
-        RobotIO &x = io[r];
-        if (w.time() + 1e-9 < x.next_frame) continue;
-        x.next_frame += 1.0 / p.cam_rate;
-        if (!solids) {
-          solids = std::make_shared<std::vector<sim::Solid>>();
-          w.solids(solids.get());
-        }
-        auto f = std::make_shared<Frame>();
-        f->deliver_tick = tick + (uint32_t)std::max(0, p.cam_latency_ticks);
-        f->time = t_offset + w.time();
-        std::vector<double> q = w.joint_positions((int)r);
-        f->head[0] = head_idx[0] >= 0 ? q[head_idx[0]] : 0;
-        f->head[1] = head_idx[1] >= 0 ? q[head_idx[1]] : 0;
-        if (!x.spare.empty()) {
-          // a buffer that is already mapped: no page faults and zeroing on the physics thread
-          f->img = std::move(x.spare.back());
-          x.spare.pop_back();
-        }
-        f->img.resize(x.cam_bytes);
-        RenderWorker::Job j;
-        j.frame = f;
-        w.camera_pose((int)r, &j.cam.pos, &j.cam.rot);
-        j.cam.width = p.cam_width;
-        j.cam.height = p.cam_height;
-        j.cam.fovy = p.cam_fovy;
-        j.solids = solids;
-        j.self = (int)r;
-        j.ball = w.ball_position();
-        j.radius = w.ball_radius();
-        j.seq = x.frames + (uint32_t)x.pending.size() + 1 + 7919u * (uint32_t)r;
-        x.pending.push_back(f);
-        worker->submit(j);
-        if (p.cam_latency_ticks <= 0) {
-          // no latency: deliver within this tick
-          worker->wait(f);
-          x.pending.pop_back();
-          shm_write_begin(x.cam);
-          memcpy(x.c_yuyv, f->img.data(), x.cam_bytes);
-          *x.c_time = f->time;
-          x.c_head[0] = f->head[0];
-          x.c_head[1] = f->head[1];
-          *x.c_frame = ++x.frames;
-          shm_write_end(x.cam);
-        }
-      }
+      bool have_scene = false;
+      sim::Scene scene;
+      for (size_t r = 0; r < io.size(); r++) expose(w, (int)r, io[r], tick, t_offset, p, head_idx, &scene, &have_scene);
+      prof.lap(Profile::kExpose);
+      for (RobotIO &x : io) deliver(*worker, x, tick);
+      prof.lap(Profile::kFrames);
     }
 
     // ---- publish: truth (and frames, above) before the sensors, so that a process woken by the
@@ -694,23 +707,24 @@ int main(int argc, char **argv) {
       *x.st_wd = x.wd_trips;
       shm_write_end(x.stats);
     }
+    prof.lap(Profile::kPublish);
     if (o.duration >= 0 && w.time() >= o.duration - 1e-9) break;
   }
 
   const double wall = now() - wall0;
+  if (o.profile) prof.print(cycles, w.time() - sim0);
   if (!o.quiet) {
     printf("dcm_sim: stopped at sim time %.3f s after %.2f s wall: real-time factor %.2f\n", w.time(), wall,
            wall > 0 ? w.time() / wall : 0.0);
   }
+  worker.reset();   // finishes what it was given (renders into x.pending, copies into camera.image)
   for (RobotIO &x : io) {
     *x.y_lockstep = 0;
     shm_futex_wake(x.y_tick);
-    for (auto &f : x.pending) worker->wait(f);
     x.pending.clear();
     shm_block *bs[] = {x.sensor, x.actuator, x.stats, x.sync, x.simb, x.cam};
     for (shm_block *b : bs) shm_block_close(b);
   }
-  worker.reset();
   shm_schema_free(schema);
   return 0;
 }

@@ -16,8 +16,8 @@
 namespace sim {
 
 struct Camera {
-  Vec3 pos;                 // field frame
-  Mat3 rot;                 // columns: optical axis, image-left, image-up (field frame)
+  Vec3 pos = Vec3::Zero();  // field frame
+  Mat3 rot = Mat3::Identity();   // columns: optical axis, image-left, image-up (field frame)
   int width = 640, height = 480;
   double fovy = 43.3 * M_PI / 180;
   double focal() const { return (height / 2.0) / std::tan(fovy / 2); }

@@ -707,20 +707,35 @@ void World::camera_pose(int r, Vec3 *pos, Mat3 *rot) const {
   }
 }
 
+void World::snapshot(Scene *s) const {
+  const size_t nl = m_.links.size();
+  s->link_pos.resize(robots_.size() * nl);
+  s->link_rot.resize(robots_.size() * nl);
+  for (size_t r = 0; r < robots_.size(); r++)
+    for (size_t i = 0; i < nl; i++) link_pose((int)r, (int)i, &s->link_pos[r * nl + i], &s->link_rot[r * nl + i]);
+  s->ball = ball_position();
+}
+
 void World::solids(std::vector<Solid> *out) const {
+  Scene s;
+  snapshot(&s);
+  solids(s, out);
+}
+
+void World::solids(const Scene &scene, std::vector<Solid> *out) const {
   out->clear();
   for (const Solid &s : goal_solids_) out->push_back(s);
-  for (int r = 0; r < nrobots(); r++) {
-    for (size_t i = 0; i < m_.links.size(); i++) {
-      Vec3 p;
-      Mat3 R;
-      link_pose(r, (int)i, &p, &R);
+  const size_t nl = m_.links.size();
+  for (size_t r = 0; r < scene.link_pos.size() / nl; r++) {
+    for (size_t i = 0; i < nl; i++) {
+      const Vec3 &p = scene.link_pos[r * nl + i];
+      const Mat3 &R = scene.link_rot[r * nl + i];
       const bool dark = i == 0 || m_.links[i].name.find("head") != std::string::npos;
       for (const Box &b : m_.links[i].boxes) {
         Solid s;
         box_solid(p + R * b.pos, R * b.rot, b.size, &s);
         if (dark) set_yuv(&s, 60, 128, 128); else set_yuv(&s, 120, 128, 128);
-        s.robot = r;
+        s.robot = (int)r;
         s.link = (int)i;
         out->push_back(s);
       }

@@ -68,6 +68,14 @@ struct Solid {
   int robot = -1, link = -1;        // owner, for hiding the camera's own head
 };
 
+// What the camera sees that moves, copied at the exposure tick: the link poses of every robot and
+// the ball. Cheap to take on the physics thread; the solids are built from it on the render thread.
+struct Scene {
+  std::vector<Vec3> link_pos;   // robot r, link i at [r * nlinks + i] (link frame origin, field frame)
+  std::vector<Mat3> link_rot;
+  Vec3 ball = Vec3::Zero();
+};
+
 class World {
  public:
   World(const Params &p, const Model &m, int nrobots, uint64_t seed);
@@ -105,6 +113,10 @@ class World {
   double ball_radius() const { return p_.ball_diameter / 2; }
   // Every solid the camera can see (goals; all robots' boxes), at their current poses.
   void solids(std::vector<Solid> *out) const;
+  // The same from a snapshot: reads only what never changes after construction (the model and the
+  // goals), so a render thread may call it while the physics steps.
+  void snapshot(Scene *s) const;
+  void solids(const Scene &s, std::vector<Solid> *out) const;
   // Joint positions of robot r in shm order (exact, not quantised).
   std::vector<double> joint_positions(int r) const;
   // Field-frame pose of a link of robot r.

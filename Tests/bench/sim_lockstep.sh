@@ -1,22 +1,33 @@
 #!/usr/bin/env bash
 # Benchmark: real-time factor of the sim in lockstep, one standing robot, the ball, the camera
 # rendering 640x480 at 30 Hz (of simulated time), with one participant that answers every tick
-# like the motion process. Also the world alone (no shm, no participant) with and without camera.
-# Prints figures; never fails on time.
+# like the motion process. Then where the time goes: the DCM's time per tick by phase, CPU seconds
+# per simulated second (less sensitive to what else runs on the machine than the wall clock), and
+# the world alone (no shm, no participant) with the camera on its worker thread, on the physics
+# thread (the two must give the same frames) and without camera. Prints figures; never fails on time.
 #   Tests/bench/sim_lockstep.sh [SIM_SECONDS]      (default 30)
 set -u
 cd "$(dirname "$0")/../.."
 source Run/env.sh
 S=${1:-30}
 echo "machine: $(nproc) cores, load average $(cut -d' ' -f1-3 /proc/loadavg)"
-build/bin/dcm_sim --lockstep --seed 1 --quiet &
+build/bin/dcm_sim --lockstep --seed 1 --quiet --profile >"${TMPDIR:-/tmp}/sim_lockstep_dcm.$$" &
 dcm=$!
-trap 'kill $dcm 2>/dev/null; wait $dcm 2>/dev/null; Run/shm remove >/dev/null 2>&1' EXIT
+trap 'kill $dcm 2>/dev/null; wait $dcm 2>/dev/null; rm -f "${TMPDIR:-/tmp}/sim_lockstep_dcm.$$"; Run/shm remove >/dev/null 2>&1' EXIT
 sleep 0.3
-/usr/bin/time -f "  (participant process: %U s user, %S s system)" luajit Tests/bench/sim_participant.lua "$S"
-echo "  dcm.stats: $(luajit -e "local s=require('shm').open('dcm.stats'); io.write(string.format('realtime_factor %.1f over the last second, %d cycles', s.realtime_factor[0], s.cycles[0]))")"
+/usr/bin/time -f "participant: %U s user + %S s system" -o "${TMPDIR:-/tmp}/sim_lockstep_time.$$" \
+  luajit Tests/bench/sim_participant.lua "$S"
 kill $dcm; wait $dcm 2>/dev/null
-echo "world alone, camera at 30 Hz:"
-build/bin/sim_bench_world "$S" | sed 's/^/  /'
+sed 's/^dcm_sim profile: /dcm_sim: /' "${TMPDIR:-/tmp}/sim_lockstep_dcm.$$"
+awk -v s="$S" '{ printf "participant: CPU s per simulated s: %.4f\n", ($2 + $6) / s }' "${TMPDIR:-/tmp}/sim_lockstep_time.$$"
+rm -f "${TMPDIR:-/tmp}/sim_lockstep_time.$$"
+echo "world alone, camera at 30 Hz on the worker thread (as in the DCM):"
+threaded=$(build/bin/sim_bench_world "$S")
+echo "$threaded" | sed 's/^/  /'
+echo "world alone, camera at 30 Hz on the physics thread:"
+inline=$(build/bin/sim_bench_world "$S" --inline-camera)
+echo "$inline" | sed 's/^/  /'
+a=$(echo "$threaded" | grep 'last frame'); b=$(echo "$inline" | grep 'last frame')
+if [ -n "$a" ] && [ "$a" = "$b" ]; then echo "  frames: identical on both threads ($a)"; else echo "  frames: DIFFER between the threads"; fi
 echo "world alone, no camera:"
 build/bin/sim_bench_world "$S" --no-camera | sed 's/^/  /'
