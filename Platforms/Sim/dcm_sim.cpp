@@ -149,7 +149,7 @@ struct Profile {
     mark = t;
   }
   void print(uint32_t ticks, double sim_seconds) const {
-    static const char *names[kCount] = {"wait for participants", "commands", "physics", "deliver frames",
+    static const char *names[kCount] = {"wait for participants/clock", "commands", "physics", "deliver frames",
                                         "expose frames", "publish", "hand frames to the worker"};
     double total = 0;
     for (int k = 0; k < kCount; k++) total += sum[k];
