@@ -19,6 +19,11 @@ static inline void tap_ok(int cond, const char *name, const char *detail) {
 
 static inline void check(int cond, const char *name) { tap_ok(cond, name, NULL); }
 
+#ifdef __cplusplus
+#include <string>
+static inline void check(int cond, const std::string &name) { tap_ok(cond, name.c_str(), nullptr); }
+#endif
+
 static inline void tap_hex(const char *label, const unsigned char *b, size_t n) {
   printf("# %s:", label);
   for (size_t i = 0; i < n; i++) printf(" %02X", b[i]);

@@ -10,14 +10,7 @@
 #include "render.h"
 #include "stance.h"
 #include "world.h"
-
-static int n_test = 0, n_fail = 0;
-static void check(bool ok, const std::string &name) {
-  n_test++;
-  if (!ok) n_fail++;
-  printf("%s %d - %s\n", ok ? "ok" : "not ok", n_test, name.c_str());
-  fflush(stdout);
-}
+#include "tap.h"
 
 int main() {
   try {
@@ -186,9 +179,8 @@ int main() {
       check(same == nframes, "frames rendered on the worker thread are bit-identical to frames rendered in place");
     }
   } catch (const std::exception &e) {
-    printf("not ok %d - %s\n", ++n_test, e.what());
-    return 1;
+    check(false, e.what());
+    return tap_done();
   }
-  printf("1..%d\n", n_test);
-  return n_fail ? 1 : 0;
+  return tap_done();
 }

@@ -8,14 +8,7 @@
 #include <stdexcept>
 
 #include "world.h"
-
-static int n_test = 0, n_fail = 0;
-static void check(bool ok, const std::string &name) {
-  n_test++;
-  if (!ok) n_fail++;
-  printf("%s %d - %s\n", ok ? "ok" : "not ok", n_test, name.c_str());
-  fflush(stdout);
-}
+#include "tap.h"
 
 static bool contains(const std::string &s, const std::string &part) { return s.find(part) != std::string::npos; }
 
@@ -124,6 +117,5 @@ int main() {
     }
     unlink(path.c_str());
   }
-  printf("1..%d\n", n_test);
-  return n_fail ? 1 : 0;
+  return tap_done();
 }

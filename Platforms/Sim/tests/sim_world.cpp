@@ -8,14 +8,7 @@
 
 #include "stance.h"
 #include "world.h"
-
-static int n_test = 0, n_fail = 0;
-static void check(bool ok, const char *name) {
-  n_test++;
-  if (!ok) n_fail++;
-  printf("%s %d - %s\n", ok ? "ok" : "not ok", n_test, name);
-  fflush(stdout);
-}
+#include "tap.h"
 
 static double angspeed(sim::World &w, int r) {
   // torso angular speed from the (noise-free) truth: finite difference of the orientation
@@ -109,9 +102,8 @@ int main() {
     }
     (void)angspeed;
   } catch (const std::exception &e) {
-    printf("not ok %d - %s\n", ++n_test, e.what());
-    return 1;
+    check(false, e.what());
+    return tap_done();
   }
-  printf("1..%d\n", n_test);
-  return n_fail ? 1 : 0;
+  return tap_done();
 }
