@@ -21,7 +21,8 @@ return {
     ball = {
       process_noise = 0.5,     -- m/s^2
       meas_noise = 0.08,       -- m per m of range
-      friction = 0.6,          -- 1/s, rolling decay of the ball's speed
+      deceleration = 0.6,      -- m/s^2, rolling resistance (a size-1 ball on artificial turf)
+      friction = 0.1,          -- 1/s, drag: the speed's decay on top of that
       max_speed = 5.0,         -- m/s
       reset_after = 2.0,       -- s without a sighting: the next one restarts the filter
       jump_distance = 0.6,     -- m: a sighting this far off restarts the filter
@@ -40,11 +41,15 @@ return {
       roughen_angle = 0.02,     -- rad
       reset_below = 0.25,       -- confidence under which two-post sightings re-seed particles
       reset_fraction = 0.05,
+      project_fraction = 0.05,  -- share of particles moved onto a single post's sighting (sensor resetting)
+      project_lost = 0.3,       -- ... when the belief is weak or contradicted
+      project_max_jump = 1.0,   -- m: a particle moved onto a sighting goes at most this far
       gate_confidence = 0.6,    -- a belief this confident ignores a sighting ...
       gate_fit = 0.01,          -- ... that it explains this badly (mean likelihood)
       margin = 0.5,             -- m the robot may be outside the field lines
     },
-    ball_lost_after = 3.0,      -- s without a sighting: the ball is lost
+    localised_confidence = 0.5, -- pose confidence from which the robot attacks (below: looks for goals)
+    ball_lost_after = 4.0,      -- s without a sighting: the ball is lost (a look around takes 2)
     max_odometry_step = 0.5,    -- m: a larger jump means the motion process restarted
     post_min_range = 0.5,       -- m: nearer post sightings are false (a robot cannot stand there)
     post_max_range = 10.5,      -- m: further sightings are not used (vision: range error <= 3.2% to 9 m)
@@ -54,18 +59,32 @@ return {
 
   head = {
     scan_pan = 1.4,            -- rad, half-range of the scan
-    scan_distances = { 3.0, 0.8 }, -- m: the scan's far and near rows (ground distance looked at)
+    scan_distances = { 2.5, 0.45 }, -- m: the scan's far and near rows (ground distance looked at;
+                               -- the camera's 43 deg view covers 0.2-1.0 m and 0.7 m-horizon)
     scan_period = 4.0,         -- s per sweep
+    scan_near_first = 1.0,     -- m: a ball lost nearer than this is looked for where it was first ...
+    scan_near_time = 1.5,      -- s ... for this long
     track_gain = 0.6,          -- fraction of the angle error closed per step
-    look_goal_every = 6.0,     -- s between looks at the goal while tracking
-    look_goal_time = 1.2,      -- s
-    look_goal_min_distance = 0.6, -- m: do not look away when the ball is nearer than this
+    look_goal_every = 6.0,     -- s between looks at the goal while tracking (dribbling too: the
+                               -- pose drifts ~15% of the distance walked between post sightings)
+    look_goal_every_near = 3.0, -- s, ... within near_goal of the opponent goal
+    near_goal = 2.5,           -- m
+    look_goal_every_lost = 1.5, -- s, ... while the pose is not trusted (a sweep each time)
+    look_goal_time = 1.2,      -- s looking where the goal should be
+    look_around_time = 2.0,    -- s for one sweep across the head's range
     ground_z = -0.23,          -- m: the ground below the torso origin (torso frame), for look-at
   },
 
   body = {
     search_turn_time = 8.0,    -- s turning on the spot before wandering
     search_turn_speed = 0.5,   -- rad/s
+    search_back_near = 0.5,    -- m: a ball lost nearer than this: step back first ...
+    search_back_time = 2.0,    -- s ...
+    search_back_speed = 0.08,  -- m/s
+    relocalise_below = 0.3,    -- pose confidence under which the robot stops attacking to localize
+    localize_turn_after = 5.0, -- s standing (the head looking around) before turning on the spot
+    localize_timeout = 12.0,   -- s: then go on with the best guess ...
+    localize_retry_after = 15.0, -- s ... for at least this long
     wander_time = 6.0,         -- s walking towards the field's centre before turning again
     approach_speed = 0.25,     -- m/s
     approach_behind = 0.30,    -- m: aim at this point behind the ball (away from the goal)

@@ -48,7 +48,7 @@ function M.new(opts)
     vision_time = -1, vision_time_changed = nil, steps = 0,
   }, Behavior)
   self.ctx = { cfg = cfg, world = self.world, act = act, body = self.body, head = self.head,
-    t = 0, look_goal_allowed = true }
+    t = 0 }
   return self
 end
 

@@ -1,5 +1,6 @@
 -- Fine positioning: the ball just ahead of one foot, facing the opponent goal.
 local nav = require('BodyFSM.nav')
+local localize = require('BodyFSM.localize')
 
 local M = {}
 local t0, good, side
@@ -12,6 +13,7 @@ end
 function M.update(ctx)
   local cfg = ctx.cfg.body
   if not ctx.world:ball_known() then return 'lost' end
+  if localize.needed(ctx) then return 'unsure' end
   local bx, by, ux, uy = nav.attack(ctx)
   local dist = math.sqrt(bx * bx + by * by)
   if dist > cfg.align_distance + 0.3 then return 'far' end

@@ -1,11 +1,13 @@
 -- Walk to the point behind the ball on the line from the opponent goal.
 local nav = require('BodyFSM.nav')
+local localize = require('BodyFSM.localize')
 
 local M = {}
 
 function M.update(ctx)
   local cfg = ctx.cfg.body
   if not ctx.world:ball_known() then return 'lost' end
+  if localize.needed(ctx) then return 'unsure' end
   local tx, ty, ha = nav.behind_ball(ctx)
   local vx, vy, va, d = nav.go_to(ctx, tx, ty, ha)
   ctx.act.walk(vx, vy, va)

@@ -2,6 +2,7 @@
 -- robot turning towards the attack direction and side-stepping to stay behind the ball. Used
 -- instead of kicking when the kick moves the ball little (config body.dribble).
 local nav = require('BodyFSM.nav')
+local localize = require('BodyFSM.localize')
 
 local M = {}
 
@@ -9,6 +10,7 @@ function M.update(ctx)
   local cfg = ctx.cfg.body
   local d = cfg.dribble
   if not ctx.world:ball_known() then return 'lost' end
+  if localize.needed(ctx) then return 'unsure' end
   local bx, by, ux, uy = nav.attack(ctx)
   local ea = nav.wrap(math.atan2(uy, ux))
   -- the ball got away (ahead, behind or to the side) or the goal is no longer ahead: align again

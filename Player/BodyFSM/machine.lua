@@ -1,14 +1,17 @@
 -- The body's state machine: search (turn, then wander), approach the ball, align behind it towards
--- the opponent goal, kick (or dribble), follow up; reposition when the ball is lost.
+-- the opponent goal, kick (or dribble), follow up; reposition when the ball is lost; stand and
+-- localize when the pose is not trusted before attacking by it.
 return {
-  states = { 'idle', 'search', 'wander', 'approach', 'align', 'kick', 'follow', 'reposition', 'dribble' },
+  states = { 'idle', 'search', 'wander', 'approach', 'align', 'kick', 'follow', 'reposition', 'dribble',
+    'localize' },
   initial = 'idle',
   transitions = {
     search = { ball = 'approach', timeout = 'wander' },
     wander = { ball = 'approach', timeout = 'search' },
-    approach = { near = 'align', lost = 'reposition' },
-    align = { far = 'approach', done = 'kick', dribble = 'dribble', lost = 'reposition' },
-    dribble = { realign = 'approach', lost = 'reposition' },
+    approach = { near = 'align', lost = 'reposition', unsure = 'localize' },
+    align = { far = 'approach', done = 'kick', dribble = 'dribble', lost = 'reposition', unsure = 'localize' },
+    dribble = { realign = 'approach', lost = 'reposition', unsure = 'localize' },
+    localize = { done = 'approach' },
     kick = { done = 'follow' },
     follow = { ball = 'approach', timeout = 'search' },
     reposition = { ball = 'approach', done = 'search' },

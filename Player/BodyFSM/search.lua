@@ -1,17 +1,27 @@
--- Turn on the spot (towards where the ball was last) until it is seen; then wander.
+-- Turn on the spot (towards where the ball was last) until it is seen; then wander. A ball lost at
+-- the feet (below or behind the camera's view) is looked for by stepping back first: turning on
+-- the spot would keep it there, and push it about.
 local M = {}
-local t0, dir
+local t0, dir, back_until
 
 function M.entry(ctx)
+  local cfg = ctx.cfg.body
   t0 = ctx.t
-  dir = (ctx.world.ball.y >= 0) and 1 or -1
+  local b = ctx.world.ball
+  dir = (b.y >= 0) and 1 or -1
+  local near = b.seen and b.x * b.x + b.y * b.y < cfg.search_back_near ^ 2
+  back_until = near and t0 + cfg.search_back_time or t0
 end
 
 function M.update(ctx)
   local cfg = ctx.cfg.body
   if ctx.world:ball_age() < 0.3 then return 'ball' end
-  ctx.act.walk(0, 0, dir * cfg.search_turn_speed)
-  if ctx.t - t0 > cfg.search_turn_time then return 'timeout' end
+  if ctx.t < back_until then
+    ctx.act.walk(-cfg.search_back_speed, 0, 0)
+  else
+    ctx.act.walk(0, 0, dir * cfg.search_turn_speed)
+  end
+  if ctx.t - back_until > cfg.search_turn_time then return 'timeout' end
 end
 
 return M

@@ -1,19 +1,36 @@
--- Look towards where the opponent goal should be (from the pose estimate), then back to the ball.
+-- Look for goal posts: towards where the opponent goal should be when the pose is trusted;
+-- otherwise one sweep across the head's whole range at the far row (the estimate's goal direction
+-- would be a guess), then back to the ball.
 local point = require('HeadFSM.point')
 
 local M = {}
-local t0
+local t0, sweep, from
 
-function M.entry(ctx) t0 = ctx.t end
+function M.entry(ctx)
+  t0 = ctx.t
+  sweep = not ctx.world:localised()
+  -- sweep from the side the head is nearer to (the ball's side)
+  from = (ctx.world.ball.y >= 0) and 1 or -1
+end
 
 function M.update(ctx)
   local cfg = ctx.cfg.head
-  local gx, gy = ctx.world:goal_in_robot_frame()
-  local d = math.sqrt(gx * gx + gy * gy)
-  -- beyond the head's reach (goal behind): sweep to the side the goal is on
-  local pan, tilt = point.ground(gx / d * 3.0, gy / d * 3.0, cfg.ground_z)
+  local dt = ctx.t - t0
+  local pan, tilt
+  if sweep then
+    local u = math.min(1, dt / cfg.look_around_time)
+    local bearing = from * (1 - 2 * u) * cfg.scan_pan
+    local far = cfg.scan_distances[1]
+    pan, tilt = point.ground(far * math.cos(bearing), far * math.sin(bearing), cfg.ground_z)
+    if dt > cfg.look_around_time then return 'done' end
+  else
+    local gx, gy = ctx.world:goal_in_robot_frame()
+    local d = math.sqrt(gx * gx + gy * gy)
+    -- beyond the head's reach (goal behind): the side the goal is on
+    pan, tilt = point.ground(gx / d * 3.0, gy / d * 3.0, cfg.ground_z)
+    if dt > cfg.look_goal_time then return 'done' end
+  end
   ctx.act.head(pan, tilt)
-  if ctx.t - t0 > cfg.look_goal_time then return 'done' end
 end
 
 return M

@@ -1,23 +1,40 @@
--- Sweep the head across the field in rows (far, near) until the ball is seen.
+-- Look for the ball: where it was last estimated first, when that is near (a ball at the feet is
+-- below the scan's rows), then sweep the head across the field in rows (far, near).
 local point = require('HeadFSM.point')
 
 local M = {}
-local t0
+local t0, t_rows
 
-function M.entry(ctx) t0 = ctx.t end
+function M.entry(ctx)
+  t0 = ctx.t
+  local w, cfg = ctx.world, ctx.cfg.head
+  local b = w.ball
+  local near = b.seen and w:ball_known() and b.x * b.x + b.y * b.y < cfg.scan_near_first ^ 2
+  t_rows = near and t0 + cfg.scan_near_time or t0
+end
 
 function M.update(ctx)
   local cfg = ctx.cfg.head
-  if ctx.world:ball_age() < 0.2 then return 'ball' end
-  local s = (ctx.t - t0) / cfg.scan_period
-  local sweep = math.floor(s)
-  local phase = s - sweep
-  -- triangle wave from -1 to 1 and back, direction alternating per sweep
-  local u = phase < 0.5 and (4 * phase - 1) or (3 - 4 * phase)
-  local rows = cfg.scan_distances
-  local dist = rows[(sweep % #rows) + 1]
-  local bearing = u * cfg.scan_pan
-  local pan, tilt = point.ground(dist * math.cos(bearing), dist * math.sin(bearing), cfg.ground_z)
+  local w = ctx.world
+  if w:ball_age() < 0.2 then return 'ball' end
+  local pan, tilt
+  if ctx.t < t_rows then
+    -- around the estimate, swinging +-0.4 rad
+    local b = w.ball
+    local swing = 0.4 * math.sin(2 * math.pi * (ctx.t - t0) / cfg.scan_near_time)
+    local c, s = math.cos(swing), math.sin(swing)
+    pan, tilt = point.ground(c * b.x - s * b.y, s * b.x + c * b.y, cfg.ground_z)
+  else
+    local s = (ctx.t - t_rows) / cfg.scan_period
+    local sweep = math.floor(s)
+    local phase = s - sweep
+    -- triangle wave from -1 to 1 and back, direction alternating per sweep
+    local u = phase < 0.5 and (4 * phase - 1) or (3 - 4 * phase)
+    local rows = cfg.scan_distances
+    local dist = rows[(sweep % #rows) + 1]
+    local bearing = u * cfg.scan_pan
+    pan, tilt = point.ground(dist * math.cos(bearing), dist * math.sin(bearing), cfg.ground_z)
+  end
   ctx.act.head(pan, tilt)
 end
 

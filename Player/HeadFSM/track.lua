@@ -1,4 +1,6 @@
--- Keep the camera on the ball (the world model's estimate); every so often look at the goal.
+-- Keep the camera on the ball (the world model's estimate); every so often look for the goal:
+-- more often while the pose is not trusted, or near the opponent goal (where aiming needs it),
+-- and at once when the body asks (ctx.look_around).
 local point = require('HeadFSM.point')
 
 local M = {}
@@ -9,14 +11,19 @@ function M.entry(ctx) t0 = ctx.t end
 function M.update(ctx)
   local cfg = ctx.cfg.head
   local w = ctx.world
-  if w:ball_age() > 1.5 then return 'lost' end
+  -- (back from a look at the goal, the head needs a moment to find the ball again)
+  if w:ball_age() > 1.5 and ctx.t - t0 > 0.8 and not ctx.look_around then return 'lost' end
   local b = w.ball
   local pan, tilt = point.ground(b.x, b.y, cfg.ground_z)
   ctx.act.head(pan, tilt)
-  local dist = math.sqrt(b.x * b.x + b.y * b.y)
-  if ctx.t - t0 > cfg.look_goal_every and dist > cfg.look_goal_min_distance and ctx.look_goal_allowed then
-    return 'timeout'
+  local every = cfg.look_goal_every
+  if ctx.look_around or not w:localised() then
+    every = cfg.look_goal_every_lost
+  else
+    local gx, gy = w:goal_in_robot_frame()
+    if gx * gx + gy * gy < cfg.near_goal ^ 2 then every = cfg.look_goal_every_near end
   end
+  if ctx.t - t0 > every then return 'timeout' end
 end
 
 return M

@@ -1,12 +1,13 @@
 -- Ball filter: position and velocity of the ball in the robot frame (x forward, y left), a
--- constant-velocity Kalman filter with rolling friction, moved by the walk's odometry between
+-- constant-velocity Kalman filter with rolling resistance, moved by the walk's odometry between
 -- sightings. Each axis keeps its own [p, v] covariance (the axes are treated as independent).
 local M = {}
 
 local Filter = {}
 Filter.__index = Filter
 
--- cfg: process_noise (m/s^2), meas_noise (m, at 1 m; grows with range), friction (1/s), max_speed
+-- cfg: process_noise (m/s^2), meas_noise (m, at 1 m; grows with range), deceleration (m/s^2),
+-- friction (1/s), max_speed
 function M.new(cfg)
   local f = setmetatable({ cfg = cfg }, Filter)
   f:reset()
@@ -40,14 +41,18 @@ local function predict_axis(P, dt, q)
   P[3] = d + q * dt * dt
 end
 
--- Advances the filter by dt seconds (ball rolls and slows down).
+-- Advances the filter by dt seconds: the ball rolls and slows down, by rolling resistance (a
+-- constant deceleration: a slow ball, as a dribbled one, stops within centimetres) and drag.
 function Filter:predict(dt)
   if dt <= 0 then return end
   local cfg = self.cfg
-  self.x = self.x + self.vx * dt
-  self.y = self.y + self.vy * dt
-  local decay = math.exp(-cfg.friction * dt)
-  self.vx, self.vy = self.vx * decay, self.vy * decay
+  local sp = math.sqrt(self.vx * self.vx + self.vy * self.vy)
+  local k = 0
+  if sp > 1e-9 then k = math.max(0, sp - cfg.deceleration * dt) * math.exp(-cfg.friction * dt) / sp end
+  -- the mean of the speeds at both ends of the step
+  self.x = self.x + self.vx * dt * (1 + k) / 2
+  self.y = self.y + self.vy * dt * (1 + k) / 2
+  self.vx, self.vy = self.vx * k, self.vy * k
   local q = cfg.process_noise * cfg.process_noise
   predict_axis(self.px, dt, q)
   predict_axis(self.py, dt, q)

@@ -47,7 +47,16 @@ function Filter:init_prior()
     self:sample_prior(i)
     self.w[i] = 1 / self.n
   end
+  self.walked = 0
   self:estimate()
+end
+
+-- Whether (x, y) can be reached from the prior region by the distance walked since (with the
+-- odometry's error): right after placement the robot is in its own half, so a mirror pose across
+-- the field (the goals look alike) cannot be it, however well it explains a sighting.
+function Filter:reachable(x, y)
+  local r, d = self.cfg.prior, self.walked * (1 + 2 * self.cfg.odom_trans_noise) + 0.3
+  return x >= r[1] - d and x <= r[2] + d and y >= r[3] - d and y <= r[4] + d
 end
 
 -- Puts every particle near a known pose (e.g. placed by the referee).
@@ -59,6 +68,7 @@ function Filter:set_pose(x, y, a, spread)
     self.pa[i] = wrap(a + spread * self:gauss())
     self.w[i] = 1 / self.n
   end
+  self.walked = math.huge -- known: no constraint from the prior
   self:estimate()
 end
 
@@ -69,6 +79,11 @@ function Filter:move(dx, dy, da)
   local st = c.odom_trans_noise * dist + 1e-4
   local sa = c.odom_rot_noise * math.abs(da) + c.odom_rot_per_m * dist + 1e-4
   local hl, hw = self.field.length / 2 + c.margin, self.field.width / 2 + c.margin
+  self.walked = self.walked + dist
+  -- the reachable part of the field (see Filter:reachable): its bounds clamp like the field's
+  local r, d = c.prior, self.walked * (1 + 2 * c.odom_trans_noise) + 0.3
+  local xlo, xhi = math.max(-hl, r[1] - d), math.min(hl, r[2] + d)
+  local ylo, yhi = math.max(-hw, r[3] - d), math.min(hw, r[4] + d)
   for i = 1, self.n do
     local a = self.pa[i]
     local ndx = dx + st * self:gauss()
@@ -77,8 +92,8 @@ function Filter:move(dx, dy, da)
     local x = self.px[i] + ca * ndx - sa_ * ndy
     local y = self.py[i] + sa_ * ndx + ca * ndy
     -- the robot never leaves the field by much
-    if x > hl then x = hl elseif x < -hl then x = -hl end
-    if y > hw then y = hw elseif y < -hw then y = -hw end
+    if x > xhi then x = xhi elseif x < xlo then x = xlo end
+    if y > yhi then y = yhi elseif y < ylo then y = ylo end
     self.px[i], self.py[i] = x, y
     self.pa[i] = wrap(a + da + sa * self:gauss())
   end
@@ -114,11 +129,62 @@ function Filter:poses_from_two_posts(o1, o2)
     local c, s = cos(a), sin(a)
     local x = f1[1] - (c * o1[1] - s * o1[2])
     local y = f1[2] - (s * o1[1] + c * o1[2])
-    if x > -hl and x < hl and y > -hw and y < hw and math.abs(x) < self.field.length / 2 then
+    if x > -hl and x < hl and y > -hw and y < hw and math.abs(x) < self.field.length / 2
+      and self:reachable(x, y) then
       out[#out + 1] = { x, y, a }
     end
   end
   return out
+end
+
+-- Sensor resetting for one post seen at o (robot frame): k particles drawn from the belief (by
+-- weight) are moved, keeping their heading, to where the sighting puts them given the real post
+-- that heading matches best. The heading comes from the belief (the IMU keeps it well), the
+-- position from the sighting: a belief that drifted is pulled back along the post's ray, and the
+-- new particles stay near the belief's own hypotheses (at most project_max_jump from the particle
+-- they came from: never the mirror pose across the field).
+function Filter:project(o, k)
+  if k <= 0 then return end
+  local n = self.n
+  local r0, b0 = sqrt(o[1] * o[1] + o[2] * o[2]), atan2(o[2], o[1])
+  local hl, hw = self.field.length / 2 + self.cfg.margin, self.field.width / 2 + self.cfg.margin
+  local cum, acc = self.cum or {}, 0
+  self.cum = cum
+  for i = 1, n do acc = acc + self.w[i] cum[i] = acc end
+  local sr = self.cfg.post_range_noise * 0.5
+  local nx, ny, na = {}, {}, {}
+  local jump2 = self.cfg.project_max_jump ^ 2
+  for _ = 1, k do
+    -- a particle by weight (binary search of the cumulative weights)
+    local u, lo, hi = self.rng() * acc, 1, n
+    while lo < hi do
+      local mid = floor((lo + hi) / 2)
+      if cum[mid] < u then lo = mid + 1 else hi = mid end
+    end
+    local a = wrap(self.pa[lo] + 0.03 * self:gauss())
+    -- the post this particle would see nearest to the sighting's bearing and range
+    local best, bx, by = math.huge, 0, 0
+    local x, y = self.px[lo], self.py[lo]
+    for q = 1, 4 do
+      local p = self.posts[q]
+      local ddx, ddy = p[1] - x, p[2] - y
+      local er = (sqrt(ddx * ddx + ddy * ddy) - r0) / (0.15 * math.max(0.5, r0))
+      local eb = wrap(atan2(ddy, ddx) - a - b0) / 0.12
+      local e = er * er + eb * eb
+      if e < best then best, bx, by = e, p[1], p[2] end
+    end
+    local r = r0 * (1 + sr * self:gauss())
+    local cx, cy = bx - r * cos(a + b0), by - r * sin(a + b0)
+    -- only a jump the belief can stand behind: near the particle it came from
+    if (cx - x) ^ 2 + (cy - y) ^ 2 < jump2 then nx[#nx + 1], ny[#ny + 1], na[#na + 1] = cx, cy, a end
+  end
+  for m = 1, #nx do
+    if nx[m] > -hl and nx[m] < hl and ny[m] > -hw and ny[m] < hw and self:reachable(nx[m], ny[m]) then
+      local i = 1 + floor(self.rng() * n)
+      if i > n then i = n end
+      self.px[i], self.py[i], self.pa[i] = nx[m], ny[m], na[m]
+    end
+  end
 end
 
 -- Goal posts seen: list of {x, y} in the robot frame.
@@ -172,6 +238,12 @@ function Filter:observe_posts(posts)
         self.pa[i] = wrap(c[3] + 0.05 * self:gauss())
       end
     end
+  end
+  if #posts == 1 then
+    local c = self.cfg
+    local frac = contradicted and c.project_lost or
+      ((self.confidence or 0) < c.reset_below and c.project_lost or c.project_fraction)
+    self:project(posts[1], floor(self.n * frac))
   end
   local total = 0
   local floor_l = self.cfg.outlier -- a sighting may be false: never weight a particle to zero
@@ -235,25 +307,68 @@ function Filter:resample_if_needed()
   end
 end
 
--- Weighted mean pose and a confidence in [0, 1] from the particles' spread.
+-- The pose: the weighted mean of the heaviest cluster of particles (a mean over two mirror or
+-- otherwise distinct hypotheses would be a pose that is neither); a confidence in [0, 1].
+local CELL, NBIN = 0.5, 12 -- m, heading bins of the histogram that finds the cluster
+local hist, bx_, by_, ba_ = {}, {}, {}, {}
 function Filter:estimate()
-  local sx, sy, sc, ss, sw = 0, 0, 0, 0, 0
-  for i = 1, self.n do
-    local w = self.w[i]
-    sx, sy = sx + w * self.px[i], sy + w * self.py[i]
-    sc, ss = sc + w * cos(self.pa[i]), ss + w * sin(self.pa[i])
-    sw = sw + w
+  local n, px, py, pa, w = self.n, self.px, self.py, self.pa, self.w
+  for k in pairs(hist) do hist[k] = nil end
+  for i = 1, n do
+    local ix, iy = floor(px[i] / CELL), floor(py[i] / CELL)
+    local ia = floor((pa[i] + pi) / (2 * pi) * NBIN) % NBIN
+    bx_[i], by_[i], ba_[i] = ix, iy, ia
+    local key = (ix * 64 + iy) * 16 + ia
+    hist[key] = (hist[key] or 0) + w[i]
   end
-  local x, y, a = sx / sw, sy / sw, atan2(ss, sc)
-  local var = 0
-  for i = 1, self.n do
-    local ddx, ddy = self.px[i] - x, self.py[i] - y
-    var = var + self.w[i] * (ddx * ddx + ddy * ddy)
+  -- the bin whose neighbourhood (3 x 3 cells, 3 headings) holds the most weight
+  local best, bi = -1, 1
+  for i = 1, n do
+    local sum = 0
+    for dx = -1, 1 do
+      for dy = -1, 1 do
+        for da = -1, 1 do
+          local key = ((bx_[i] + dx) * 64 + by_[i] + dy) * 16 + (ba_[i] + da) % NBIN
+          sum = sum + (hist[key] or 0)
+        end
+      end
+    end
+    if sum > best then best, bi = sum, i end
+  end
+  -- its weighted mean, then the mean of the particles within 1 m and 0.6 rad of that
+  local x0, y0, a0 = px[bi], py[bi], pa[bi]
+  local x, y, a
+  for pass = 1, 2 do
+    local rx, ra = pass == 1 and 1.5 * CELL or 1.0, pass == 1 and 1.5 * 2 * pi / NBIN or 0.6
+    local sx, sy, sc, ss, sw = 0, 0, 0, 0, 0
+    for i = 1, n do
+      if math.abs(px[i] - x0) <= rx and math.abs(py[i] - y0) <= rx and math.abs(wrap(pa[i] - a0)) <= ra then
+        local wi = w[i]
+        sx, sy, sw = sx + wi * px[i], sy + wi * py[i], sw + wi
+        sc, ss = sc + wi * cos(pa[i]), ss + wi * sin(pa[i])
+      end
+    end
+    if sw <= 0 then break end
+    x, y, a = sx / sw, sy / sw, atan2(ss, sc)
+    x0, y0, a0 = x, y, a
+  end
+  if not x then x, y, a = px[bi], py[bi], pa[bi] end
+  self.x, self.y, self.a = x, y, a
+  -- confidence: the whole cloud's spread (two hypotheses far apart make it low, whichever is
+  -- reported), times how well it has explained recent sightings
+  local sx, sy, sc, ss, sw = 0, 0, 0, 0, 0
+  for i = 1, n do
+    local wi = w[i]
+    sx, sy, sw = sx + wi * px[i], sy + wi * py[i], sw + wi
+    sc, ss = sc + wi * cos(pa[i]), ss + wi * sin(pa[i])
+  end
+  local mx, my, var = sx / sw, sy / sw, 0
+  for i = 1, n do
+    local ddx, ddy = px[i] - mx, py[i] - my
+    var = var + w[i] * (ddx * ddx + ddy * ddy)
   end
   var = var / sw
   local rlen = sqrt(sc * sc + ss * ss) / sw -- 1 when all headings agree
-  self.x, self.y, self.a = x, y, a
-  -- spread of the cloud, and how well it has explained recent sightings
   self.confidence = math.max(0, math.min(1, rlen * exp(-var / 0.5) * (self.fit or 1)))
   return x, y, a, self.confidence
 end

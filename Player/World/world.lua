@@ -113,6 +113,11 @@ function World:plausible_posts(posts)
   return out
 end
 
+-- Whether the pose is good enough to attack by: one confident hypothesis.
+function World:localised()
+  return self.pose.confidence >= self.cfg.localised_confidence
+end
+
 -- Seconds since the ball was last seen.
 function World:ball_age()
   return (self.t or 0) - self.ball.t_seen

@@ -25,7 +25,9 @@ describe('behavior under a GameController', function()
     if os.getenv('ROBOT_ID') then for _, name in ipairs(shm.block_names()) do shm.unlink(name) end end
   end)
 
-  -- advances the clock by `seconds` in behavior steps, with a vision frame (ball 1 m ahead) per step
+  -- advances the clock by `seconds` in behavior steps, with a vision frame per step: the ball 1 m
+  -- ahead, and the opponent goal's posts as seen from (-2, 0) facing it (the robot attacks only
+  -- once it knows where it is)
   local function run(seconds)
     for _ = 1, math.floor(seconds / 0.024 + 0.5) do
       tick = tick + 3
@@ -35,6 +37,9 @@ describe('behavior under a GameController', function()
       vision.time[0] = sensor.time[0]
       vision.ball_detected[0] = 1
       vision.ball_position[0], vision.ball_position[1] = 1.0, 0.2
+      vision.goal_posts[0] = 2
+      vision.goal_position[0], vision.goal_position[1] = 6.5, 1.3
+      vision.goal_position[2], vision.goal_position[3] = 6.5, -1.3
       behavior:step()
     end
   end

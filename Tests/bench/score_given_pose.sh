@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Diagnostic benchmark: the scoring scenario (Tests/scenarios/score_scenario.sh, 10 seeds, lockstep)
-# with the robot told its pose once after placement (Tests/bench/behavior_given_pose.lua), so the
+# with the robot told its pose once when play starts (Tests/bench/behavior_given_pose.lua), so the
 # figures show how the robot plays once localized. Prints goals/10 and the median time to goal;
 # never fails on the figures. Logs in build/test-logs/bench-score/.
 cd "$(dirname "$0")/../.."

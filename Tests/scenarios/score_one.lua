@@ -60,21 +60,23 @@ local goal, own = false, false
 -- (Tests/scenarios/plot_paths.py)
 local trace = os.getenv('TRUTH_LOG') and io.open(os.getenv('TRUTH_LOG'), 'w')
 local body_names = require('BodyFSM.machine').states or {}
+local head_names = require('HeadFSM.machine').states or {}
 local function log_step()
   if not trace then return end
   local T = Sim.truth()
   local ok, mstate = pcall(function() return require('Motion').state() end)
-  trace:write(string.format('%.2f %.3f %.3f %.3f %.3f %.3f %d %.3f %.3f %.3f %.3f %.3f %.1f %s %s\n',
+  trace:write(string.format('%.2f %.3f %.3f %.3f %.3f %.3f %d %.3f %.3f %.3f %.3f %.3f %.1f %s %s %.2f %s\n',
     Body.get_time() - t0, T.x, T.y, T.yaw, T.ball.x, T.ball.y, T.fallen and 1 or 0,
     world.pose[0], world.pose[1], world.pose[2], world.ball[0], world.ball[1],
     Body.get_time() - world.ball_time[0], body_names[game.body_state[0] + 1] or tostring(game.body_state[0]),
-    ok and tostring(mstate) or '?'))
+    ok and tostring(mstate) or '?', world.pose_confidence[0],
+    head_names[game.head_state[0] + 1] or tostring(game.head_state[0])))
   for i = 0, math.min(2, vision.goal_posts[0]) - 1 do
     trace:write(string.format('post %.2f %.3f %.3f\n', Body.get_time() - t0, vision.goal_position[2 * i],
       vision.goal_position[2 * i + 1]))
   end
 end
-if trace then trace:write('# t x y yaw bx by fallen px py pyaw wbx wby ball_age body motion\n') end
+if trace then trace:write('# t x y yaw bx by fallen px py pyaw wbx wby ball_age body motion confidence head\n') end
 while Body.get_time() - t0 < limit do
   wait(0.25)
   log_step()
