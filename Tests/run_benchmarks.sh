@@ -22,4 +22,3 @@ bench vision_lua luajit Tests/bench/vision_lua.lua 2
 bench sim_lockstep bash Tests/bench/sim_lockstep.sh 30
 bench walk_sim Tests/bench/walk_sim.sh
 bench score_given_pose Tests/bench/score_given_pose.sh
-bench score_scenario bash Tests/scenarios/score_scenario.sh

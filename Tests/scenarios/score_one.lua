@@ -1,4 +1,4 @@
--- One scoring run, run by ./run_repl inside the sim's lockstep (see score_scenario.sh):
+-- One scoring run, run by ./run_repl inside the sim's lockstep (see score_test.sh):
 --   ./run_repl Tests/scenarios/score_one.lua SEED LIMIT_S [KILL_VISION_AT_S]
 -- Places robot and ball from SEED (both anywhere in the own half, any heading), lets the robot play
 -- and prints one line: "result seed=N goal=1 time=T" (or goal=0) plus where things ended.
