@@ -62,14 +62,95 @@ function M.toe_velocity_in_torso(side, q6, qd6)
   return { (pa[1] - pb[1]) / (2 * h), (pa[2] - pb[2]) / (2 * h), (pa[3] - pb[3]) / (2 * h) }
 end
 
--- Places the ball (centre at its radius) `gap` m ahead of the kicking foot's toe, in line with the
--- sole's centre, from the measured leg angles (torso tilt ignored). r = Sim.truth().
-function M.place_ball(Sim, side, gap, r)
-  local sgn = side == 'left' and 1 or -1
-  local foot = get_model():leg_fk(side, M.leg(side))
-  local bx, by = foot[1] + M.TOE + gap, foot[2] + sgn * M.SOLE_Y
+-- The whole-body COM relative to the support foot's ankle (the foot not kicking), in the torso's
+-- heading frame: { forward, inward (towards the kicking foot), up }, from the measured joint
+-- angles, the mass model and the torso's truth. side: the kicking side. r = Sim.truth().
+function M.com_over_support(side, r)
+  local m = get_model()
+  local cm = m:com(Body.get_positions())
+  local sa = m:leg_fk(side == 'left' and 'right' or 'left', M.leg(side == 'left' and 'right' or 'left'))
+  local d = rot(r.roll, r.pitch, 0, { cm[1] - sa[1], cm[2] - sa[2], cm[3] - sa[3] })
+  return { d[1], (side == 'left' and 1 or -1) * d[2], d[3] }
+end
+
+-- The toe's velocity in the world: the joints' (FK) plus the torso's turning (gyro) and moving
+-- (truth r against the truth `prev` dt s before; nil: left out). Returns it and the toe (torso frame).
+function M.toe_velocity(side, r, prev, dt)
+  local q6, qd6 = M.leg(side), M.leg(side, Body.get_velocity)
+  local toe = M.toe_in_torso(side, q6)
+  local rv = M.toe_velocity_in_torso(side, q6, qd6)
+  local g = Body.get_gyro()
+  local v = rot(r.roll, r.pitch, r.yaw, { rv[1] + g[2] * toe[3] - g[3] * toe[2],
+    rv[2] + g[3] * toe[1] - g[1] * toe[3], rv[3] + g[1] * toe[2] - g[2] * toe[1] })
+  if prev then
+    v[1], v[2], v[3] = v[1] + (r.x - prev.x) / dt, v[2] + (r.y - prev.y) / dt, v[3] + (r.z - prev.z) / dt
+  end
+  return v, toe
+end
+
+-- The torso frame from the sim's truth r (the torso's pose): a point in the torso frame to the
+-- world, and back.
+function M.to_world(r, v)
+  local w = rot(r.roll, r.pitch, r.yaw, v)
+  return { r.x + w[1], r.y + w[2], r.z + w[3] }
+end
+function M.to_torso(r, p)
   local c, s = math.cos(r.yaw), math.sin(r.yaw)
-  Sim.teleport_ball(r.x + c * bx - s * by, r.y + s * bx + c * by)
+  local dx, dy, dz = p[1] - r.x, p[2] - r.y, p[3] - r.z
+  local x, y, z = c * dx + s * dy, -s * dx + c * dy, dz
+  -- R = Rz Ry Rx: undo the pitch, then the roll
+  local cp, sp = math.cos(r.pitch), math.sin(r.pitch)
+  x, z = cp * x - sp * z, sp * x + cp * z
+  local cr, sr = math.cos(r.roll), math.sin(r.roll)
+  return { x, cr * y + sr * z, -sr * y + cr * z }
+end
+
+-- The ball's centre in the kicking foot's frame, from the middle of its sole plate (x forward,
+-- y outward, z up; the plate's front face is at x = TOE, its top at z = PLATE / 2). q: all joint
+-- angles; r = Sim.truth() (the torso's pose and the ball). Tells which part of the foot meets it.
+function M.ball_in_foot(side, q, r)
+  local m = get_model()
+  local sgn = side == 'left' and 1 or -1
+  -- link frames: axes of the zero pose carried along; the sole point at the zero pose is the
+  -- reference for the foot's own frame
+  local P = m:link_poses(q)[Body.index((side == 'left' and 'l_' or 'r_') .. 'ank_roll')]
+  local f0 = m:leg_fk(side, { 0, 0, 0, 0, 0, 0 })
+  local b = M.to_torso(r, { r.ball.x, r.ball.y, r.ball.z })
+  local R, v = P.R, { b[1] - P[1], b[2] - P[2], b[3] - P[3] }
+  local l = { R[1] * v[1] + R[4] * v[2] + R[7] * v[3], R[2] * v[1] + R[5] * v[2] + R[8] * v[3],
+    R[3] * v[1] + R[6] * v[2] + R[9] * v[3] }
+  return { l[1] - f0[1], sgn * (l[2] - f0[2]) - M.SOLE_Y, l[3] - f0[3] - M.PLATE / 2 }
+end
+
+-- Places the ball (centre at its radius) `gap` m ahead of the kicking foot's toe, in line with the
+-- sole's centre (or `lateral` m outward of it), from the measured leg angles and the torso's
+-- pose (its tilt included). r = Sim.truth().
+function M.place_ball(Sim, side, gap, r, lateral)
+  local sgn = side == 'left' and 1 or -1
+  local sole = M.to_world(r, get_model():leg_fk(side, M.leg(side)))
+  local bx, by = M.TOE + gap, sgn * (M.SOLE_Y + (lateral or 0))
+  local c, s = math.cos(r.yaw), math.sin(r.yaw)
+  Sim.teleport_ball(sole[1] + c * bx - s * by, sole[2] + s * bx + c * by)
+end
+
+-- A fresh world for a kick: the robot at a field corner facing along the diagonal (10 m of free
+-- carpet), standing; the ball placed as place_ball does. Returns the truth after the ball settled.
+function M.setup(Sim, Motion, wait, side, gap, lateral)
+  Sim.reset()
+  wait(0.2)
+  Sim.teleport_robot(-4.3, -3.3, math.atan2(6.6, 8.6))
+  Sim.teleport_ball(4.0, -3.5)
+  wait(0.2)
+  Motion.request('stand')
+  -- after a fall the robot stands up first
+  for _ = 1, 400 do
+    if Motion.state() == 'stance' then break end
+    wait(0.05)
+  end
+  wait(2.0)
+  M.place_ball(Sim, side, gap, Sim.truth(), lateral)
+  wait(0.5)
+  return Sim.truth()
 end
 
 return M

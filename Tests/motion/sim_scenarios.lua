@@ -231,34 +231,26 @@ function scenarios.push()
 end
 
 -- kick: the ball's centre `gap` m (default 0.1) ahead of the kicking foot's toe, in line with the
--- sole's centre (placed from the measured leg angles, Tests/motion/kick_setup.lua); both feet
--- unless a side is given. Figures: the toe's forward speed just before contact (joint velocities +
--- FK + the torso's truth), the ball's speed after it and 0.3 s later (sliding over: it rolls), the
--- distance. A rolling ball needs about 1.55 m/s to roll 2 m on this carpet (Config/Sim/sim.lua).
+-- sole's centre (placed from the measured leg angles and the torso's pose,
+-- Tests/motion/kick_setup.lua); both feet unless a side is given. Figures: the toe's forward speed
+-- just before contact (joint velocities + FK + the torso's truth), the ball's speed after it and
+-- 0.3 s later (rolling by then), the distance, the robot's turn. A ball rolling at 1.6 m/s rolls
+-- about 2 m on this carpet (Config/Sim/sim.lua); off the foot it slides first and keeps ~0.6 of
+-- its speed unless the foot gives it topspin.
 local function kick_one(side, gap)
   package.path = os.getenv('HRP_ROOT') .. '/Tests/motion/?.lua;' .. package.path
   local ks = require('kick_setup')
-  start_clean()
-  ks.place_ball(Sim, side, gap, Sim.truth())
-  wait(0.5)
-  local b0 = Sim.truth().ball
+  local r0 = ks.setup(Sim, Motion, wait, side, gap)
+  local b0 = r0.ball
   local falls0 = motion.falls[0]
   Motion.request('kick_' .. side)
   local t0 = Body.get_time()
+  local dt = 0.008
   local toe_v, toe_contact, t_contact, launch, rolling, prev = 0, nil, nil, 0, nil, nil
   while Body.get_time() - t0 < 2.5 do
-    wait(0.008)
+    wait(dt)
     local r = Sim.truth()
-    local q6, qd6 = ks.leg(side), ks.leg(side, Body.get_velocity)
-    local toe = ks.toe_in_torso(side, q6)
-    local rv = ks.toe_velocity_in_torso(side, q6, qd6)
-    local g = Body.get_gyro()
-    local v = ks.rot(r.roll, r.pitch, r.yaw, { rv[1] + g[2] * toe[3] - g[3] * toe[2],
-      rv[2] + g[3] * toe[1] - g[1] * toe[3], rv[3] + g[1] * toe[2] - g[2] * toe[1] })
-    if prev then
-      local dt = Body.period()
-      v[1], v[2] = v[1] + (r.x - prev.x) / dt, v[2] + (r.y - prev.y) / dt
-    end
+    local v = ks.toe_velocity(side, r, prev, dt)
     local bs = math.sqrt(r.ball.vx ^ 2 + r.ball.vy ^ 2)
     if bs > 0.05 and not toe_contact then toe_contact, t_contact = toe_v, Body.get_time() end
     if toe_contact and bs > launch then launch = bs end
@@ -267,10 +259,11 @@ local function kick_one(side, gap)
     prev = r
   end
   wait(6)
-  local b1 = Sim.truth().ball
-  local d = math.sqrt((b1.x - b0.x) ^ 2 + (b1.y - b0.y) ^ 2)
+  local r1 = Sim.truth()
+  local d = math.sqrt((r1.ball.x - b0.x) ^ 2 + (r1.ball.y - b0.y) ^ 2)
   note('kick %s: toe forward speed before contact %.2f m/s, ball speed after contact %.2f m/s, 0.3 s ' ..
-    'later (rolling) %.2f m/s; ball travelled %.2f m', side, toe_contact or 0, launch, rolling or 0, d)
+    'later (rolling) %.2f m/s; ball travelled %.2f m; the robot turned %.2f rad', side, toe_contact or 0, launch,
+    rolling or 0, d, wrap(r1.yaw - r0.yaw))
   tap(d >= 2.0, string.format('kick %s: a ball %.2f m ahead of the foot travels >= 2 m (%.2f m)', side, gap, d))
   wait(1)
   -- a fall and a stand-up during the waits would end in stance too: the fall counter must not move

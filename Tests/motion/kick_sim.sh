@@ -1,0 +1,21 @@
+# Sourced by the kick tools (Tests/motion/kick_trace.sh, kick_sweep.sh): runs a command for one
+# robot while its motion process runs alone with the sim in lockstep, then stops both.
+#   kick_sim_run ID LOG COMMAND...     (SIM_SEED: the sim's seed, default 1; returns COMMAND's status)
+kick_sim_run() {
+  local id=$1 log=$2; shift 2
+  ROBOT_ID=$id ./run_main --sim --quiet --no-restart --dcm-arg --lockstep --dcm-arg --seed --dcm-arg "${SIM_SEED:-1}" \
+    --dcm-arg --no-camera motion >"$log" 2>&1 &
+  local pid=$!
+  # the command joins the lockstep once the DCM's clock runs and the motion process is started
+  for _ in $(seq 200); do
+    grep -q 'motion started' "$log" 2>/dev/null && break
+    sleep 0.1
+  done
+  sleep 0.5
+  ROBOT_ID=$id "$@"
+  local rc=$?
+  kill -TERM "$pid" 2>/dev/null
+  wait "$pid" 2>/dev/null
+  Run/shm --robot "$id" remove >/dev/null 2>&1
+  return $rc
+}
