@@ -44,33 +44,42 @@ return {
     torsoTimeConstant = 0.05,   -- s
     maxCorrection = 0.3,        -- rad, per joint
   },
-  -- kick (Player/Motion/kick.lua): phases reached one after the other, each over its duration.
-  -- Tuned in the sim (Tests/motion/kick_trace.sh): the hip and knee run at the servos' speed limit
-  -- through contact (toe ~1.8 m/s, ball ~1.8 m/s off the foot, ~1.1 m/s once rolling: ~1.2 m).
-  -- A longer kick was found (Tests/motion/sim_walk_test.sh kick, random search over the swing):
-  -- the same wind-up at x = 0.019, hip = 1.095, ankle = 0.283, then swing and follow-through with
-  --   height = 0.023, tilt = -0.653, lean = 0.053, x = 0.135, z = 0.03, hip = -1.737, knee = -0.246,
-  --   ankle = -1.359 (the support leg throws the torso back and forward while the kicking leg swings)
-  -- sends the ball 2.1-2.3 m (left) and 2.3-2.8 m (right) over seeds and gaps 0.09-0.11 m, but the
-  -- robot falls ~0.35 s after contact in every run: the swing spins it ~0.6 rad about the support
-  -- foot (yaw) while the support knee locks straight, and no recovery phase tried caught it.
+  -- kick (Player/Motion/kick.lua): the body's and the kicking leg's phases side by side.
+  -- Tuned in the sim (Tests/motion/kick_sweep.sh; random search scored by the shortest kick over
+  -- both feet and two ball gaps, with penalties for a fall, a capture point beyond 5 cm of the
+  -- support ankle and a turn): the hip, knee and ankle swing at the servos' speed limit while the
+  -- torso leans back smoothly (0.32 rad over 0.22 s: the leg swings faster in the world), both arms
+  -- swing back against the torso's pitch momentum. The foot lifts before it draws back (dragging
+  -- it turned the robot). The toe meets the ball low (ball ~2.1 m/s off the foot, ~1.3 m/s once
+  -- rolling): ~1.6 m. A faster throw of the torso tips the robot over its toes: it alone
+  -- (0.4 rad in 0.2 s, no swing) brings the capture point 14 cm ahead of the ankle; the kick found
+  -- before (2.1-2.8 m, torso thrown back 0.65 rad in one step and the body lunging 5 cm) fell
+  -- after every kick.
   kick = {
     supportY = 0.01,         -- m, COM over the support foot: outward from its ankle
-    phases = {
-      -- weight over the support foot, body a little higher
-      { duration = 0.6, shift = 1, height = 0.005 },
-      -- wind up: foot back and up, knee bent, toe down
-      { duration = 0.3, shift = 1, height = 0.005, x = -0.015, z = 0.06, hip = 0.87, knee = 1.4, ankle = 0.4 },
-      -- swing: a short phase, so the servos run at their speed limit (hip and knee together)
-      { duration = 0.025, shift = 1, height = 0.005, tilt = 0.05, x = 0.095, z = 0.02, hip = -1.75, knee = 0.15,
-        ankle = -0.5 },
-      -- follow through
-      { duration = 0.2, shift = 1, height = 0.005, tilt = 0.05, x = 0.095, z = 0.02, hip = -1.75, knee = 0.15,
-        ankle = -0.5 },
-      -- back, down, weight back to the middle
-      { duration = 0.3, shift = 1, z = 0.03 },
-      { duration = 0.3, shift = 1 },
-      { duration = 0.5, shift = 0 },
+    body = {
+      -- weight over the support foot
+      { duration = 0.45, shift = 1, height = -0.001, lean = -0.008 },
+      { duration = 0.478, shift = 1, height = -0.001, lean = 0.002 },
+      -- torso back, arms back, through the swing
+      { duration = 0.217, shift = 1, height = 0.014, lean = -0.023, tilt = -0.319, arms = 0.41 },
+      -- upright again, then the weight back to the middle
+      { duration = 0.35, shift = 1, lean = 0.023 },
+      { duration = 0.327, shift = 1 },
+      { duration = 0.45, shift = 0 },
+    },
+    leg = {
+      { duration = 0.45 },
+      -- lift, then wind up: foot back and up, knee bent, toe down
+      { duration = 0.15, z = 0.04 },
+      { duration = 0.356, x = -0.03, z = 0.05, hip = 0.573, knee = 1.531, ankle = 0.456, arm = 0.457 },
+      -- swing: a short phase, so the servos run at their speed limit; follow through
+      { duration = 0.025, x = 0.105, z = 0.032, hip = -1.701, knee = 0.145, ankle = -0.118, arm = 0.05 },
+      { duration = 0.134, x = 0.105, z = 0.032, hip = -1.701, knee = 0.145, ankle = -0.118, arm = 0.05 },
+      -- back, down
+      { duration = 0.406, x = -0.03, z = 0.04 },
+      { duration = 0.3 },
+      { duration = 0.45 },
     },
   },
   -- stance and transitions

@@ -41,7 +41,7 @@ function M.new(opts)
   local c = setmetatable({
     robot = robot, p = params, model = opts.model, n = n, platform = opts.platform,
     q = {}, h = {}, pos = {}, gyro = { 0, 0, 0 }, angle = { 0, 0, 0 }, acc = { 0, 0, 9.81 },
-    t = 0, dt = robot.period, want = 'stand', falls = 0, fall_time = -1,
+    t = 0, dt = robot.period, want = 'stand', falls = 0, fall_time = -1, tilt = 0,
     vel_cmd = { 0, 0, 0 }, head = { 0, 0 },
   }, Ctl)
   for i = 1, n do c.q[i], c.h[i], c.pos[i] = 0, 0, 0 end
@@ -96,10 +96,12 @@ function Ctl:request(name)
   return true
 end
 
--- True when the IMU says the robot is falling or lying.
+-- True when the IMU says the robot is falling or lying. The torso's pitch is compared with
+-- bodyTilt plus `tilt`: 0, or while kicking the pitch the support leg's joints give with its foot
+-- flat (the kick throws the torso back on purpose).
 function Ctl:fall_detected()
   local p = self.p
-  local roll, pitch = self.angle[1], self.angle[2] - p.bodyTilt
+  local roll, pitch = self.angle[1], self.angle[2] - p.bodyTilt - self.tilt
   local gx, gy = self.gyro[1], self.gyro[2]
   if abs(roll) > p.fallAngle or abs(pitch) > p.fallAngle then return true end
   -- tilted and still tilting further fast
