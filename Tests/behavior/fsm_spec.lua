@@ -1,3 +1,4 @@
+-- luacheck: std +busted
 -- Lib/fsm.lua: states as modules with entry/update/exit, transitions declared in one place.
 local fsm = require('fsm')
 

@@ -1,3 +1,4 @@
+-- luacheck: std +busted
 -- The behavior follows the game states sent by a GameController (packets built here, sent over UDP):
 -- initial, ready, set, playing, penalized and back. The robot's clock and vision frames are driven
 -- by the test (no simulator needed); what the behavior asks of the walk is read from the motion block.

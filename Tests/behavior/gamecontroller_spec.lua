@@ -1,3 +1,4 @@
+-- luacheck: std +busted
 -- GameController packets (HL layout, version 12) and the controller the robot follows.
 local packet = require('GameFSM.packet')
 local controller = require('GameFSM.controller')

@@ -1,3 +1,4 @@
+-- luacheck: std +busted
 -- The behavior (world model + game/head/body machines) closing the loop with an idealised robot:
 -- a kinematic stand-in for the motion process and the camera (the robot moves exactly as
 -- commanded, the camera sees what is inside its field of view with range noise, a kick sends

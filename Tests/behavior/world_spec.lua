@@ -1,3 +1,4 @@
+-- luacheck: std +busted
 -- The world model: ball filter moved by odometry; pose particle filter from goal posts.
 local ball_filter = require('World.ball_filter')
 local pose_filter = require('World.pose_filter')

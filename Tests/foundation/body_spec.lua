@@ -1,3 +1,4 @@
+-- luacheck: std +busted
 -- Body: joints by name and index, groups, clamping and NaN refusal before the actuator block.
 local Body = require('Body')
 local shm = require('shm')

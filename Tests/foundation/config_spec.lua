@@ -1,3 +1,4 @@
+-- luacheck: std +busted
 -- Config loader: errors name the file and the key.
 local Config = require('Config')
 

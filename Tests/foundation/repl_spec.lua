@@ -1,3 +1,4 @@
+-- luacheck: std +busted
 -- ./run_repl: -e and file modes, exit status, wait() in lockstep.
 local native = require('native')
 local root = native.root()

@@ -1,3 +1,4 @@
+-- luacheck: std +busted
 -- Shared memory across processes and languages: C writer / Lua reader and the reverse,
 -- consistency under concurrent writing, the Python reader, layout errors.
 local shm = require('shm')

@@ -1,3 +1,4 @@
+-- luacheck: std +busted
 -- Kinematics of the real configurations (OP3: Config/Sim/robot.lua; DARwIn-OP:
 -- Config/OP/kinematics.lua) through the Lua API: FK(IK(x)) = x over the workspace, known poses,
 -- unreachable and NaN targets, the OP3's COM against the reference, agreement with the URDF.

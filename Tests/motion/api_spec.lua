@@ -1,3 +1,4 @@
+-- luacheck: std +busted
 -- Motion and Walk APIs over the motion shm block, without a motion process.
 local shm = require('shm')
 local Motion = require('Motion')

@@ -1,3 +1,4 @@
+-- luacheck: std +busted
 -- The motion controller and keyframe player without a robot: the state machine's paths, keyframe
 -- file checks, fall detection from the IMU, requests.
 local Config = require('Config')

@@ -1,3 +1,4 @@
+-- luacheck: std +busted
 -- The OP platform's motion configs (Config/OP: walk.lua, keyframes) for both robots it drives,
 -- checked offline against that robot's own kinematic model: every walk target reachable and every
 -- joint inside the platform's limits at the walk's top speeds, keyframes loadable.

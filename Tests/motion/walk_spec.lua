@@ -1,3 +1,4 @@
+-- luacheck: std +busted
 -- The walk generator alone (no robot): LIPM solution, foot placement, limits, start and stop.
 local lipm = require('Motion.lipm')
 local Walk = require('Motion.walk')

@@ -1,3 +1,4 @@
+-- luacheck: std +busted
 -- Lib/camera.lua: the dummy driver publishes into camera.image; the sim driver reads it.
 local ffi = require('ffi')
 local camera = require('camera')

@@ -1,3 +1,4 @@
+-- luacheck: std +busted
 -- Projection and ball detection on frames ray-cast by the test itself (green ground, orange
 -- sphere of 0.14 m, grey above the horizon) from the OP3's camera pose (Lib/kinematics), seeded
 -- random ball positions and head angles: the detector's range and bearing against the truth.

@@ -1,3 +1,4 @@
+-- luacheck: std +busted
 -- Lib/imageproc.lua: LUT from colour boxes, LUT files, the pipeline on a synthetic frame.
 local ffi = require('ffi')
 local imageproc = require('imageproc')
