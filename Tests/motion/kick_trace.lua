@@ -23,6 +23,7 @@ for _ = 1, 300 do
   wait(0.1)
 end
 
+require('kick_measure').apply_env(wait)   -- KICK_PARAMS=file.lua: a tuned set
 local r0 = ks.setup(Sim, Motion, wait, side, gap)
 local b0 = r0.ball
 local bf0 = ks.ball_in_foot(side, Body.get_positions(), r0)
