@@ -3,6 +3,7 @@
 -- kinematics and the kicking foot's toe point in the world from the sim's truth.
 local Body = require('Body')
 local kin = require('kinematics')
+local shm = require('shm')
 
 local M = {}
 
@@ -17,6 +18,17 @@ local function get_model()
 end
 
 local LEG = { 'hip_yaw', 'hip_roll', 'hip_pitch', 'knee', 'ank_pitch', 'ank_roll' }
+
+-- Waits (robot time, up to 30 s) until the motion process runs: its tick follows the DCM's.
+-- Returns the `motion` shm block, or nil when the motion process is not running.
+function M.wait_for_motion(wait)
+  local motion = shm.open('motion')
+  for _ = 1, 300 do
+    if motion.tick[0] ~= 0 and Body.get_tick() - motion.tick[0] <= 2 then return motion end
+    wait(0.1)
+  end
+  return nil
+end
 
 -- leg joint angles (or velocities with get = Body.get_velocity) of one side
 function M.leg(side, get)

@@ -1,6 +1,11 @@
-# Sourced by the kick tools (Tests/motion/kick_trace.sh, kick_sweep.sh): runs a command for one
-# robot while its motion process runs alone with the sim in lockstep, then stops both.
+# Sourced by the kick tools (Tests/motion/kick_trace.sh, kick_sweep.sh, kick_tune.sh): moves to the
+# project's root, sets up its environment and KICK_LOGS (build/test-logs/kick); kick_sim_run runs a
+# command for one robot while its motion process runs alone with the sim in lockstep, then stops both.
 #   kick_sim_run ID LOG COMMAND...     (SIM_SEED: the sim's seed, default 1; returns COMMAND's status)
+cd "$(dirname "${BASH_SOURCE[0]}")/../.." || exit 1
+source Run/env.sh
+KICK_LOGS=$HRP_ROOT/build/test-logs/kick
+mkdir -p "$KICK_LOGS"
 kick_sim_run() {
   local id=$1 log=$2; shift 2
   ROBOT_ID=$id ./run_main --sim --quiet --no-restart --dcm-arg --lockstep --dcm-arg --seed --dcm-arg "${SIM_SEED:-1}" \

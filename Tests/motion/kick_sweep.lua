@@ -10,7 +10,6 @@ if not Sim then
 end
 package.path = os.getenv('HRP_ROOT') .. '/Tests/motion/?.lua;' .. package.path
 local km = require('kick_measure')
-local shm = require('shm')
 
 local function list(s, default)
   local t = {}
@@ -19,11 +18,7 @@ local function list(s, default)
 end
 local sides, gaps, lats = list(arg[1], 'left,right'), list(arg[2], '0.1'), list(arg[3], '0')
 
-local motion = shm.open('motion')
-for _ = 1, 300 do
-  if motion.tick[0] ~= 0 and Body.get_tick() - motion.tick[0] <= 2 then break end
-  wait(0.1)
-end
+assert(require('kick_setup').wait_for_motion(wait), 'the motion process is not running')
 
 km.apply_env(wait)   -- KICK_PARAMS=file.lua: a tuned set (kick_tune.lua) instead of the config's
 local env = { Sim = Sim, Motion = Motion, wait = wait, Body = Body }

@@ -16,12 +16,7 @@ local ks = require('kick_setup')
 local kin = require('kinematics')
 
 local side, out, gap = arg[1] or 'left', arg[2] or 'kick.csv', tonumber(arg[3]) or 0.1
-local shm = require('shm')
-local motion = shm.open('motion')
-for _ = 1, 300 do
-  if motion.tick[0] ~= 0 and Body.get_tick() - motion.tick[0] <= 2 then break end
-  wait(0.1)
-end
+assert(require('kick_setup').wait_for_motion(wait), 'the motion process is not running')
 
 require('kick_measure').apply_env(wait)   -- KICK_PARAMS=file.lua: a tuned set
 local r0 = ks.setup(Sim, Motion, wait, side, gap)

@@ -4,11 +4,9 @@
 # writes OUTDIR/kick_SIDE.csv and OUTDIR/kick_SIDE.png (default OUTDIR build/test-logs/kick) and
 # prints the figures (ball distance, toe speed at contact, peak ball speed, where the ball met the foot).
 set -u
-cd "$(dirname "$0")/../.."
-source Run/env.sh
-source Tests/motion/kick_sim.sh
+source "$(dirname "$0")/kick_sim.sh"
 side=${1:-left}; gap=${2:-0.1}
-out=${3:-$HRP_ROOT/build/test-logs/kick}
+out=${3:-$KICK_LOGS}
 mkdir -p "$out"
 kick_sim_run "${ROBOT_ID:-9290}" "$out/main_$side.log" \
   timeout 300 ./run_repl Tests/motion/kick_trace.lua "$side" "$out/kick_$side.csv" "$gap"

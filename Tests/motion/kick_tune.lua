@@ -13,7 +13,6 @@
 package.path = os.getenv('HRP_ROOT') .. '/Tests/motion/?.lua;' .. package.path
 local km = require('kick_measure')
 local Walk = require('Walk')
-local shm = require('shm')
 
 local generations, seed, out = tonumber(arg[1]) or 30, tonumber(arg[2]) or 1, arg[3] or 'kick_best.lua'
 local spread = tonumber(arg[4]) or 1
@@ -81,11 +80,7 @@ local function save(x, score)
   f:close()
 end
 
-local motion = shm.open('motion')
-for _ = 1, 300 do
-  if motion.tick[0] ~= 0 and Body.get_tick() - motion.tick[0] <= 2 then break end
-  wait(0.1)
-end
+assert(require('kick_setup').wait_for_motion(wait), 'the motion process is not running')
 
 km.apply_env(wait)   -- start from KICK_PARAMS when given
 local mean, sd = {}, {}

@@ -26,13 +26,10 @@ if not Sim or not Motion or not Walk then
   os.exit(1)
 end
 
--- waits (robot time) until the motion process runs: its tick follows the DCM's
-local motion = shm.open('motion')
-for _ = 1, 300 do
-  if motion.tick[0] ~= 0 and Body.get_tick() - motion.tick[0] <= 2 then break end
-  wait(0.1)
-end
-if Body.get_tick() - motion.tick[0] > 2 then
+package.path = os.getenv('HRP_ROOT') .. '/Tests/motion/?.lua;' .. package.path
+local ks = require('kick_setup')
+local motion = ks.wait_for_motion(wait)
+if not motion then
   tap(false, 'the motion process is not running')
   os.exit(1)
 end
@@ -238,8 +235,6 @@ end
 -- about 2 m on this carpet (Config/Sim/sim.lua); off the foot it slides first and keeps ~0.6 of
 -- its speed unless the foot gives it topspin.
 local function kick_one(side, gap)
-  package.path = os.getenv('HRP_ROOT') .. '/Tests/motion/?.lua;' .. package.path
-  local ks = require('kick_setup')
   local r0 = ks.setup(Sim, Motion, wait, side, gap)
   local b0 = r0.ball
   local falls0 = motion.falls[0]
