@@ -45,24 +45,24 @@ return {
     maxCorrection = 0.3,        -- rad, per joint
   },
   -- kick (Player/Motion/kick.lua): the body's and the kicking leg's phases side by side.
-  -- Tuned in the sim (Tests/motion/kick_sweep.sh; random search scored by the shortest kick over
-  -- both feet and two ball gaps, with penalties for a fall, a capture point beyond 5 cm of the
-  -- support ankle and a turn): the hip, knee and ankle swing at the servos' speed limit while the
-  -- torso leans back smoothly (0.32 rad over 0.22 s: the leg swings faster in the world), both arms
-  -- swing back against the torso's pitch momentum. The foot lifts before it draws back (dragging
-  -- it turned the robot). The toe meets the ball low (ball ~2.1 m/s off the foot, ~1.3 m/s once
-  -- rolling): ~1.6 m. A faster throw of the torso tips the robot over its toes: it alone
-  -- (0.4 rad in 0.2 s, no swing) brings the capture point 14 cm ahead of the ankle; the kick found
-  -- before (2.1-2.8 m, torso thrown back 0.65 rad in one step and the body lunging 5 cm) fell
-  -- after every kick.
+  -- Tuned in the sim (Tests/motion/kick_tune.sh: cross-entropy search over both feet, ball gaps
+  -- 0.08/0.12 m and lateral offsets, penalised for a fall, a capture point beyond 5 cm of the
+  -- support ankle and a turn; checked with Tests/motion/kick_sweep.sh): the hip, knee and ankle
+  -- swing at the servos' speed limit while the torso leans back (0.37 rad over 0.17 s: the leg
+  -- swings faster in the world) and both arms swing back against the torso's pitch momentum. The
+  -- foot lifts before it draws back (dragging it turned the robot). The ball is met while the leg
+  -- already heads for the return phase's targets, so those shape the strike too. Ball ~2.5 m/s
+  -- off the foot, ~1.6 m/s once rolling: 1.99-2.57 m over 90 kicks (5 seeds, gaps 0.08-0.12 m,
+  -- lateral -0.03..+0.03 m), no fall. The servos' 4.8 rad/s is the limit: the toe meets the ball
+  -- at ~2.1 m/s.
   kick = {
     supportY = 0.01,         -- m, COM over the support foot: outward from its ankle
     body = {
       -- weight over the support foot
       { duration = 0.45, shift = 1, height = -0.001, lean = -0.008 },
-      { duration = 0.478, shift = 1, height = -0.001, lean = 0.002 },
+      { duration = 0.5248, shift = 1, height = -0.001, lean = 0.002 },
       -- torso back, arms back, through the swing
-      { duration = 0.217, shift = 1, height = 0.014, lean = -0.023, tilt = -0.319, arms = 0.41 },
+      { duration = 0.1705, shift = 1, height = 0.0183, lean = -0.0487, tilt = -0.3677, arms = 0.4037 },
       -- upright again, then the weight back to the middle
       { duration = 0.35, shift = 1, lean = 0.023 },
       { duration = 0.327, shift = 1 },
@@ -71,13 +71,13 @@ return {
     leg = {
       { duration = 0.45 },
       -- lift, then wind up: foot back and up, knee bent, toe down
-      { duration = 0.15, z = 0.04 },
-      { duration = 0.356, x = -0.03, z = 0.05, hip = 0.573, knee = 1.531, ankle = 0.456, arm = 0.457 },
+      { duration = 0.0987, z = 0.0429 },
+      { duration = 0.3214, x = -0.024, z = 0.0596, hip = 0.6716, knee = 1.481, ankle = 0.4513, arm = 0.3252 },
       -- swing: a short phase, so the servos run at their speed limit; follow through
-      { duration = 0.025, x = 0.105, z = 0.032, hip = -1.701, knee = 0.145, ankle = -0.118, arm = 0.05 },
-      { duration = 0.134, x = 0.105, z = 0.032, hip = -1.701, knee = 0.145, ankle = -0.118, arm = 0.05 },
+      { duration = 0.0391, x = 0.096, z = 0.0314, hip = -1.725, knee = -0.0192, ankle = 0.2199, arm = 0.2685 },
+      { duration = 0.0892, x = 0.096, z = 0.0314, hip = -1.725, knee = -0.0192, ankle = 0.2199, arm = 0.2685 },
       -- back, down
-      { duration = 0.406, x = -0.03, z = 0.04 },
+      { duration = 0.406, x = -0.03, z = 0.04, hip = 0, knee = 0, ankle = 0 },
       { duration = 0.3 },
       { duration = 0.45 },
     },

@@ -7,8 +7,9 @@
 -- only just keeps its balance in the sim would not on the robot.
 --   ./run_repl Tests/motion/kick_tune.lua GENERATIONS SEED OUT.lua [SPREAD]
 -- Prints every set's figures and score; OUT.lua gets the best set (as Walk.set paths) after each
--- generation. KICK_PARAMS=file.lua (such a file) starts from it; SPREAD scales the sampling spread
--- (default 1; smaller to refine a tuned set). Run by Tests/motion/kick_tune.sh.
+-- generation, OUT_mean.lua the next generation's mean (the more robust choice). KICK_PARAMS=file.lua
+-- (such a file) starts from it; SPREAD scales the sampling spread (default 1; smaller to refine).
+-- Run by Tests/motion/kick_tune.sh.
 -- luacheck: globals Sim Motion wait arg Body
 package.path = os.getenv('HRP_ROOT') .. '/Tests/motion/?.lua;' .. package.path
 local km = require('kick_measure')
@@ -43,6 +44,13 @@ local P = {
   { 'kick.leg.4.ankle', 0.12, -1.0, 0.6 },
   { 'kick.leg.4.arm', 0.1, -0.5, 1.0 },
   { 'kick.leg.5.duration', 0.03, 0.05, 0.3 },
+  -- the ball is met while the leg already heads for the return phase's targets
+  { 'kick.leg.6.duration', 0.05, 0.15, 0.6 },
+  { 'kick.leg.6.x', 0.015, -0.08, 0.1 },
+  { 'kick.leg.6.z', 0.012, 0.0, 0.1 },
+  { 'kick.leg.6.hip', 0.1, -1.0, 1.0 },
+  { 'kick.leg.6.knee', 0.1, -0.5, 1.5 },
+  { 'kick.leg.6.ankle', 0.1, -1.0, 1.0 },
 }
 local KICKS = { { 'left', 0.08, 0 }, { 'right', 0.08, 0 }, { 'left', 0.12, 0 }, { 'right', 0.12, 0 },
   { 'left', 0.1, 0.025 }, { 'right', 0.1, -0.025 } }
@@ -72,8 +80,8 @@ local function evaluate(x)
   return worst + sum / #KICKS - pen, worst, sum / #KICKS, lines
 end
 
-local function save(x, score)
-  local f = assert(io.open(out, 'w'))
+local function save(x, score, file)
+  local f = assert(io.open(file or out, 'w'))
   f:write(string.format('-- kick_tune seed %d: score %.3f\nreturn {\n', seed, score))
   for i, p in ipairs(P) do f:write(string.format("  ['%s'] = %.4f,\n", p[1], x[i])) end
   f:write('}\n')
@@ -111,5 +119,6 @@ for g = 1, generations do
     sd[i] = math.max(P[i][2] * spread * 0.15, 0.6 * sd[i] + 0.4 * math.sqrt(v))
   end
   print(string.format('gen %d: best %.3f, generation best %.3f', g, best, pop[1].score))
+  save(mean, pop[1].score, (out:gsub('%.lua$', '')) .. '_mean.lua')
 end
 save(best_x, best)
