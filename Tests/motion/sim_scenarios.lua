@@ -259,7 +259,8 @@ local function kick_one(side, gap)
   note('kick %s: toe forward speed before contact %.2f m/s, ball speed after contact %.2f m/s, 0.3 s ' ..
     'later (rolling) %.2f m/s; ball travelled %.2f m; the robot turned %.2f rad', side, toe_contact or 0, launch,
     rolling or 0, d, wrap(r1.yaw - r0.yaw))
-  tap(d >= 2.0, string.format('kick %s: a ball %.2f m ahead of the foot travels >= 2 m (%.2f m)', side, gap, d))
+  tap(d >= 2.0, string.format('kick %s: a ball (its centre %.2f m ahead of the toe) travels >= 2 m (%.2f m)',
+    side, gap, d))
   wait(1)
   -- a fall and a stand-up during the waits would end in stance too: the fall counter must not move
   tap(motion.falls[0] == falls0 and not Sim.truth().fallen and Motion.state() == 'stance',
