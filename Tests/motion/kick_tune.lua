@@ -52,8 +52,16 @@ local P = {
   { 'kick.leg.6.knee', 0.1, -0.5, 1.5 },
   { 'kick.leg.6.ankle', 0.1, -1.0, 1.0 },
 }
+-- the kicks of one evaluation: side, gap, lateral; KICK_SET='left:0.08:0,right:0.17:0' replaces them
 local KICKS = { { 'left', 0.08, 0 }, { 'right', 0.08, 0 }, { 'left', 0.12, 0 }, { 'right', 0.12, 0 },
   { 'left', 0.1, 0.025 }, { 'right', 0.1, -0.025 } }
+if os.getenv('KICK_SET') then
+  KICKS = {}
+  for side, gap, lat in os.getenv('KICK_SET'):gmatch('(%a+):([%d.]+):([-%d.]+)') do
+    KICKS[#KICKS + 1] = { side, tonumber(gap), tonumber(lat) }
+  end
+  assert(#KICKS > 0, 'KICK_SET: side:gap:lateral,... expected')
+end
 local POP, ELITE = 10, 4
 
 local function gauss()
