@@ -1,6 +1,7 @@
--- Kick scenario helpers shared by Tests/motion/sim_scenarios.lua (the pass/fail kick) and
--- Tests/motion/kick_trace.lua (the per-tick log): ball placement from the foot's forward
--- kinematics and the kicking foot's toe point in the world from the sim's truth.
+-- Kick scenario helpers shared by Tests/motion/sim_scenarios.lua (the pass/fail kick) and the kick
+-- tools (kick_trace, kick_measure, kick_sweep, kick_tune): ball placement from the foot's forward
+-- kinematics, the kicking foot's toe point in the world from the sim's truth, and waiting for the
+-- motion process (which every scenario needs first).
 local Body = require('Body')
 local kin = require('kinematics')
 local shm = require('shm')

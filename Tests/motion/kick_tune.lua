@@ -9,7 +9,8 @@
 -- Prints every set's figures and score; OUT.lua gets the best set (as Walk.set paths) after each
 -- generation, OUT_mean.lua the next generation's mean (the more robust choice). KICK_PARAMS=file.lua
 -- (such a file) starts from it; SPREAD scales the sampling spread (default 1; smaller to refine).
--- Run by Tests/motion/kick_tune.sh.
+-- Run by Tests/motion/kick_tune.sh. To keep a result, copy its values into the kick phases of
+-- Config/<PLATFORM>/walk.lua (kick.leg.5 holds kick.leg.4's targets) and check it with kick_sweep.sh.
 -- luacheck: globals Sim Motion wait arg Body
 package.path = os.getenv('HRP_ROOT') .. '/Tests/motion/?.lua;' .. package.path
 local km = require('kick_measure')
@@ -88,9 +89,9 @@ local function evaluate(x)
   return worst + sum / #KICKS - pen, worst, sum / #KICKS, lines
 end
 
-local function save(x, score, file)
+local function save(x, what, file)
   local f = assert(io.open(file or out, 'w'))
-  f:write(string.format('-- kick_tune seed %d: score %.3f\nreturn {\n', seed, score))
+  f:write(string.format('-- kick_tune seed %d: %s\nreturn {\n', seed, what))
   for i, p in ipairs(P) do f:write(string.format("  ['%s'] = %.4f,\n", p[1], x[i])) end
   f:write('}\n')
   f:close()
@@ -116,7 +117,7 @@ for g = 1, generations do
       c == 1 and ' [mean]' or ''))
     for _, l in ipairs(lines) do print('#   ' .. l) end
     io.stdout:flush()
-    if score > best then best, best_x = score, x save(x, score) end
+    if score > best then best, best_x = score, x save(x, string.format('score %.3f', score)) end
   end
   table.sort(pop, function(a, b) return a.score > b.score end)
   for i = 1, #P do
@@ -127,6 +128,6 @@ for g = 1, generations do
     sd[i] = math.max(P[i][2] * spread * 0.15, 0.6 * sd[i] + 0.4 * math.sqrt(v))
   end
   print(string.format('gen %d: best %.3f, generation best %.3f', g, best, pop[1].score))
-  save(mean, pop[1].score, (out:gsub('%.lua$', '')) .. '_mean.lua')
+  save(mean, string.format('mean after generation %d (not yet scored)', g), (out:gsub('%.lua$', '')) .. '_mean.lua')
 end
-save(best_x, best)
+save(best_x, string.format('score %.3f', best))
