@@ -3,6 +3,14 @@
 -- Joint names, order, groups and limits come from the body's robot.lua (Config/robots/<ROBOT>/). A command beyond
 -- a joint's limit is clamped (counted in body.stats.clamped); a NaN or infinite command is refused
 -- (counted in body.stats.refused) and never reaches dcm.actuator.
+--
+-- Commands and the motion process (Player/Motion): motion drives the joints its current state
+-- owns and holds the others (Motion.owners() tells which). A command through Body for a joint
+-- motion drives (set_command, set_commands, set_head_command ...) takes that joint from motion:
+-- motion then writes the caller's command for it (motion.taken / taken_command) until
+-- Body.release(group or joint) or a motion request whose state needs it (Motion.request('walk')
+-- takes the head back for behavior). A joint motion holds is simply commanded. Hardness is not
+-- taken: set it on a joint motion holds, or after the command that takes it.
 local shm = require('shm')
 local Config = require('Config')
 
@@ -13,6 +21,7 @@ local robot_file = table.concat(Config.files('robot'), ' + ')
 local sensor = shm.open('dcm.sensor')
 local actuator = shm.open('dcm.actuator')
 local stats = shm.open('body.stats')
+local motion = shm.lazy('motion')
 
 local names = {}
 local index = {}
@@ -71,19 +80,28 @@ function M.group(name)
   return t
 end
 
--- Stores a checked command; returns false if refused.
-local function put_command(i, rad)
+-- Stores a checked command (clamped, NaN refused); returns false if refused. take: a caller's
+-- command, which takes the joint from the motion process while motion drives it.
+local function put_command(i, rad, take)
   if not finite(rad) then
     stats.refused[0] = stats.refused[0] + 1
     return false
   end
   if rad < lo[i] then rad = lo[i]; stats.clamped[0] = stats.clamped[0] + 1
   elseif rad > hi[i] then rad = hi[i]; stats.clamped[0] = stats.clamped[0] + 1 end
+  if take then
+    local m = motion()
+    if m.owner[i - 1] ~= 0 or m.taken[i - 1] ~= 0 then
+      m:write(function(b) b.taken_command[i - 1], b.taken[i - 1] = rad, 1 end)
+    end
+  end
   command[i - 1] = rad
   return true
 end
 
-function M.set_command(joint, rad) return put_command(joint_index(joint), rad) end
+function M.set_command(joint, rad) return put_command(joint_index(joint), rad, true) end
+-- The motion process's own command: does not take the joint (see the header).
+function M.drive(joint, rad) return put_command(joint_index(joint), rad, false) end
 function M.get_command(joint) return command[joint_index(joint) - 1] end
 function M.get_position(joint) return position[joint_index(joint) - 1] end
 function M.get_velocity(joint) return velocity[joint_index(joint) - 1] end
@@ -102,7 +120,7 @@ function M.set_torque_enable(joint, on) torque[joint_index(joint) - 1] = on and 
 -- All joints at once: tables in joint order (1-based).
 function M.set_commands(t)
   local ok = true
-  for i = 1, njoint do if t[i] ~= nil then ok = put_command(i, t[i]) and ok end end
+  for i = 1, njoint do if t[i] ~= nil then ok = put_command(i, t[i], true) and ok end end
   return ok
 end
 function M.get_commands() local t = {} for i = 1, njoint do t[i] = command[i - 1] end return t end
@@ -116,7 +134,7 @@ local function group_setter(gname)
     if not g then error("Body: this robot has no joint group '" .. gname .. "'", 2) end
     local ok = true
     for k, i in ipairs(g) do
-      if values[k] ~= nil then ok = put_command(i, values[k]) and ok end
+      if values[k] ~= nil then ok = put_command(i, values[k], true) and ok end
     end
     return ok
   end
@@ -157,6 +175,23 @@ M.set_larm_hardness = group_hardness('larm')
 M.set_rarm_hardness = group_hardness('rarm')
 M.set_lleg_hardness = group_hardness('lleg')
 M.set_rleg_hardness = group_hardness('rleg')
+
+-- Gives joints taken by a caller back to the motion process: a group name ('head'), a joint (name
+-- or index), or nil for every joint.
+function M.release(what)
+  local list
+  if what == nil then
+    list = {}
+    for i = 1, njoint do list[i] = i end
+  elseif type(what) == 'string' and groups[what] then
+    list = groups[what]
+  else
+    list = { joint_index(what) }
+  end
+  motion():write(function(b) for _, i in ipairs(list) do b.taken[i - 1] = 0 end end)
+end
+-- True while a caller holds the joint (name or index) taken from the motion process.
+function M.taken(joint) return motion().taken[joint_index(joint) - 1] ~= 0 end
 
 -- Sensors.
 local function vec3(p) return { p[0], p[1], p[2] } end

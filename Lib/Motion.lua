@@ -3,6 +3,9 @@
 --   Motion.request('walk')     -- relax, sit, stand, walk, kick_left, kick_right
 --   Motion.state()             -- 'stance', 'walk', 'falling', 'standup_front', ...
 --   Motion.falls()             -- falls detected since the motion process started
+--   Motion.owners()            -- per joint group: 'motion' (its state drives it), 'caller' (taken with
+--                              -- Body.set_*_command, see Lib/Body.lua), 'held' (nobody: it holds), 'mixed'
+--   Motion.owner('head_pan')   -- the same for one joint
 --
 -- Talks to the motion process (Player/Motion/main.lua) through the `motion` shm block: a request
 -- is the index of a state in Motion.STATES plus a bumped request_seq; the process picks it up at
@@ -50,6 +53,39 @@ function M.requested()
   local r = motion().request[0]
   if r < 0 then return nil end
   return M.STATES[r + 1]
+end
+
+local WHO = { [0] = 'held', [1] = 'motion', [2] = 'caller' }
+local robot
+local function body()
+  robot = robot or require('Config').load('robot', { joints = 'table', groups = 'table' })
+  return robot
+end
+
+-- Who drives a joint (name or 1-based index): 'motion', 'caller' or 'held'.
+function M.owner(joint)
+  local names, i = body().joints, joint
+  if type(joint) == 'string' then
+    for k, name in ipairs(names) do if name == joint then i = k end end
+  end
+  if type(i) ~= 'number' or not names[i] then error("Motion.owner: unknown joint '" .. tostring(joint) .. "'", 2) end
+  return WHO[motion().owner[i - 1]] or 'unknown'
+end
+
+-- Who drives each joint group of the body: { head = 'motion', waist = 'held', ... }.
+function M.owners()
+  local r, names, res = body(), {}, {}
+  for k, name in ipairs(r.joints) do names[name] = k end
+  local owner = motion().owner
+  for g, members in pairs(r.groups) do
+    local who
+    for _, name in ipairs(members) do
+      local w = WHO[owner[names[name] - 1]] or 'unknown'
+      if who == nil then who = w elseif who ~= w then who = 'mixed' end
+    end
+    res[g] = who or 'held'
+  end
+  return res
 end
 
 function M.falls() return motion().falls[0] end

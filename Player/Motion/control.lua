@@ -6,6 +6,18 @@
 -- stance, walk, kick_left, kick_right, falling, standup_front, standup_back. Requests (relax,
 -- sit, stand, walk, kick_left, kick_right) are wishes: `ctl.want` holds the last one and the
 -- states move towards it (relax at once from anywhere; the rest through stance).
+--
+-- Who drives a joint (as ROBOTIS' motion modules: each owns the joints it drives): every tick
+-- starts from the hold pose (ctl.q, ctl.h: the last commands, or what the actuators held when the
+-- process started). A state declares the joints it owns in its module's `owns`: a list of roles
+-- (legs: the leg IK's joints; arms: the joints the walk config's `arms` names; head: the first two
+-- joints of the body's `head` group, moved by motion.head_command; all: every joint) or a
+-- function(ctl) returning joint indices (the keyframe states: the joints their files name). After
+-- the state's update only its joints keep what it wrote; every other joint holds, so a joint no
+-- state owns (a waist) keeps its position and can be commanded from outside. A joint a caller has
+-- taken (ctl.taken[i], Body.set_command & co. while motion drives it; see Player/Motion/main.lua)
+-- gets the caller's command (ctl.taken_q[i]) instead, until released. ctl.write[i] says which
+-- joints the process writes this tick; ctl.owner[i]: 0 held, 1 the state, 2 a caller.
 local fsm = require('fsm')
 local Motion = require('Motion')
 local Walk = require('Motion.walk')
@@ -33,8 +45,51 @@ local TRANSITIONS = {
 -- states in which a fall is watched for (the stand-ups check the result themselves)
 local WATCH_FALL = { stance = true, walk = true, kick_left = true, kick_right = true }
 
+local ROLES = { legs = true, arms = true, head = true, all = true }
+
+-- The joints of each role, from the robot data (robot.lua's groups, the walk config's arms).
+local function roles(c, robot)
+  local w, n = c.walk, c.n
+  local r = { legs = {}, arms = {}, head = {}, all = {} }
+  for i = 1, n do r.all[i] = i end
+  for _, side in ipairs({ Walk.LEFT, Walk.RIGHT }) do
+    for _, i in ipairs(w.legs[side]) do r.legs[#r.legs + 1] = i end
+  end
+  table.sort(r.legs)
+  for k, i in ipairs(w.arm_joints) do r.arms[k] = i end
+  local head = rawget(robot.groups, 'head') or {}
+  for k = 1, math.min(2, #head) do
+    r.head[k] = c.ji[head[k]] or error(string.format("robot config: group 'head' names unknown joint '%s'",
+      tostring(head[k])), 3)
+  end
+  return r
+end
+
+-- The body as keyframe files see it (Player/Motion/keyframe.lua): joint indices by name and the
+-- mirror twin of a left-side joint with the sign from the two axes. ji: indices by name (optional).
+function M.keyframe_body(robot, model, ji)
+  if not ji then
+    ji = {}
+    for i, name in ipairs(robot.joints) do ji[name] = i end
+  end
+  local function mirror(name)
+    local base = type(name) == 'string' and name:match('^l_(.+)$')
+    if not base then return nil, "only left-side joints (l_...) are mirrored" end
+    local twin = 'r_' .. base
+    if not ji[twin] then return nil, "the body has no joint '" .. twin .. "' to mirror it onto" end
+    local a, b = Walk.joint_axis(robot, model, name), Walk.joint_axis(robot, model, twin)
+    -- the mirror image (through the x-z plane) of a rotation about a is one about (-ax, ay, -az)
+    local d = -a[1] * b[1] + a[2] * b[2] - a[3] * b[3]
+    if abs(abs(d) - 1) > 1e-6 then
+      return nil, string.format("the axes of '%s' and '%s' are not mirror images", name, twin)
+    end
+    return ji[twin], d > 0 and 1 or -1, twin
+  end
+  return { index = ji, mirror = mirror }
+end
+
 -- opts: robot (Config robot table), params (walk config, read live), model (kinematics),
--- initial (state name, default 'stance').
+-- initial (state name, default 'stance'), walk_files (the walk config's files, for errors).
 function M.new(opts)
   local robot, params = opts.robot, opts.params
   local n = #robot.joints
@@ -43,23 +98,23 @@ function M.new(opts)
     q = {}, h = {}, pos = {}, gyro = { 0, 0, 0 }, angle = { 0, 0, 0 }, acc = { 0, 0, 9.81 },
     t = 0, dt = robot.period, want = 'stand', falls = 0, fall_time = -1, tilt = 0,
     vel_cmd = { 0, 0, 0 }, head = { 0, 0 },
+    hold_q = {}, hold_h = {}, owned = {}, taken = {}, taken_q = {}, write = {}, owner = {}, touch = {},
+    owns_cache = {}, data = {},
   }, Ctl)
-  for i = 1, n do c.q[i], c.h[i], c.pos[i] = 0, 0, 0 end
+  for i = 1, n do
+    c.q[i], c.h[i], c.pos[i], c.taken_q[i] = 0, 0, 0, 0
+    c.owned[i], c.taken[i], c.write[i], c.owner[i] = false, false, false, 0
+  end
   c.sensors = { gyro = c.gyro, position = c.pos, angle = c.angle, acc = c.acc }
-  c.walk = Walk.new(params, opts.model):bind(robot)
+  c.walk = Walk.new(params, opts.model):bind(robot, opts.walk_files)
   c.kick = Kick.new(c.walk)
   c.ji = c.walk.ji
-  -- hardness groups
-  c.group = {}
-  for gname, members in pairs(robot.groups) do
-    local idx = {}
-    for k, name in ipairs(members) do idx[k] = c.ji[name] end
-    c.group[gname] = idx
-  end
+  c.roles = roles(c, robot)
   -- keyframe motions are checked at start: a bad file stops the process with the file named
   c.keyframes = {}
+  local body = M.keyframe_body(robot, opts.model, c.ji)
   for _, name in ipairs({ 'sit', 'standup_front', 'standup_back' }) do
-    c.keyframes[name] = keyframe.load(name, n, robot.name)
+    c.keyframes[name] = keyframe.load(name, body, robot.name)
   end
   c.machine = fsm.new({
     name = 'motion',
@@ -67,25 +122,95 @@ function M.new(opts)
     load = function(s) return require('Motion.states.' .. s) end,
     initial = opts.initial or 'stance',
     transitions = TRANSITIONS,
-    on_transition = function(_, from) c.prev = from end,
+    on_transition = function(_, from, to) c:hand_over(from, to) end,
   })
+  for _, s in ipairs(Motion.STATES) do c:joints_of(s) end -- a bad `owns` fails here
   return c
 end
 
--- Sets the hardness of the standard groups: legs, arms, head.
-function Ctl:set_hardness(legs, arms, head)
-  local h, g = self.h, self.group
-  for _, i in ipairs(g.lleg) do h[i] = legs end
-  for _, i in ipairs(g.rleg) do h[i] = legs end
-  for _, i in ipairs(g.larm) do h[i] = arms end
-  for _, i in ipairs(g.rarm) do h[i] = arms end
-  for _, i in ipairs(g.head) do h[i] = head end
+-- The joints state `s` owns (1-based indices, ascending; see the header).
+function Ctl:joints_of(s)
+  local list = self.owns_cache[s]
+  if list then return list end
+  local owns = self.machine.modules[s].owns
+  local set = {}
+  if type(owns) == 'function' then
+    for _, i in ipairs(owns(self)) do set[i] = true end
+  elseif type(owns) == 'table' then
+    for _, role in ipairs(owns) do
+      if not ROLES[role] then
+        error(string.format("motion state '%s': owns unknown role '%s'", s, tostring(role)), 0)
+      end
+      for _, i in ipairs(self.roles[role]) do set[i] = true end
+    end
+  else
+    error(string.format("motion state '%s': no `owns` (the joints it drives)", s), 0)
+  end
+  list = {}
+  for i in pairs(set) do list[#list + 1] = i end
+  table.sort(list)
+  self.owns_cache[s] = list
+  return list
 end
 
--- Head angles requested by behavior (motion.head_command) into q.
+-- A state change: the new state's joints become owned, the rest held. Coming out of relax (or at
+-- start), held joints stiffen to hardnessHold at their last command: relax let them go.
+function Ctl:hand_over(from, to)
+  self.prev = from
+  local owned = self.owned
+  for i = 1, self.n do owned[i] = false end
+  local own = self:joints_of(to)
+  for _, i in ipairs(own) do owned[i] = true end
+  self.own = own
+  if (from == nil or from == 'relax') and to ~= 'relax' then
+    local h = self.p.hardnessHold
+    for i = 1, self.n do
+      if not owned[i] then self.h[i], self.hold_h[i], self.touch[i] = h, h, true end
+    end
+  end
+end
+
+-- Takes in what others did since the last tick (0-based arrays, as in shm): the commands and
+-- hardness of the joints the current state does not drive (the hold pose follows them), and which
+-- joints a caller took, with the caller's commands.
+function Ctl:sync(command, hardness, taken, taken_command)
+  local owned = self.owned
+  for i = 1, self.n do
+    local tk = taken[i - 1] ~= 0
+    self.taken[i] = tk
+    if tk then self.taken_q[i] = taken_command[i - 1] end
+    if not owned[i] or tk then
+      if not tk then self.q[i] = command[i - 1] end
+      self.h[i] = hardness[i - 1]
+    end
+  end
+end
+
+-- The joints the state `want` would own (a request releases the caller's hold on them).
+function Ctl:needs(request)
+  local s = Motion.REQUESTS[request]
+  return s and self:joints_of(s) or {}
+end
+
+-- Per-activation data of a state (on the controller, not in the state's module).
+function Ctl:scratch(name)
+  local d = self.data[name]
+  if not d then d = {} self.data[name] = d end
+  return d
+end
+
+-- Sets the hardness of the roles the walking states drive: legs, arms, head.
+function Ctl:set_hardness(legs, arms, head)
+  local h, r = self.h, self.roles
+  for _, i in ipairs(r.legs) do h[i] = legs end
+  for _, i in ipairs(r.arms) do h[i] = arms end
+  for _, i in ipairs(r.head) do h[i] = head end
+end
+
+-- Head angles requested by behavior (motion.head_command) into q: pan, tilt.
 function Ctl:head_angles(q)
-  local ji = self.ji
-  q[ji.head_pan], q[ji.head_tilt] = self.head[1], self.head[2]
+  local hd = self.roles.head
+  for k = 1, #hd do q[hd[k]] = self.head[k] end
 end
 
 -- A request by name (see Lib/Motion.lua); unknown names are ignored (returns false).
@@ -111,19 +236,32 @@ function Ctl:fall_detected()
 end
 
 -- One tick at robot time t: sensors must be filled in (self.pos, self.gyro, self.angle, self.acc).
--- Leaves the commands in self.q and hardness in self.h.
+-- Leaves the commands in self.q and hardness in self.h, and in self.write the joints to write.
 function Ctl:tick(t)
   local dt = t - self.t
   if dt <= 0 or dt > 0.1 then dt = self.robot.period end
   self.t, self.dt = t, dt
+  local n, q, h, hq, hh = self.n, self.q, self.h, self.hold_q, self.hold_h
+  for i = 1, n do hq[i], hh[i] = q[i], h[i] end
   local m = self.machine
-  if m.current == nil then m:update(self) return end
-  if WATCH_FALL[m.current] and self:fall_detected() then
+  if m.current ~= nil and WATCH_FALL[m.current] and self:fall_detected() then
     self.falls = self.falls + 1
     self.fall_time = t
     m:event('fall', self)
   end
   m:update(self)
+  -- only the current state's joints keep what was written; a taken joint gets the caller's command
+  local owned, taken, write, owner, touch = self.owned, self.taken, self.write, self.owner, self.touch
+  for i = 1, n do
+    if taken[i] then
+      q[i], h[i], write[i], owner[i] = self.taken_q[i], hh[i], true, 2
+    elseif owned[i] then
+      write[i], owner[i] = true, 1
+    else
+      q[i], h[i], write[i], owner[i] = hq[i], hh[i], touch[i] or false, 0
+    end
+    touch[i] = nil
+  end
 end
 
 function Ctl:state() return self.machine:state() end

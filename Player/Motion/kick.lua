@@ -96,9 +96,10 @@ function Kick:update(t, q, sensors, dt)
   add_pitch(w, q, legk[3], cur.hip)
   add_pitch(w, q, legk[4], cur.knee)
   add_pitch(w, q, legk[5], cur.ankle)
-  local ji = w.ji
-  add_pitch(w, q, left and ji.l_sho_pitch or ji.r_sho_pitch, cur.arm + cur.arms)
-  add_pitch(w, q, left and ji.r_sho_pitch or ji.l_sho_pitch, cur.arms - cur.arm)
+  -- the arms (the walk config's arms.<side>.pitch joints; a body without them skips this)
+  local karm, sarm = w.arms[left and 'l' or 'r'], w.arms[left and 'r' or 'l']
+  if karm and karm.pitch then add_pitch(w, q, karm.pitch, cur.arm + cur.arms) end
+  if sarm and sarm.pitch then add_pitch(w, q, sarm.pitch, cur.arms - cur.arm) end
   -- the torso's pitch that the support leg's measured angles give with its foot flat on the
   -- ground: the fall detection compares the IMU with it (the kick tilts the torso on purpose, fast;
   -- a real fall tips the support foot, and then the two part)
@@ -130,6 +131,7 @@ function M.state(side)
       if done then return 'done' end
     end,
     exit = function(c) c.tilt = 0 end,
+    owns = { 'legs', 'arms', 'head' },
   }
 end
 

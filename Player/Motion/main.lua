@@ -4,8 +4,12 @@
 -- alone; `luajit Player/Motion/main.lua [--initial STATE]` with the env of Run/env.sh too.
 --
 -- Inputs through the `motion` shm block (Lib/Motion.lua, Lib/Walk.lua): request/request_seq,
--- velocity, param_* (walk parameter changes and config re-reads). Outputs: state, walking, fallen,
--- falls, fall_time, odometry, walk_velocity, tick.
+-- velocity, head_command, param_* (walk parameter changes and config re-reads), taken and
+-- taken_command (joints a caller took with Body.set_command & co.: written with the caller's
+-- command until Body.release or a request whose state owns them). Outputs: state, walking, fallen,
+-- falls, fall_time, odometry, walk_velocity, owner (per joint: 0 held, 1 motion, 2 a caller), tick.
+-- Only the joints the current state owns (or a caller took) are written: the others hold whatever
+-- the actuator block has (Player/Motion/control.lua).
 local ffi = require('ffi')
 local shm = require('shm')
 local Config = require('Config')
@@ -28,18 +32,22 @@ local robot = Config.load('robot')
 local params = Config.load('walk')
 initial = initial or Config.optional(params, 'initialState', 'stance')
 
-local ctl = control.new({ robot = robot, params = params, model = kin.load(), initial = initial })
+local ctl = control.new({ robot = robot, params = params, model = kin.load(), initial = initial,
+  walk_files = table.concat(Config.files('walk'), ' + ') })
 if initial == 'relax' or initial == 'sit' then ctl.want = initial end
 local n = ctl.n
 
 local sensor, actuator = Body.sensor, Body.actuator
 local motion = shm.open('motion')
 
--- start from what the actuators hold now (no jump when the process restarts)
+-- start from what the actuators hold now (no jump when the process restarts), every joint released
 for i = 1, n do
   ctl.q[i] = actuator.command[i - 1]
   ctl.h[i] = actuator.hardness[i - 1]
 end
+motion:write(function(m)
+  for i = 0, n - 1 do m.taken[i], m.owner[i] = 0, 0 end
+end)
 
 motion.pid[0] = ffi.C.getpid()
 local last_request = motion.request_seq[0]
@@ -96,12 +104,17 @@ while true do
       acc[1], acc[2], acc[3] = s.accelerometer[0], s.accelerometer[1], s.accelerometer[2]
       return s.time[0]
     end)
-    -- requests and parameters
+    -- what others did to the joints motion does not drive, and which joints a caller took
+    ctl:sync(actuator.command, hardness, motion.taken, motion.taken_command)
+    -- requests (each releases the joints its state owns) and parameters
     if motion.request_seq[0] ~= last_request then
       last_request = motion.request_seq[0]
       local s = Motion.STATES[motion.request[0] + 1]
       for name, state in pairs(Motion.REQUESTS) do
-        if state == s then ctl:request(name) end
+        if state == s then
+          for _, i in ipairs(ctl:needs(name)) do motion.taken[i - 1], ctl.taken[i] = 0, false end
+          ctl:request(name)
+        end
       end
     end
     if motion.param_seq[0] ~= last_param then
@@ -112,11 +125,14 @@ while true do
     v[1], v[2], v[3] = motion.velocity[0], motion.velocity[1], motion.velocity[2]
     ctl.head[1], ctl.head[2] = motion.head_command[0], motion.head_command[1]
     ctl:tick(time)
-    -- commands (Body clamps to the limits and refuses NaN)
-    Body.set_commands(ctl.q)
+    -- commands of the joints motion drives now (Body clamps to the limits and refuses NaN)
+    local q, write = ctl.q, ctl.write
     for i = 1, n do
-      local h = ctl.h[i]
-      if hardness[i - 1] ~= h then Body.set_hardness(i, h) end
+      if write[i] then
+        Body.drive(i, q[i])
+        local h = ctl.h[i]
+        if hardness[i - 1] ~= h then Body.set_hardness(i, h) end
+      end
     end
     actuator.tick_ack[0] = tick
     local w = ctl.walk
@@ -128,6 +144,7 @@ while true do
       m.fall_time[0] = ctl.fall_time
       m.odometry[0], m.odometry[1], m.odometry[2] = w.uTorso[1], w.uTorso[2], w.uTorso[3]
       m.walk_velocity[0], m.walk_velocity[1], m.walk_velocity[2] = w.vel[1], w.vel[2], w.vel[3]
+      for i = 1, n do m.owner[i - 1] = ctl.owner[i] end
       m.tick[0] = tick
     end)
     participant:done(tick, tick + 1)

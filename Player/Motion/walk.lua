@@ -353,23 +353,78 @@ function Walk:leg_angles(q)
   return self.model:legs_ik(self.lpose, self.rpose, q)
 end
 
--- Joint bookkeeping from the robot config: 1-based indices by name and each joint's axis
--- components along x and y (so feedback can be stated as rotations about the torso's axes).
-function Walk:bind(robot)
+-- The axis of joint `name` (a unit vector in the torso frame at the zero pose): the one place the
+-- walk reads it, so that feedback and mirrored poses are stated as rotations about the torso's axes.
+-- (Reads robot.lua's kinematics table; the URDF model's model:axis(name) takes its place here.)
+function M.joint_axis(robot, model, name) -- luacheck: no unused args
+  return robot.kinematics.joints[name].axis
+end
+
+local LEG = { 'hip_yaw', 'hip_roll', 'hip_pitch', 'knee', 'ank_pitch', 'ank_roll' }
+
+-- Joint bookkeeping from the robot config: 1-based indices by name, the leg joints the leg IK
+-- drives, the arms' joints from the walk config's `arms` (by name: a body without arms has none),
+-- and each of these joints' axis components along x and y (feedback is stated as rotations about
+-- the torso's axes). Joints the walk does not drive (a waist) are left alone. `files` names the
+-- walk config in errors.
+function Walk:bind(robot, files)
+  files = files or 'walk config'
   local ji, ax, ay = {}, {}, {}
-  local kj = robot.kinematics.joints
-  for i, name in ipairs(robot.joints) do
-    ji[name] = i
-    local a = kj[name].axis
+  for i, name in ipairs(robot.joints) do ji[name] = i end
+  self.ji, self.ax, self.ay = ji, ax, ay
+  local function axis_of(i, name)
+    local a = M.joint_axis(robot, self.model, name)
     ax[i], ay[i] = a[1], a[2]
   end
-  self.ji, self.ax, self.ay = ji, ax, ay
   self.legs = { [LEFT] = {}, [RIGHT] = {} }
   for side, pre in pairs({ [LEFT] = 'l_', [RIGHT] = 'r_' }) do
-    for k, j in ipairs({ 'hip_yaw', 'hip_roll', 'hip_pitch', 'knee', 'ank_pitch', 'ank_roll' }) do
-      self.legs[side][k] = ji[pre .. j]
+    for k, j in ipairs(LEG) do
+      local i = ji[pre .. j]
+      if not i then error(string.format("walk: the robot has no leg joint '%s%s' (robot.joints)", pre, j), 2) end
+      self.legs[side][k] = i
+      axis_of(i, pre .. j)
     end
   end
+  -- arms: side -> { pitch = index or nil, roll = index or nil, joints = { { index, name }, ... } }
+  self.arms, self.arm_joints = {}, {}
+  local arms = rawget(self.p, 'arms') or {}
+  if type(arms) ~= 'table' then error(files .. ": key 'arms' must be a table", 2) end
+  for _, side in ipairs({ 'l', 'r' }) do
+    local a = rawget(arms, side)
+    if a ~= nil then
+      local key = 'arms.' .. side
+      local posture = type(a) == 'table' and rawget(a, 'posture')
+      if type(posture) ~= 'table' then
+        error(string.format("%s: key '%s.posture' must be a table of joint = rad", files, key), 2)
+      end
+      local arm = { joints = {} }
+      for name, v in pairs(posture) do
+        local i = ji[name]
+        if not i then
+          error(string.format("%s: key '%s.posture' names unknown joint '%s'", files, key, tostring(name)), 2)
+        end
+        if type(v) ~= 'number' or v ~= v or v == math.huge or v == -math.huge then
+          error(string.format("%s: key '%s.posture.%s' must be a finite number", files, key, name), 2)
+        end
+        arm.joints[#arm.joints + 1] = { i, name }
+        self.arm_joints[#self.arm_joints + 1] = i
+        axis_of(i, name)
+      end
+      table.sort(arm.joints, function(x, y) return x[1] < y[1] end)
+      for _, which in ipairs({ 'pitch', 'roll' }) do
+        local name = rawget(a, which)
+        if name ~= nil then
+          if rawget(posture, name) == nil then
+            error(string.format("%s: key '%s.%s' must name a joint of '%s.posture', got '%s'", files, key, which,
+              key, tostring(name)), 2)
+          end
+          arm[which] = ji[name]
+        end
+      end
+      self.arms[side] = arm
+    end
+  end
+  table.sort(self.arm_joints)
   self.qleg = {}
   self.pose_meas = {}
   return self
@@ -391,16 +446,18 @@ end
 -- carries the robot in single support when the walk is not stepping (kick). Returns the IK flags.
 function Walk:joint_angles(q, sensors, dt, support)
   local p = self.p
-  local ji = self.ji
   local flags = self.model:legs_ik(self.lpose, self.rpose, q)
-  local la, ra = p.qLArm, p.qRArm
-  q[ji.l_sho_pitch], q[ji.l_sho_roll], q[ji.l_el] = la[1], la[2], la[3]
-  q[ji.r_sho_pitch], q[ji.r_sho_roll], q[ji.r_el] = ra[1], ra[2], ra[3]
+  -- arms: the posture by joint name (read live: Walk.set('arms.l.posture.l_el', 0.3) lands at once)
+  local arms, larm, rarm = p.arms, self.arms.l, self.arms.r
+  for side, arm in pairs(self.arms) do
+    local posture = rawget(rawget(arms, side) or {}, 'posture') or {}
+    for _, j in ipairs(arm.joints) do q[j[1]] = rawget(posture, j[2]) or q[j[1]] end
+  end
   -- arm swing against the legs: the arm opposite to the forward foot goes forward
   if p.armSwing ~= 0 then
     local rel = pose_relative(self.uLeft, self.uRight)
-    add_rot(self, q, ji.l_sho_pitch, 0, p.armSwing * rel[1])
-    add_rot(self, q, ji.r_sho_pitch, 0, -p.armSwing * rel[1])
+    if larm and larm.pitch then add_rot(self, q, larm.pitch, 0, p.armSwing * rel[1]) end
+    if rarm and rarm.pitch then add_rot(self, q, rarm.pitch, 0, -p.armSwing * rel[1]) end
   end
   -- which leg carries the robot: the support leg while stepping, both at stance
   local ss = support and 1 or self:single_support()
@@ -452,10 +509,10 @@ function Walk:joint_angles(q, sensors, dt, support)
     end
   end
   local armx, army = clamp(fb.arm[1] * gx, -lim, lim), clamp(fb.arm[2] * gy, -lim, lim)
-  add_rot(self, q, ji.l_sho_pitch, 0, army)
-  add_rot(self, q, ji.r_sho_pitch, 0, army)
-  add_rot(self, q, ji.l_sho_roll, armx, 0)
-  add_rot(self, q, ji.r_sho_roll, armx, 0)
+  for _, arm in pairs(self.arms) do
+    if arm.pitch then add_rot(self, q, arm.pitch, 0, army) end
+    if arm.roll then add_rot(self, q, arm.roll, armx, 0) end
+  end
   return flags
 end
 

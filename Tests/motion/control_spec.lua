@@ -1,6 +1,6 @@
 -- luacheck: std +busted
--- The motion controller and keyframe player without a robot: the state machine's paths, keyframe
--- file checks, fall detection from the IMU, requests.
+-- The motion controller without a robot: the state machine's paths, fall detection from the IMU,
+-- requests (keyframe files: keyframe_spec.lua; who drives which joint: ownership_spec.lua).
 local Config = require('Config')
 local kin = require('kinematics')
 local control = require('Motion.control')
@@ -108,62 +108,5 @@ describe('motion controller', function()
     local c = make()
     assert.is_false(c:request('dance'))
     assert.equals('stand', c.want)
-  end)
-end)
-
-describe('keyframe files', function()
-  local n = #robot.joints
-  local function frames(f) return { frames = f } end
-  local q = {}
-  for i = 1, n do q[i] = 0 end
-
-  it('loads the platform files', function()
-    for _, name in ipairs({ 'sit', 'standup_front', 'standup_back' }) do
-      local kf = keyframe.load(name, n)
-      assert.is_true(keyframe.duration(kf) > 0)
-    end
-  end)
-
-  it('fails naming the file on a wrong joint count or a missing field', function()
-    local short = {}
-    for i = 1, n - 1 do short[i] = 0 end
-    local cases = {
-      { frames({ { duration = 1, hardness = 1, q = short } }), "frame 1: 'q' has 19 joint angles" },
-      { frames({ { duration = 1, q = q } }), "frame 1: missing field 'hardness'" },
-      { frames({ { hardness = 1, q = q } }), "frame 1: missing field 'duration'" },
-      { frames({ { duration = 1, hardness = 1, q = q }, { duration = 1, hardness = 1 } }),
-        "frame 2: missing field 'q'" },
-      { {}, "missing field 'frames'" },
-      { frames({ { duration = 1, hardness = { 1, 1 }, q = q } }), "'hardness' has 2 values" },
-    }
-    for _, case in ipairs(cases) do
-      local ok, err = pcall(keyframe.check, case[1], 'Config/X/keyframes/bad.lua', n)
-      assert.is_false(ok)
-      assert.matches('Config/X/keyframes/bad.lua: ', err, 1, true)
-      assert.matches(case[2], err, 1, true)
-    end
-    -- a missing file names the file too
-    local ok, err = pcall(keyframe.load, 'no_such_motion', n)
-    assert.is_false(ok)
-    assert.matches('keyframes/no_such_motion.lua', err, 1, true)
-  end)
-
-  it('interpolates from the start pose through the frames', function()
-    local q1, q2 = {}, {}
-    for i = 1, n do q1[i], q2[i] = 1, -1 end
-    local kf = keyframe.check(frames({ { duration = 1, hardness = 0.5, q = q1 },
-      { duration = 2, hardness = 1, q = q2 } }), 'x', n)
-    local p = keyframe.play(kf, 10, q, 0)
-    local qo, ho = {}, {}
-    assert.is_false(p:update(10.5, qo, ho))
-    assert.is_near(0.5, qo[1], 1e-9)
-    assert.is_near(0.25, ho[1], 1e-9)
-    p:update(11, qo, ho)
-    assert.is_near(1, qo[3], 1e-9)
-    p:update(12, qo, ho)
-    assert.is_near(0, qo[3], 1e-9)
-    assert.is_true(p:update(13.5, qo, ho))
-    assert.is_near(-1, qo[20], 1e-9)
-    assert.is_near(1, ho[20], 1e-9)
   end)
 end)

@@ -24,9 +24,14 @@ return {
   stepLimitX = { -0.06, 0.11 },
   stepLimitY = { 0.08, 0.17 },
   stepLimitA = { -0.05, 0.95 },
-  -- arms: shoulder pitch, shoulder roll, elbow (joint angles of this robot)
-  qLArm = { 0.0, -0.25, 0.0 },
-  qRArm = { 0.0, 0.25, 0.0 },
+  -- arms, by joint name (Player/Motion/walk.lua, kick.lua, states/falling.lua): each side's posture
+  -- while standing, walking and kicking (the joints named here are the ones the walk drives), and
+  -- the joints that turn the arm about the torso's y axis (`pitch`: arm swing, gyro feedback, the
+  -- kick's and the fall's arm motions) and x axis (`roll`: gyro feedback). A body without arms: {}.
+  arms = {
+    l = { posture = { l_sho_pitch = 0.0, l_sho_roll = -0.25, l_el = 0.0 }, pitch = 'l_sho_pitch', roll = 'l_sho_roll' },
+    r = { posture = { r_sho_pitch = 0.0, r_sho_roll = 0.25, r_el = 0.0 }, pitch = 'r_sho_pitch', roll = 'r_sho_roll' },
+  },
   armSwing = 0.0,            -- rad of arm pitch per m of foot lead
   hipRollCompensation = 0.0, -- rad, support hip roll added in single support
   -- heading: the IMU's yaw follows the integral of the commanded turning rate
@@ -87,6 +92,7 @@ return {
   hardnessLegs = 1.0,
   hardnessArms = 0.5,
   hardnessHead = 0.5,
+  hardnessHold = 1.0,         -- joints no motion state drives (a waist) when motion stiffens after relax
   -- fall detection (torso roll/pitch from the IMU)
   fallAngle = 0.6,           -- rad
   fallRate = 2.5,            -- rad/s together with fallAngleRate
@@ -94,5 +100,8 @@ return {
   fallHardness = 0.15,       -- hardness while falling (soft)
   fallStillRate = 0.4,       -- rad/s: lying still below this (sum of |gyro|)
   fallSettleTime = 0.8,      -- s in falling before a stand-up
+  fallStillTime = 0.3,       -- s lying still before a stand-up
+  fallUprightAngle = 0.5,    -- rad: lying still with roll and pitch below this, the robot did not fall
+  fallArms = { -1.2, 0.8 },  -- rad about the torso's y axis, both arms: falling forwards, backwards
   initialState = 'stance',   -- state the motion process starts in
 }

@@ -2,7 +2,8 @@
 -- lies still, then stand up from the front or the back.
 local M = {}
 
-local still_since
+-- every joint goes soft
+M.owns = { 'all' }
 
 function M.entry(c)
   local p = c.p
@@ -10,22 +11,25 @@ function M.entry(c)
     c.q[i] = c.pos[i]
     c.h[i] = p.fallHardness
   end
-  -- arms towards the side the robot falls to (pitch > 0: forwards; still small when detected)
-  local fwd = c.angle[2] > 0
-  local a = fwd and -1.2 or 0.8
-  local ji, ay = c.ji, c.walk.ay
-  c.q[ji.l_sho_pitch] = a * ay[ji.l_sho_pitch]
-  c.q[ji.r_sho_pitch] = a * ay[ji.r_sho_pitch]
-  still_since = nil
+  -- arms towards the side the robot falls to (pitch > 0: forwards; still small when detected), as
+  -- a rotation about the torso's y axis through each arm's pitch joint (the walk config's arms)
+  local a = c.angle[2] > 0 and p.fallArms[1] or p.fallArms[2]
+  local w = c.walk
+  for _, arm in pairs(w.arms) do
+    if arm.pitch then c.q[arm.pitch] = a * w.ay[arm.pitch] end
+  end
+  c:scratch('falling').still_since = nil
 end
 
 function M.update(c)
+  local p, d = c.p, c:scratch('falling')
   local g = c.gyro
-  local moving = math.abs(g[1]) + math.abs(g[2]) + math.abs(g[3]) > c.p.fallStillRate
-  if moving then still_since = nil elseif not still_since then still_since = c.t end
-  if c:since() < c.p.fallSettleTime or not still_since or c.t - still_since < 0.3 then return nil end
+  local moving = math.abs(g[1]) + math.abs(g[2]) + math.abs(g[3]) > p.fallStillRate
+  if moving then d.still_since = nil elseif not d.still_since then d.still_since = c.t end
+  if c:since() < p.fallSettleTime or not d.still_since or c.t - d.still_since < p.fallStillTime then return nil end
   local roll, pitch = c.angle[1], c.angle[2]
-  if math.abs(pitch) < 0.5 and math.abs(roll) < 0.5 then return 'stand' end -- did not fall after all
+  -- did not fall after all
+  if math.abs(pitch) < p.fallUprightAngle and math.abs(roll) < p.fallUprightAngle then return 'stand' end
   -- lying still, the accelerometer reads gravity in the torso frame: face down it points along
   -- -x (Euler angles are no help here: they flip near a pitch of 90 deg)
   if c.acc[1] < 0 then return 'front' end

@@ -2,13 +2,16 @@
 local keyframe = require('Motion.keyframe')
 
 local M = {}
-local player
+
+-- the joints the body's keyframes/sit.lua names
+function M.owns(c) return c.keyframes.sit.joints end
 
 function M.entry(c)
-  player = keyframe.play(c.keyframes.sit, c.t, c.q, c.h)
+  c:scratch('sit').player = keyframe.play(c.keyframes.sit, c.t, c.q, c.h)
 end
 
 function M.update(c)
+  local player = c:scratch('sit').player
   player:update(c.t, c.q, c.h)
   if c.want ~= 'sit' and player.done then return 'stand' end
 end

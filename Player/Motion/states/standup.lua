@@ -6,12 +6,13 @@ local M = {}
 
 function M.make(name)
   local S = {}
-  local player
+  -- the joints the body's keyframes/<name>.lua names
+  function S.owns(c) return c.keyframes[name].joints end
   function S.entry(c)
-    player = keyframe.play(c.keyframes[name], c.t, c.pos, c.h)
+    c:scratch(name).player = keyframe.play(c.keyframes[name], c.t, c.pos, c.h)
   end
   function S.update(c)
-    local done = player:update(c.t, c.q, c.h)
+    local done = c:scratch(name).player:update(c.t, c.q, c.h)
     if not done then return nil end
     local roll, pitch = c.angle[1], c.angle[2] - c.p.bodyTilt
     if math.abs(roll) < c.p.fallAngleRate and math.abs(pitch) < c.p.fallAngleRate then return 'done' end

@@ -2,20 +2,22 @@
 -- Heading feedback: the IMU's yaw is held to the integral of the commanded turning rate.
 local M = {}
 
-local yaw_ref
+-- the legs (by IK), the arms (the walk config's posture and swing) and the head (motion.head_command)
+M.owns = { 'legs', 'arms', 'head' }
 
 local function wrap(a) return (a + math.pi) % (2 * math.pi) - math.pi end
 
 function M.entry(c)
   c.walk:start()
-  yaw_ref = c.angle[3]
+  c:scratch('walk').yaw_ref = c.angle[3]
 end
 
 function M.update(c)
   local w, v, p = c.walk, c.vel_cmd, c.p
+  local d = c:scratch('walk')
   w:set_velocity(v[1], v[2], v[3])
-  yaw_ref = wrap(yaw_ref + w.vel[3] * c.dt)
-  local err = wrap(yaw_ref - c.angle[3])
+  d.yaw_ref = wrap(d.yaw_ref + w.vel[3] * c.dt)
+  local err = wrap(d.yaw_ref - c.angle[3])
   local lim = p.headingMaxCorrection
   w.va_correction = math.max(-lim, math.min(lim, p.headingGain * err))
   if c.want ~= 'walk' then w:stop() end

@@ -1,16 +1,23 @@
 -- Stand up from lying on the back (Player/Motion/keyframe.lua): a backward roll onto the front;
--- the motion state machine then stands up from the front (Config/Sim/keyframes/standup_front.lua).
--- Same conventions as standup_front.lua: sym() builds a symmetric pose from the left side (r = -l).
-local function sym(head_tilt, arm, leg)
-  return { 0, head_tilt, arm[1], arm[2], arm[3], leg[1], leg[2], leg[3], leg[4], leg[5], leg[6],
-    -leg[1], -leg[2], -leg[3], -leg[4], -leg[5], -leg[6], -arm[1], -arm[2], -arm[3] }
-end
+-- the motion state machine then stands up from the front (standup_front.lua beside this file).
+-- Same conventions as standup_front.lua: angles by joint name, `mirror` the left side's.
+local head = { head_pan = 0, head_tilt = 0 }
 return {
   frames = {
-    { duration = 0.5, hardness = 1.0, q = sym(0, { 0, 1.4, 0 }, { 0, 0, 0, 0, 0, 0 }) },
-    { duration = 0.3, hardness = 1.0, q = sym(0, { 2.6, 1.4, 0 }, { 0, 0, -1.9, 0.3, 0, 0 }) },
-    { duration = 0.4, hardness = 1.0, q = sym(0, { 1.57, 1.4, 0 }, { 0, 0, -1.9, 2.0, 1.0, 0 }) },
-    { duration = 0.5, hardness = 1.0, q = sym(0, { 0, 1.4, 0 }, { 0, 0, 0, 0, 0, 0 }) },
-    { duration = 0.5, hardness = 1.0, q = sym(0, { -1.2, 0.3, 0 }, { 0, 0, 0, 0, 0, 0 }) },
+    { duration = 0.5, hardness = 1.0, q = head, mirror = {
+      l_sho_pitch = 0, l_sho_roll = 1.4, l_el = 0,
+      l_hip_yaw = 0, l_hip_roll = 0, l_hip_pitch = 0, l_knee = 0, l_ank_pitch = 0, l_ank_roll = 0 } },
+    { duration = 0.3, hardness = 1.0, q = head, mirror = {
+      l_sho_pitch = 2.6, l_sho_roll = 1.4, l_el = 0,
+      l_hip_yaw = 0, l_hip_roll = 0, l_hip_pitch = -1.9, l_knee = 0.3, l_ank_pitch = 0, l_ank_roll = 0 } },
+    { duration = 0.4, hardness = 1.0, q = head, mirror = {
+      l_sho_pitch = 1.57, l_sho_roll = 1.4, l_el = 0,
+      l_hip_yaw = 0, l_hip_roll = 0, l_hip_pitch = -1.9, l_knee = 2.0, l_ank_pitch = 1.0, l_ank_roll = 0 } },
+    { duration = 0.5, hardness = 1.0, q = head, mirror = {
+      l_sho_pitch = 0, l_sho_roll = 1.4, l_el = 0,
+      l_hip_yaw = 0, l_hip_roll = 0, l_hip_pitch = 0, l_knee = 0, l_ank_pitch = 0, l_ank_roll = 0 } },
+    { duration = 0.5, hardness = 1.0, q = head, mirror = {
+      l_sho_pitch = -1.2, l_sho_roll = 0.3, l_el = 0,
+      l_hip_yaw = 0, l_hip_roll = 0, l_hip_pitch = 0, l_knee = 0, l_ank_pitch = 0, l_ank_roll = 0 } },
   },
 }
