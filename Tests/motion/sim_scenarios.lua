@@ -1,6 +1,6 @@
 -- Walking scenarios in the sim's lockstep, run by ./run_repl (see sim_walk_test.sh):
 --   ./run_repl Tests/motion/sim_scenarios.lua NAME [ARGS...]
--- NAME: forward, sideways, turn, backward, random, push, kick, pushmax, speed. Prints TAP lines
+-- NAME: forward, sideways, turn, backward, random, push, kick, head, pushmax, speed. Prints TAP lines
 -- ("ok N - ..." / "not ok N - ...") and "# " figures; measured from the sim's truth (Sim.truth()).
 -- luacheck: globals Sim Motion Walk wait arg shm Body
 local name = arg[1]
@@ -299,6 +299,41 @@ function scenarios.pushmax(label)
   note('pushmax %s: largest sideways push survived while walking: %.1f N x 0.1 s = %.2f N s', label or '', lo,
     lo * 0.1)
   print(string.format('pushmax %s %.3f', label or '', lo * 0.1))
+end
+
+-- the README's REPL example: a head command from Body while the robot walks really moves the head
+-- (the head is taken from motion) and the walk goes on; released, behavior's head_command counts again
+function scenarios.head()
+  start_clean()
+  Motion.request('walk')
+  Walk.set_velocity(0.2, 0, 0)
+  wait(2)
+  local a = Sim.truth()
+  Body.set_head_command({ 0.5, -0.2 })
+  wait(1)
+  local h = Body.get_head_position()
+  local owners = Motion.owners()
+  note('head while walking: commanded (0.50, -0.20), at (%.3f, %.3f); owners: head %s, legs %s', h[1], h[2],
+    owners.head, owners.lleg)
+  tap(math.abs(h[1] - 0.5) < 0.03 and math.abs(h[2] + 0.2) < 0.03 and owners.head == 'caller'
+    and Body.taken('head_pan'), 'Body.set_head_command moves the head while walking (taken from motion)')
+  local b = Sim.truth()
+  tap(Motion.state() == 'walk' and not b.fallen and math.sqrt((b.x - a.x) ^ 2 + (b.y - a.y) ^ 2) > 0.1,
+    'the walk goes on meanwhile (no fall)')
+  Body.release('head')
+  wait(1)
+  h = Body.get_head_position()
+  note('released: head at (%.3f, %.3f), motion.head_command (%.2f, %.2f)', h[1], h[2], motion.head_command[0],
+    motion.head_command[1])
+  tap(Motion.owners().head == 'motion' and math.abs(h[1] - motion.head_command[0]) < 0.03
+    and math.abs(h[2] - motion.head_command[1]) < 0.03, 'Body.release gives the head back to motion')
+  Body.set_head_command({ -0.4, 0.1 })
+  wait(0.5)
+  Motion.request('stand')
+  wait(1.5)
+  h = Body.get_head_position()
+  tap(Motion.owners().head == 'motion' and math.abs(h[1] - motion.head_command[0]) < 0.03,
+    "a request whose state drives the head takes it back (Motion.request('stand'))")
 end
 
 -- top sustained speed along one axis: the fastest command (in steps) walked for 30 s with no fall

@@ -3,7 +3,8 @@
 # forward >= 0.25 m/s for 30 s with heading drift < 10 deg and a clean stop into stance; sideways
 # and backwards 0.1 m/s; turning on the spot 1 rad/s; 60 s of random commands; pushed over
 # forwards and backwards: fall detected within 0.3 s, stands up, walks again; a kick with either
-# foot sends a ball (its centre 0.1 m ahead of the toe) >= 2 m and the robot stays up. Each scenario runs in its
+# foot sends a ball (its centre 0.1 m ahead of the toe) >= 2 m and the robot stays up; the README's
+# Body.set_head_command moves the head while walking, until Body.release. Each scenario runs in its
 # own sim (Tests/motion/sim_scenarios.lua prints TAP).
 #   [SIM_SEED=N] Tests/motion/sim_walk_test.sh [SCENARIO...]   (the sim's seed, default 1)
 set -u
@@ -13,7 +14,7 @@ LOGDIR="$HRP_ROOT/build/test-logs/motion"
 mkdir -p "$LOGDIR"
 BASE_ID=${ROBOT_ID:-9200}
 SCEN=("$@")
-[ ${#SCEN[@]} -eq 0 ] && SCEN=(forward sideways turn backward random push kick)
+[ ${#SCEN[@]} -eq 0 ] && SCEN=(forward sideways turn backward random push kick head)
 
 if [ ! -x build/bin/dcm_sim ]; then
   echo "not ok 1 - walking scenarios: the simulator (build/bin/dcm_sim) is not built"
