@@ -59,13 +59,11 @@ return {
     imu_yaw = true,             -- turn between steps from the IMU's yaw changes, not the walk's plan
   },
 
+  -- the head and body machines' timing, game and field numbers; the body's sizes and speeds (how far
+  -- it looks, where it stands to kick, how fast it goes) are in Config/robots/<ROBOT>/behavior.lua
   head = {
-    scan_pan = 1.4,            -- rad, half-range of the scan
-    scan_distances = { 2.5, 0.45 }, -- m: the scan's far and near rows (ground distance looked at;
-                               -- the camera's 43 deg view covers 0.2-1.0 m and 0.7 m-horizon)
     scan_period = 4.0,         -- s per sweep
-    scan_near_first = 1.0,     -- m: a ball lost nearer than this is looked for where it was first ...
-    scan_near_time = 1.5,      -- s ... for this long
+    scan_near_time = 1.5,      -- s looking for a ball lost near the feet where it was first
     track_gain = 0.6,          -- fraction of the angle error closed per step
     look_goal_every = 6.0,     -- s between looks at the goal while tracking (dribbling too: the
                                -- pose drifts ~15% of the distance walked between post sightings)
@@ -74,50 +72,34 @@ return {
     look_goal_every_lost = 1.5, -- s, ... while the pose is not trusted (a sweep each time)
     look_goal_time = 1.2,      -- s looking where the goal should be
     look_around_time = 2.0,    -- s for one sweep across the head's range
-    ground_z = -0.23,          -- m: the ground below the torso origin (torso frame), for look-at
   },
 
   body = {
     search_turn_time = 8.0,    -- s turning on the spot before wandering
-    search_turn_speed = 0.5,   -- rad/s
-    search_back_near = 0.5,    -- m: a ball lost nearer than this: step back first ...
-    search_back_time = 2.0,    -- s ...
-    search_back_speed = 0.08,  -- m/s
+    search_back_time = 2.0,    -- s stepping back from a ball lost at the feet
     relocalise_below = 0.3,    -- pose confidence under which the robot stops attacking to localize
     localize_turn_after = 5.0, -- s standing (the head looking around) before turning on the spot
     localize_timeout = 12.0,   -- s: then go on with the best guess ...
     localize_retry_after = 15.0, -- s ... for at least this long
     wander_time = 6.0,         -- s walking towards the field's centre before turning again
-    approach_speed = 0.25,     -- m/s
-    approach_behind = 0.30,    -- m: aim at this point behind the ball (away from the goal)
-    align_distance = 0.45,     -- m: from here on, align precisely
-    kick_x = 0.17,             -- m: ball this far ahead of the torso when kicking
-    kick_y = 0.06,             -- m: ball this far to the side (towards the kicking foot)
-    kick_tolerance_x = 0.05,
-    kick_tolerance_y = 0.04,
     kick_tolerance_angle = 0.25, -- rad: facing the goal within this
     align_timeout = 12.0,      -- s: give up aligning and just walk into the ball
     kick_timeout = 4.0,        -- s waiting for the kick to finish
     use_kick = true,           -- false: dribble the ball into the goal
-    -- walking the ball to the goal instead of kicking (the kick moves the ball < 1 m in the sim)
+    -- walking the ball to the goal instead of kicking (the body's distances and speeds for it: its
+    -- behavior.lua)
     dribble = {
       enabled = true,
-      start_side = 0.06,         -- m: ball this near the centre line ahead of the feet to start
       start_angle = 0.3,         -- rad: attack direction this near to straight ahead to start
-      max_side = 0.16,           -- m: the ball this far to the side: align again
-      max_ahead = 0.6,           -- m: the ball this far ahead: approach again
       max_angle = 0.8,           -- rad: attack direction this far off: align again
-      speed = 0.25,              -- m/s forward
-      side_gain = 1.0,           -- 1/s: side-step per m of the ball's sideways offset
-      turn_gain = 0.8,           -- 1/s
-      max_va = 0.4,              -- rad/s
     },
     attack_depth = 0.5,        -- m behind the goal line: the point aimed at
     dribble_distance = 1.2,    -- m: nearer than this to the goal line, walk the ball in
     follow_time = 3.0,         -- s walking after the ball following a kick
     reposition = { -1.5, 0.0 }, -- field point to walk to when the ball is lost
-    max_vx = 0.3, max_vy = 0.1, max_va = 0.8,
+    reposition_timeout = 10.0, -- s walking back towards the ball's last estimate before searching
   },
 
   ready_pose = { -1.0, 0.0, 0.0 }, -- where the robot walks in the ready state (field frame)
+  ready_tolerance = { 0.2, 0.2 },  -- m, rad: there when this near to ready_pose and turned to it
 }

@@ -16,17 +16,18 @@ function M.update(ctx)
   if localize.needed(ctx) then return 'unsure' end
   local bx, by, ux, uy = nav.attack(ctx)
   local dist = math.sqrt(bx * bx + by * by)
-  if dist > cfg.align_distance + 0.3 then return 'far' end
+  if dist > cfg.align_distance + cfg.align_far then return 'far' end
   -- keep the kicking side unless the ball moved clearly to the other one
-  if by * side < -0.05 then side = -side end
+  if by * side < -cfg.kick_side_switch then side = -side end
   local dribble = cfg.dribble.enabled
   -- dribbling: the ball centred between the feet; kicking: ahead of the kicking foot
   local ex, ey = bx - cfg.kick_x, by - (dribble and 0 or side * cfg.kick_y)
   local ea = nav.wrap(math.atan2(uy, ux))
   -- turn around the ball: sideways motion couples with the turn
-  local vx = nav.clamp(0.7 * ex, -0.06, 0.12)
-  local vy = nav.clamp(0.7 * ey - 0.15 * ea, -cfg.max_vy, cfg.max_vy)
-  local va = nav.clamp(0.8 * ea, -0.5, 0.5)
+  local a = cfg.align
+  local vx = nav.clamp(a.gain[1] * ex, a.vx[1], a.vx[2])
+  local vy = nav.clamp(a.gain[2] * ey - a.sideways_per_turn * ea, -cfg.max_vy, cfg.max_vy)
+  local va = nav.clamp(a.gain[3] * ea, -a.max_va, a.max_va)
   ctx.act.walk(vx, vy, va)
   local ok = math.abs(ex) < cfg.kick_tolerance_x and math.abs(ey) < cfg.kick_tolerance_y
     and math.abs(ea) < cfg.kick_tolerance_angle
@@ -34,7 +35,7 @@ function M.update(ctx)
   ctx.kick_side = side > 0 and 'left' or 'right'
   if dribble then
     local d = cfg.dribble
-    if math.abs(ey) < d.start_side and math.abs(ea) < d.start_angle and ex > -0.1 and ex < 0.1 then
+    if math.abs(ey) < d.start_side and math.abs(ea) < d.start_angle and ex > -d.start_ahead and ex < d.start_ahead then
       return 'dribble'
     end
   end

@@ -11,7 +11,7 @@ function M.update(ctx)
   local tx, ty, ha = nav.behind_ball(ctx)
   local vx, vy, va, d = nav.go_to(ctx, tx, ty, ha)
   ctx.act.walk(vx, vy, va)
-  if d < cfg.align_distance - 0.1 then return 'near' end
+  if d < cfg.align_distance - cfg.approach_near then return 'near' end
 end
 
 return M

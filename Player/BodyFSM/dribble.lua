@@ -14,12 +14,12 @@ function M.update(ctx)
   local bx, by, ux, uy = nav.attack(ctx)
   local ea = nav.wrap(math.atan2(uy, ux))
   -- the ball got away (ahead, behind or to the side) or the goal is no longer ahead: align again
-  if bx > d.max_ahead or bx < 0.02 or math.abs(by) > d.max_side or math.abs(ea) > d.max_angle then
+  if bx > d.max_ahead or bx < d.min_ahead or math.abs(by) > d.max_side or math.abs(ea) > d.max_angle then
     return 'realign'
   end
-  local slow = math.max(0, 1 - math.abs(ea) / d.max_angle) * math.max(0.3, 1 - math.abs(by) / d.max_side)
+  local slow = math.max(0, 1 - math.abs(ea) / d.max_angle) * math.max(d.slow_min, 1 - math.abs(by) / d.max_side)
   local vx = d.speed * slow
-  local vy = nav.clamp(d.side_gain * by - 0.1 * ea, -cfg.max_vy, cfg.max_vy)
+  local vy = nav.clamp(d.side_gain * by - d.side_per_turn * ea, -cfg.max_vy, cfg.max_vy)
   local va = nav.clamp(d.turn_gain * ea, -d.max_va, d.max_va)
   ctx.act.walk(vx, vy, va)
 end

@@ -26,14 +26,15 @@ end
 function M.behind_ball(ctx)
   local cfg = ctx.cfg.body
   local bx, by, ux, uy = M.attack(ctx)
-  local r = cfg.approach_behind
+  local r, nv = cfg.approach_behind, cfg.nav
   local tx, ty = bx - r * ux, by - r * uy
   local along = bx * ux + by * uy -- how far the ball is ahead of the robot along the attack line
-  if along < 0.15 then
+  if along < nv.pass_along then
     -- the robot is level with or beyond the ball: pass beside it, on the robot's side
     local px, py = -uy, ux
     local side = (-(bx * px + by * py)) >= 0 and 1 or -1
-    tx, ty = bx - 0.5 * r * ux + side * 0.45 * px, by - 0.5 * r * uy + side * 0.45 * py
+    local back, off = nv.pass_behind * r, side * nv.pass_side
+    tx, ty = bx - back * ux + off * px, by - back * uy + off * py
   end
   return tx, ty, atan2(uy, ux)
 end
@@ -42,20 +43,21 @@ end
 -- Far away: face the target and walk; near: turn to ha while side-stepping.
 function M.go_to(ctx, tx, ty, ha)
   local cfg = ctx.cfg.body
+  local nv = cfg.nav
   local d = sqrt(tx * tx + ty * ty)
   local bearing = atan2(ty, tx)
   local vx, vy, va
-  if d > 0.6 then
-    va = 1.2 * bearing
+  if d > nv.near then
+    va = nv.far_turn_gain * bearing
     vx = cfg.approach_speed * math.max(0, cos(bearing)) ^ 2
-    vy = 0.3 * ty
+    vy = nv.far_side_gain * ty
   else
-    local blend = d / 0.6
-    va = 1.0 * wrap((1 - blend) * (ha or bearing) + blend * bearing)
-    vx = 0.8 * tx
-    vy = 0.8 * ty
+    local blend = d / nv.near
+    va = nv.near_turn_gain * wrap((1 - blend) * (ha or bearing) + blend * bearing)
+    vx = nv.near_gain * tx
+    vy = nv.near_gain * ty
   end
-  return clamp(vx, -0.1, cfg.max_vx), clamp(vy, -cfg.max_vy, cfg.max_vy),
+  return clamp(vx, nv.min_vx, cfg.max_vx), clamp(vy, -cfg.max_vy, cfg.max_vy),
     clamp(va, -cfg.max_va, cfg.max_va), d
 end
 

@@ -10,11 +10,12 @@ function M.entry(ctx)
 end
 
 function M.update(ctx)
+  local cfg = ctx.cfg.body
   if ctx.world:ball_age() < 0.3 then return 'ball' end
   local tx, ty = nav.field_to_robot(ctx, fx, fy)
-  -- stop short of it: from a metre away the head can see it
+  -- stop short of it: from there the head can see it
   local d = math.sqrt(tx * tx + ty * ty)
-  if d < 1.0 or ctx.t - t0 > 10 then return 'done' end
+  if d < cfg.reposition_near or ctx.t - t0 > cfg.reposition_timeout then return 'done' end
   local vx, vy, va = nav.go_to(ctx, tx, ty, nil)
   ctx.act.walk(vx, vy, va)
 end

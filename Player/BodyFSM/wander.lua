@@ -11,7 +11,7 @@ function M.update(ctx)
   if ctx.world:ball_age() < 0.3 then return 'ball' end
   local tx, ty = nav.field_to_robot(ctx, cfg.reposition[1], cfg.reposition[2])
   local vx, vy, va, d = nav.go_to(ctx, tx, ty, nil)
-  if d < 0.3 then vx, vy, va = 0, 0, cfg.search_turn_speed end
+  if d < cfg.wander_arrive then vx, vy, va = 0, 0, cfg.search_turn_speed end
   ctx.act.walk(vx, vy, va)
   if ctx.t - t0 > cfg.wander_time then return 'timeout' end
 end

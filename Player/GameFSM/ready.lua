@@ -12,7 +12,8 @@ function M.update(ctx)
   local tx, ty = ctx.world:to_robot(p[1], p[2])
   local ha = nav.wrap(p[3] - ctx.world.pose.a)
   local vx, vy, va, d = nav.go_to(ctx, tx, ty, ha)
-  if d < 0.2 and math.abs(ha) < 0.2 then ctx.act.stop() else ctx.act.walk(vx, vy, va) end
+  local tol = ctx.cfg.ready_tolerance
+  if d < tol[1] and math.abs(ha) < tol[2] then ctx.act.stop() else ctx.act.walk(vx, vy, va) end
   ctx.head:update(ctx)
 end
 

@@ -21,13 +21,14 @@ function M.update(ctx)
     local u = math.min(1, dt / cfg.look_around_time)
     local bearing = from * (1 - 2 * u) * cfg.scan_pan
     local far = cfg.scan_distances[1]
-    pan, tilt = point.ground(far * math.cos(bearing), far * math.sin(bearing), cfg.ground_z)
+    pan, tilt = point.ground(far * math.cos(bearing), far * math.sin(bearing), cfg)
     if dt > cfg.look_around_time then return 'done' end
   else
     local gx, gy = ctx.world:goal_in_robot_frame()
     local d = math.sqrt(gx * gx + gy * gy)
     -- beyond the head's reach (goal behind): the side the goal is on
-    pan, tilt = point.ground(gx / d * 3.0, gy / d * 3.0, cfg.ground_z)
+    local r = cfg.goal_look_distance
+    pan, tilt = point.ground(gx / d * r, gy / d * r, cfg)
     if dt > cfg.look_goal_time then return 'done' end
   end
   ctx.act.head(pan, tilt)

@@ -19,11 +19,11 @@ function M.update(ctx)
   if w:ball_age() < 0.2 then return 'ball' end
   local pan, tilt
   if ctx.t < t_rows then
-    -- around the estimate, swinging +-0.4 rad
+    -- around the estimate, swinging +-scan_swing
     local b = w.ball
-    local swing = 0.4 * math.sin(2 * math.pi * (ctx.t - t0) / cfg.scan_near_time)
+    local swing = cfg.scan_swing * math.sin(2 * math.pi * (ctx.t - t0) / cfg.scan_near_time)
     local c, s = math.cos(swing), math.sin(swing)
-    pan, tilt = point.ground(c * b.x - s * b.y, s * b.x + c * b.y, cfg.ground_z)
+    pan, tilt = point.ground(c * b.x - s * b.y, s * b.x + c * b.y, cfg)
   else
     local s = (ctx.t - t_rows) / cfg.scan_period
     local sweep = math.floor(s)
@@ -33,7 +33,7 @@ function M.update(ctx)
     local rows = cfg.scan_distances
     local dist = rows[(sweep % #rows) + 1]
     local bearing = u * cfg.scan_pan
-    pan, tilt = point.ground(dist * math.cos(bearing), dist * math.sin(bearing), cfg.ground_z)
+    pan, tilt = point.ground(dist * math.cos(bearing), dist * math.sin(bearing), cfg)
   end
   ctx.act.head(pan, tilt)
 end

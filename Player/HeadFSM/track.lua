@@ -14,7 +14,7 @@ function M.update(ctx)
   -- (back from a look at the goal, the head needs a moment to find the ball again)
   if w:ball_age() > 1.5 and ctx.t - t0 > 0.8 and not ctx.look_around then return 'lost' end
   local b = w.ball
-  local pan, tilt = point.ground(b.x, b.y, cfg.ground_z)
+  local pan, tilt = point.ground(b.x, b.y, cfg)
   ctx.act.head(pan, tilt)
   local every = cfg.look_goal_every
   if ctx.look_around or not w:localised() then
