@@ -77,6 +77,7 @@ local HELP = [[
 hrp REPL (robot id %d, body %s, platform %s)
   Body.joint_names()  Body.get_position('head_pan')  Body.set_command('head_pan', 0.3)
   Body.set_head_command({pan, tilt})  Body.get_gyro()  Body.get_time()
+  Motion.owners()  Body.release('head')   a Body command takes a joint motion drives, until released
   blocks['dcm.sensor']:dump()  dcm_sensor.position[0]  dcm_actuator:set('hardness', 1)
   wait(seconds)       let the robot's clock advance
   p(x)                print a table

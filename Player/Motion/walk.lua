@@ -376,13 +376,15 @@ function Walk:bind(robot, files)
     local a = M.joint_axis(robot, self.model, name)
     ax[i], ay[i] = a[1], a[2]
   end
+  -- legs: the model's leg chains (hip yaw to ankle roll); by name without a model
   self.legs = { [LEFT] = {}, [RIGHT] = {} }
+  local chains = self.model and self.model.leg_index
   for side, pre in pairs({ [LEFT] = 'l_', [RIGHT] = 'r_' }) do
     for k, j in ipairs(LEG) do
-      local i = ji[pre .. j]
+      local i = chains and chains[side][k] or ji[pre .. j]
       if not i then error(string.format("walk: the robot has no leg joint '%s%s' (robot.joints)", pre, j), 2) end
       self.legs[side][k] = i
-      axis_of(i, pre .. j)
+      axis_of(i, robot.joints[i])
     end
   end
   -- arms: side -> { pitch = index or nil, roll = index or nil, joints = { { index, name }, ... } }
