@@ -92,6 +92,25 @@ function M.load(concern, spec, platform)
   return cfg
 end
 
+local function plain_copy(v)
+  if type(v) ~= 'table' then return v end
+  local t = {}
+  for k, x in pairs(v) do t[k] = plain_copy(x) end
+  return t
+end
+
+-- The merged table as a plain deep copy (no metatables), for C readers (Modules/dcm).
+function M.export(concern, opts)
+  opts = opts or {}
+  return plain_copy(M.load(concern, nil, opts.platform))
+end
+
+-- The files a concern is read from (repo-relative), for messages.
+function M.files(concern, opts)
+  opts = opts or {}
+  return { 'Config/' .. (opts.platform or M.platform()) .. '/' .. concern .. '.lua' }
+end
+
 -- Value of an optional key (nil when absent) without tripping the strict check.
 function M.optional(tbl, key, default)
   local v = rawget(tbl, key)
