@@ -113,6 +113,8 @@ void params_load(const std::string &sim_lua, const std::string &robot_lua, const
   if (p->start.empty()) throw std::runtime_error(sim_lua + ": missing list 'start'");
   p->fall_angle = s.num("fall_angle");
   p->watchdog = s.num("watchdog");
+  p->safe_hardness = s.num("safe_hardness");
+  p->start_hardness = s.num("start_hardness");
   p->battery = s.num("battery");
   p->joints = r.strs("joints");
   p->period = r.num("period");
