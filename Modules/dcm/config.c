@@ -27,17 +27,14 @@ const char *dcm_root(void) {
   return r && *r ? r : HRP_ROOT_DEFAULT;
 }
 
-/* Runs in the embedded state: (concern, robot|nil, platform|nil) -> table, files, robot, platform.
- * Config.files / robot / platform are used where Lib/Config.lua has them. */
+/* Runs in the embedded state: (concern, robot|nil, platform|nil) -> table, files, robot, platform. */
 static const char *LOADER =
     "local concern, robot, platform = ...\n"
     "local Config = require('Config')\n"
-    "robot = robot or (Config.robot and Config.robot()) or ''\n"
+    "robot = robot or Config.robot()\n"
     "platform = platform or Config.platform()\n"
-    "local opts = { robot = robot ~= '' and robot or nil, platform = platform }\n"
-    "local t = Config.export(concern, opts)\n"
-    "local files = Config.files and Config.files(concern, opts) or { concern }\n"
-    "return t, table.concat(files, ' + '), robot, platform\n";
+    "local t, files = Config.export(concern, { robot = robot, platform = platform })\n"
+    "return t, files, robot, platform\n";
 
 int dcm_config_load(const char *concern, const char *robot, const char *platform, dcm_config **out, char *err,
                     size_t errlen) {
