@@ -75,8 +75,12 @@ int dcm_config_load(const char *concern, const char *robot, const char *platform
   c->ref = luaL_ref(L, LUA_REGISTRYINDEX);
   *out = c;
   return 0;
-lua_fail:
-  snprintf(err, errlen, "%s", lua_tostring(L, -1) ? lua_tostring(L, -1) : "config: Lua error");
+lua_fail: {
+  const char *msg = lua_tostring(L, -1) ? lua_tostring(L, -1) : "config: Lua error";
+  /* Config.lua's errors for its caller carry our loader's position: not the user's business */
+  if (!strncmp(msg, "dcm_config:", 11) && strstr(msg, ": ")) msg = strstr(msg, ": ") + 2;
+  snprintf(err, errlen, "%s", msg);
+}
   dcm_config_free(c);
   return -EINVAL;
 }

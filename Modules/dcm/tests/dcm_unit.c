@@ -260,6 +260,98 @@ static void test_lockstep(void) {
   shm_block_close(y.blk);
 }
 
+/* ---------------------------------------------------------------- config */
+
+static char g_root[256];
+
+static void write_file(const char *rel, const char *text) {
+  char path[512];
+  snprintf(path, sizeof path, "%s/%s", g_root, rel);
+  FILE *f = fopen(path, "w");
+  fputs(text, f);
+  fclose(f);
+}
+
+static void test_config(void) {
+  snprintf(g_root, sizeof g_root, "/tmp/dcm_unit_config.XXXXXX");
+  if (!mkdtemp(g_root)) return;
+  const char *dirs[] = { "Config", "Config/robots", "Config/robots/t", "Config/platforms", "Config/platforms/P" };
+  for (size_t k = 0; k < sizeof dirs / sizeof dirs[0]; k++) {
+    char p[512];
+    snprintf(p, sizeof p, "%s/%s", g_root, dirs[k]);
+    mkdir(p, 0700);
+  }
+  char lib[512], link[512];
+  snprintf(lib, sizeof lib, "%s/Lib", dcm_root());
+  snprintf(link, sizeof link, "%s/Lib", g_root);
+  if (symlink(lib, link) != 0) return;
+  setenv("HRP_ROOT", g_root, 1);
+  write_file("Config/robots/t/dcm.lua",
+             "return { rate = 125, name = 'x', n = 3, frac = 0.5, flag = true, list = { 1, 2 },\n"
+             "  nested = { a = { 4, 5, 6 } }, rows = { { x = 1 }, { x = 2, s = 'two' } }, names = { 'p', 'q' } }\n");
+  write_file("Config/platforms/P/dcm.lua", "return { rate = 250 }\n");
+
+  char err[512] = "";
+  dcm_config *c = NULL;
+  int rc = dcm_config_load("dcm", "t", "P", &c, err, sizeof err);
+  tap_ok(rc == 0, "a concern loads through Lib/Config.lua", err);
+  if (rc) return;
+  tap_ok(!strcmp(dcm_config_files(c), "Config/robots/t/dcm.lua + Config/platforms/P/dcm.lua"), "the layer files are named",
+         dcm_config_files(c));
+  check(!strcmp(dcm_config_robot(c), "t") && !strcmp(dcm_config_platform(c), "P"), "robot and platform as asked");
+  double v = 0;
+  int i = 0, flag = 0;
+  char str[32] = "";
+  check(dcm_config_num(c, "rate", &v, err, sizeof err) == 0 && v == 250, "the platform layer overlays the body's");
+  check(dcm_config_int(c, "n", &i, err, sizeof err) == 0 && i == 3 && dcm_config_bool(c, "flag", &flag, err, sizeof err) == 0 &&
+            flag == 1 && dcm_config_str(c, "name", str, sizeof str, err, sizeof err) == 0 && !strcmp(str, "x"),
+        "typed getters: integer, boolean, string");
+  check(dcm_config_num(c, "nested.a.3", &v, err, sizeof err) == 0 && v == 6 &&
+            dcm_config_str(c, "rows.2.s", str, sizeof str, err, sizeof err) == 0 && !strcmp(str, "two"),
+        "dotted keys: a number indexes a list");
+  check(dcm_config_len(c, "rows", err, sizeof err) == 2 && dcm_config_has(c, "rows.2.x") && !dcm_config_has(c, "rows.3.x") &&
+            !dcm_config_has(c, "rows.1.s"),
+        "rows of a table: count and presence");
+  double l[3];
+  char names[2][DCM_NAME_MAX];
+  check(dcm_config_nums(c, "nested.a", l, 3, 3, err, sizeof err) == 3 && l[1] == 5 &&
+            dcm_config_strs(c, "names", names, 1, 2, err, sizeof err) == 2 && !strcmp(names[1], "q"),
+        "lists of numbers and strings");
+  check(dcm_config_num_or(c, "absent", 7, &v, err, sizeof err) == 0 && v == 7, "an optional key takes its default");
+
+  rc = dcm_config_num(c, "nested.b", &v, err, sizeof err);
+  tap_ok(rc < 0 && strstr(err, "Config/robots/t/dcm.lua + Config/platforms/P/dcm.lua: missing key 'nested.b'"),
+         "a missing key names the files and the key", err);
+  rc = dcm_config_num(c, "rows.2.s", &v, err, sizeof err);
+  tap_ok(rc < 0 && strstr(err, "key 'rows[2].s' must be a number, got string"), "a wrong type names the key as Lua writes it", err);
+  rc = dcm_config_int(c, "frac", &i, err, sizeof err);
+  tap_ok(rc < 0 && strstr(err, "key 'frac' must be an integer"), "a fraction where an integer belongs", err);
+  rc = dcm_config_nums(c, "list", l, 3, 3, err, sizeof err);
+  tap_ok(rc < 0 && strstr(err, "key 'list' must be a list of 3 numbers, has 2"), "a list of the wrong length", err);
+  rc = dcm_config_num(c, "name.x", &v, err, sizeof err);
+  tap_ok(rc < 0 && strstr(err, "key 'name' must be a table, got string"), "a path through a non-table", err);
+  rc = dcm_config_num_or(c, "name", 1, &v, err, sizeof err);
+  tap_ok(rc < 0 && strstr(err, "key 'name' must be a number"), "an optional key of the wrong type is still an error", err);
+  dcm_config_free(c);
+
+  /* errors of the layers themselves (Lib/Config.lua's) */
+  write_file("Config/platforms/P/dcm.lua", "return { rate = 250, rtae = 1 }\n");
+  rc = dcm_config_load("dcm", "t", "P", &c, err, sizeof err);
+  tap_ok(rc < 0 && strstr(err, "Config/platforms/P/dcm.lua") && strstr(err, "rtae"), "a typo in an overlay names file and key", err);
+  write_file("Config/platforms/P/dcm.lua", "return { rate = }\n");
+  rc = dcm_config_load("dcm", "t", "P", &c, err, sizeof err);
+  tap_ok(rc < 0 && strstr(err, "Config/platforms/P/dcm.lua"), "a syntax error names the file", err);
+  rc = dcm_config_load("dcm", "nobody", "P", &c, err, sizeof err);
+  tap_ok(rc < 0 && strstr(err, "nobody"), "an unknown robot is named", err);
+  rc = dcm_config_load("nothing", "t", "P", &c, err, sizeof err);
+  tap_ok(rc < 0 && strstr(err, "nothing"), "a concern without files is named", err);
+
+  char cmd[600];
+  snprintf(cmd, sizeof cmd, "rm -rf '%s'", g_root);
+  if (system(cmd) != 0) fprintf(stderr, "could not remove %s\n", g_root);
+  unsetenv("HRP_ROOT");
+}
+
 int main(void) {
   /* Tests/run_all.sh gives every run an id of its own; by hand, one away from a running robot */
   g_id = getenv("ROBOT_ID") ? shm_robot_id() : 9000 + (int)(getpid() % 500);
@@ -269,5 +361,6 @@ int main(void) {
   test_guard();
   test_lockstep();
   remove_blocks();
+  test_config();
   return tap_done();
 }
