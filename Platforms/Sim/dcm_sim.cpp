@@ -1,8 +1,12 @@
 // dcm_sim: the simulated robots' DCM. Serves dcm.sensor / dcm.actuator / dcm.stats / sync / sim /
 // camera.image for every simulated robot (ROBOT_ID, ROBOT_ID+1, ...) from one ODE world.
 //
-//   dcm_sim [--lockstep] [--seed N] [--robots N | --ids A,B,..] [--duration SIM_SECONDS]
-//           [--no-camera] [--report WALL_SECONDS] [--quiet] [--profile]
+//   dcm_sim [--lockstep] [--seed N] [--robots N | --robots BODY,BODY,..] [--ids A,B,..]
+//           [--duration SIM_SECONDS] [--no-camera] [--report WALL_SECONDS] [--quiet] [--profile]
+//
+// Robots: --robots N puts N robots of the body $ROBOT into the world; --robots op3,darwin one robot
+// of each named body (Config/robots/<BODY>), with its own description and config. Their ids are
+// ROBOT_ID, ROBOT_ID+1, ... or those of --ids (as many as bodies).
 //
 // A driver of the DCM library (Modules/dcm): the library paces the ticks (real time: absolute
 // deadlines; --lockstep: it publishes tick N and waits for every live participant of Lib/lockstep.lua),
@@ -15,6 +19,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -37,14 +42,26 @@ struct Options {
   bool camera = true, profile = false;
   uint64_t seed = 1;
   std::vector<int> ids;
+  std::vector<std::string> bodies;   // per robot ("": $ROBOT)
   double duration = -1;
   double report = 5;
 };
 
 void usage() {
   fprintf(stderr,
-          "usage: dcm_sim [--lockstep] [--seed N] [--robots N | --ids A,B,..] [--duration SIM_S]\n"
-          "               [--no-camera] [--report WALL_S] [--quiet] [--profile]\n");
+          "usage: dcm_sim [--lockstep] [--seed N] [--robots N | --robots BODY,BODY,..] [--ids A,B,..]\n"
+          "               [--duration SIM_S] [--no-camera] [--report WALL_S] [--quiet] [--profile]\n");
+}
+
+// "a,b,c" -> {"a", "b", "c"}
+std::vector<std::string> split(const std::string &l) {
+  std::vector<std::string> v;
+  for (size_t k = 0; k < l.size();) {
+    size_t e = l.find(',', k);
+    v.push_back(l.substr(k, e == std::string::npos ? std::string::npos : e - k));
+    k = e == std::string::npos ? l.size() : e + 1;
+  }
+  return v;
 }
 
 double cpu_seconds(clockid_t clock) {
@@ -89,6 +106,7 @@ struct Profile {
 struct SimRobot {
   dcm_blk_sim sim = {};
   sim::FrameQueue frames;
+  std::vector<int> hide;           // its links its camera does not see (its head)
   int head[2] = {-1, -1};          // shm index of head_pan / head_tilt (-1: none)
   double button_until[2] = {-1, -1};
   uint32_t refused = 0;            // Sim requests with NaN / inf arguments
@@ -97,8 +115,8 @@ struct SimRobot {
 // The driver's state: the world and everything around it.
 struct Sim {
   Options o;
-  sim::Params p;
-  sim::Model m;
+  std::vector<sim::Params> params;   // per robot; the world's own numbers are robot 0's
+  std::vector<sim::Body> bodies;
   std::unique_ptr<sim::World> world;
   std::unique_ptr<sim::Renderer> ren;
   std::unique_ptr<sim::CameraWorker> worker;
@@ -155,26 +173,27 @@ void publish_truth(Sim &s, int r) {
 
 int sim_configure(void *hw, dcm *d, char *err, size_t errlen) {
   Sim &s = *static_cast<Sim *>(hw);
-  try {
-    sim::load_all(&s.p, &s.m);
-  } catch (const std::exception &e) {
-    snprintf(err, errlen, "%s", e.what());
-    return -EINVAL;
-  }
   if (s.o.ids.size() > DCM_ROBOTS_MAX) {
     snprintf(err, errlen, "at most %d robots in one world", DCM_ROBOTS_MAX);
+    return -EINVAL;
+  }
+  try {
+    sim::load_bodies(s.o.bodies, &s.params, &s.bodies);
+  } catch (const std::exception &e) {
+    snprintf(err, errlen, "%s", e.what());
     return -EINVAL;
   }
   d->nrobots = (int)s.o.ids.size();
   for (int r = 0; r < d->nrobots; r++) {
     d->robot[r].id = s.o.ids[r];
-    d->robot[r].nj = (int)s.p.joints.size();
-    snprintf(d->robot[r].name, sizeof d->robot[r].name, "%s", s.m.name.c_str());
+    d->robot[r].nj = (int)s.bodies[r].joints.size();
+    snprintf(d->robot[r].name, sizeof d->robot[r].name, "%s", s.params[r].name.c_str());
   }
-  d->period = s.p.period;
-  d->watchdog = s.p.watchdog;
-  d->safe_hardness = s.p.safe_hardness;
-  d->start_hardness = s.p.start_hardness;
+  const sim::Params &p = s.params[0];
+  d->period = p.period;
+  d->watchdog = p.watchdog;
+  d->safe_hardness = p.safe_hardness;
+  d->start_hardness = p.start_hardness;
   d->simulated = 1;
   return 0;
 }
@@ -182,17 +201,22 @@ int sim_configure(void *hw, dcm *d, char *err, size_t errlen) {
 int sim_open(void *hw, dcm *d, char *err, size_t errlen) {
   Sim &s = *static_cast<Sim *>(hw);
   try {
-    s.world.reset(new sim::World(s.p, s.m, d->nrobots, s.o.seed));
-    s.ren.reset(new sim::Renderer(s.p, s.o.seed));
+    s.world.reset(new sim::World(s.params[0], s.bodies, s.o.seed));
+    s.ren.reset(new sim::Renderer(s.params[0], s.o.seed));
     s.rob.resize(d->nrobots);
     for (int r = 0; r < d->nrobots; r++) {
       SimRobot &x = s.rob[r];
       if (dcm_blocks_open(d->schema, d->robot[r].id, DCM_BLK_sim(&x.sim), err, errlen) < 0) return -EIO;
-      x.frames.open(d->schema, d->robot[r].id, s.p);
+      x.frames.open(d->schema, d->robot[r].id, s.params[r]);
+      const std::vector<std::string> &joints = s.bodies[r].joints;
       for (int j = 0; j < d->robot[r].nj; j++) {
-        if (s.p.joints[j] == "head_pan") x.head[0] = j;
-        if (s.p.joints[j] == "head_tilt") x.head[1] = j;
+        if (joints[j] == "head_pan") x.head[0] = j;
+        if (joints[j] == "head_tilt") x.head[1] = j;
       }
+      const sim::Model &m = s.world->model(r);
+      x.hide = {m.link_index("head_pan_link"), m.link_index("head_tilt_link")};
+      const int cl = m.frame_index(s.params[r].camera_frame);
+      if (cl >= 0) x.hide.push_back(m.frames[cl].link);
     }
   } catch (const std::exception &e) {
     snprintf(err, errlen, "%s", e.what());
@@ -216,20 +240,16 @@ int sim_enable(void *hw, dcm *d, char *err, size_t errlen) {
   }
   w.reset();
   for (int r = 0; r < d->nrobots; r++) publish_truth(s, r);
-  if (s.o.camera) {
-    std::vector<int> hide = {s.m.link_index("head_pan_link"), s.m.link_index("head_tilt_link")};
-    int cl = s.m.frame_index(s.p.camera_frame);
-    if (cl >= 0) hide.push_back(s.m.frames[cl].link);
-    s.worker.reset(new sim::CameraWorker(w, *s.ren, hide));
-  }
+  if (s.o.camera) s.worker.reset(new sim::CameraWorker(w, *s.ren, s.rob[0].hide));
   if (!d->quiet) {
-    printf("dcm_sim: %d robot(s) (ids", d->nrobots);
-    for (int id : s.o.ids) printf(" %d", id);
+    const sim::Params &p = s.params[0];
+    printf("dcm_sim: %d robot(s) (", d->nrobots);
+    for (int r = 0; r < d->nrobots; r++) printf("%s%s %d", r ? ", " : "", d->robot[r].name, d->robot[r].id);
     printf("), %s, seed %llu, physics %.1f ms x %d per %.0f ms tick, camera %s\n",
-           d->lockstep ? "lockstep" : "real time", (unsigned long long)s.o.seed, s.p.timestep * 1e3,
-           (int)std::lround(s.p.period / s.p.timestep), s.p.period * 1e3,
-           s.o.camera ? (std::to_string(s.p.cam_width) + "x" + std::to_string(s.p.cam_height) + " @ " +
-                         std::to_string((int)s.p.cam_rate) + " Hz").c_str()
+           d->lockstep ? "lockstep" : "real time", (unsigned long long)s.o.seed, p.timestep * 1e3,
+           (int)std::lround(p.period / p.timestep), p.period * 1e3,
+           s.o.camera ? (std::to_string(p.cam_width) + "x" + std::to_string(p.cam_height) + " @ " +
+                         std::to_string((int)p.cam_rate) + " Hz").c_str()
                       : "off");
     fflush(stdout);
   }
@@ -281,7 +301,7 @@ void sim_read(void *hw, dcm *d) {
       const std::vector<double> q = w.joint_positions(r);
       const SimRobot &x = s.rob[r];
       const double head[2] = {x.head[0] >= 0 ? q[x.head[0]] : 0, x.head[1] >= 0 ? q[x.head[1]] : 0};
-      s.rob[r].frames.expose(w, r, tick, tick * d->period, head, s.p, &scene, &have_scene);
+      s.rob[r].frames.expose(w, r, tick, tick * d->period, head, s.params[r], &x.hide, &scene, &have_scene);
     }
     s.prof.lap(Profile::kExpose);
     for (SimRobot &x : s.rob) x.frames.deliver(*s.worker, tick);
@@ -301,13 +321,13 @@ void sim_publish(void *hw, dcm *d, int r, const dcm_blk_dcm_sensor *o) {
   memcpy(o->position, x.position.data(), nd);
   memcpy(o->velocity, x.velocity.data(), nd);
   memcpy(o->load, x.load.data(), nd);
-  for (int j = 0; j < d->robot[r].nj; j++) o->temperature[j] = s.p.temperature;
+  for (int j = 0; j < d->robot[r].nj; j++) o->temperature[j] = s.params[r].temperature;
   memcpy(o->gyro, x.gyro, sizeof x.gyro);
   memcpy(o->accelerometer, x.accel, sizeof x.accel);
   memcpy(o->angle, x.angle, sizeof x.angle);
   memcpy(o->foot_force, x.foot_force, sizeof x.foot_force);
   for (int k = 0; k < 2; k++) o->button[k] = w.time() < s.rob[r].button_until[k];
-  *o->battery = s.p.battery;
+  *o->battery = s.params[r].battery;
 }
 
 void sim_stats(void *hw, dcm *d, int r, const dcm_blk_dcm_stats *o) {
@@ -377,22 +397,22 @@ int main(int argc, char **argv) {
     } else if (a == "--seed" || a == "--robots" || a == "--ids" || a == "--duration" || a == "--report") {
       if (!(v = next())) return 2;
       if (a == "--seed") s.o.seed = strtoull(v, nullptr, 10);
-      else if (a == "--robots") nrobots = atoi(v);
+      else if (a == "--robots" && std::isdigit((unsigned char)v[0])) nrobots = atoi(v);
+      else if (a == "--robots") s.o.bodies = split(v);
       else if (a == "--duration") s.o.duration = atof(v);
       else if (a == "--report") s.o.report = atof(v);
-      else {
-        std::string l = v;
-        for (size_t k = 0; k < l.size();) {
-          size_t e = l.find(',', k);
-          s.o.ids.push_back(atoi(l.substr(k, e - k).c_str()));
-          k = e == std::string::npos ? l.size() : e + 1;
-        }
-      }
+      else
+        for (const std::string &id : split(v)) s.o.ids.push_back(atoi(id.c_str()));
     } else {
       fprintf(stderr, "dcm_sim: unknown argument '%s'\n", a.c_str());
       usage();
       return 2;
     }
+  }
+  if (!s.o.bodies.empty()) nrobots = (int)s.o.bodies.size();
+  if (!s.o.ids.empty() && !s.o.bodies.empty() && s.o.ids.size() != s.o.bodies.size()) {
+    fprintf(stderr, "dcm_sim: %zu ids for %zu bodies\n", s.o.ids.size(), s.o.bodies.size());
+    return 2;
   }
   if (s.o.ids.empty()) {
     if (nrobots < 1) {
@@ -401,6 +421,7 @@ int main(int argc, char **argv) {
     }
     for (int k = 0; k < nrobots; k++) s.o.ids.push_back(shm_robot_id() + k);
   }
+  if (s.o.bodies.empty()) s.o.bodies.assign(s.o.ids.size(), "");
   dcm_driver drv = {};
   drv.configure = sim_configure;
   drv.open = sim_open;

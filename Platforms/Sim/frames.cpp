@@ -28,7 +28,7 @@ void FrameQueue::close() {
 }
 
 void FrameQueue::expose(const World &w, int r, uint32_t tick, double time, const double head[2], const Params &p,
-                        Scene *scene, bool *have_scene) {
+                        const std::vector<int> *hide, Scene *scene, bool *have_scene) {
   if (w.time() + 1e-9 < next_frame_) return;
   next_frame_ += 1.0 / p.cam_rate;
   if (!*have_scene) {
@@ -55,6 +55,7 @@ void FrameQueue::expose(const World &w, int r, uint32_t tick, double time, const
   j.cam.fovy = p.cam_fovy;
   j.scene = *scene;
   j.self = r;
+  j.hide = hide;
   j.seq = f.number + 7919u * (uint32_t)r;
   j.out = f.img.data();
 }

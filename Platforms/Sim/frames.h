@@ -23,9 +23,9 @@ class FrameQueue {
   void close();
   // Camera of robot r after the step to `tick`: if a frame is due, its snapshot (`scene` is taken
   // once per tick for all robots) and its place in the queue. time: robot clock at exposure;
-  // head: head pan / tilt at exposure.
+  // head: head pan / tilt at exposure; p: the robot's camera; hide: its links the camera does not see.
   void expose(const World &w, int r, uint32_t tick, double time, const double head[2], const Params &p,
-              Scene *scene, bool *have_scene);
+              const std::vector<int> *hide, Scene *scene, bool *have_scene);
   // Once tick `tick` is published: hands the new frames to the worker, and the copies into
   // camera.image of the frames due at the next tick, made while the physics steps.
   void hand_over(CameraWorker &wk, uint32_t tick);
