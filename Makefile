@@ -16,6 +16,8 @@ all: $(DEPS_STAMP) $(NATIVE_DIRS)
 
 # Modules/shm first: others link against it.
 $(filter-out Modules/shm/,$(NATIVE_DIRS)): Modules/shm/
+# the robot description parser: linked by the kinematics and the sim
+Modules/kinematics/ Platforms/Sim/: Modules/description/
 
 $(NATIVE_DIRS): $(DEPS_STAMP)
 	@$(MAKE) --no-print-directory -C $@ all

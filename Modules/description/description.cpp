@@ -1,5 +1,5 @@
-// model: URDF -> sim::Model through liburdfdom, with errors that name the file and the element.
-#include "model.h"
+// description: URDF -> desc::Model through liburdfdom, with errors that name the file and the element.
+#include "description/description.h"
 
 #include <console_bridge/console.h>
 #include <urdf_parser/urdf_parser.h>
@@ -9,7 +9,7 @@
 #include <functional>
 #include <sstream>
 
-namespace sim {
+namespace desc {
 
 int Model::link_index(const std::string &n) const {
   for (size_t i = 0; i < links.size(); i++) if (links[i].name == n) return (int)i;
@@ -27,6 +27,16 @@ double Model::total_mass() const {
   double m = 0;
   for (const Link &l : links) m += l.mass;
   return m;
+}
+void Model::zero_pose(std::vector<Vec3> *pos, std::vector<Mat3> *rot) const {
+  pos->assign(links.size(), Vec3::Zero());
+  rot->assign(links.size(), Mat3::Identity());
+  for (size_t i = 0; i < links.size(); i++) {
+    const Link &l = links[i];
+    if (l.parent < 0) continue;
+    (*pos)[i] = (*pos)[l.parent] + (*rot)[l.parent] * l.origin;
+    (*rot)[i] = (*rot)[l.parent] * l.origin_rot;
+  }
 }
 
 namespace {
@@ -49,7 +59,7 @@ bool finite(const Vec3 &v) { return std::isfinite(v.x()) && std::isfinite(v.y())
 
 }  // namespace
 
-int model_load(const std::string &path, Model *out, std::string *err) {
+int load(const std::string &path, Model *out, std::string *err) {
   std::ifstream in(path);
   if (!in) { *err = path + ": cannot open the robot file"; return -1; }
   std::stringstream ss;
@@ -157,4 +167,4 @@ int model_load(const std::string &path, Model *out, std::string *err) {
   return 0;
 }
 
-}  // namespace sim
+}  // namespace desc
