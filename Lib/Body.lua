@@ -1,6 +1,6 @@
 -- The robot's body: joints by name or index, commands and sensors through shm, radians everywhere.
 --
--- Joint names, order, groups and limits come from Config/<PLATFORM>/robot.lua. A command beyond
+-- Joint names, order, groups and limits come from the body's robot.lua (Config/robots/<ROBOT>/). A command beyond
 -- a joint's limit is clamped (counted in body.stats.clamped); a NaN or infinite command is refused
 -- (counted in body.stats.refused) and never reaches dcm.actuator.
 local shm = require('shm')
@@ -9,6 +9,7 @@ local Config = require('Config')
 local M = {}
 
 local robot = Config.load('robot', { joints = 'table', groups = 'table', limits = 'table', period = 'number' })
+local robot_file = table.concat(Config.files('robot'), ' + ')
 local sensor = shm.open('dcm.sensor')
 local actuator = shm.open('dcm.actuator')
 local stats = shm.open('body.stats')
@@ -21,15 +22,14 @@ for i, name in ipairs(robot.joints) do
   index[name] = i
   local lim = rawget(robot.limits, name)
   if type(lim) ~= 'table' or type(lim[1]) ~= 'number' or type(lim[2]) ~= 'number' or lim[1] > lim[2] then
-    error(string.format("Config/%s/robot.lua: key 'limits.%s' must be { min, max } in radians",
-      Config.platform(), name), 0)
+    error(string.format("%s: key 'limits.%s' must be { min, max } in radians", robot_file, name), 0)
   end
   lo[i], hi[i] = lim[1], lim[2]
 end
 local njoint = #names
 if njoint > actuator:count('command') then
-  error(string.format("Config/%s/robot.lua: %d joints but the shm schema has room for %d (const njoint)",
-    Config.platform(), njoint, actuator:count('command')), 0)
+  error(string.format("%s: %d joints but the shm schema has room for %d (const njoint)",
+    robot_file, njoint, actuator:count('command')), 0)
 end
 
 local groups = {}
@@ -37,7 +37,7 @@ for gname, members in pairs(robot.groups) do
   local idx = {}
   for k, jname in ipairs(members) do
     idx[k] = index[jname] or error(string.format(
-      "Config/%s/robot.lua: group '%s' names unknown joint '%s'", Config.platform(), gname, jname), 0)
+      "%s: group '%s' names unknown joint '%s'", robot_file, gname, jname), 0)
   end
   groups[gname] = idx
 end

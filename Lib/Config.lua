@@ -1,11 +1,21 @@
--- Robot configuration: Config/<PLATFORM>/<concern>.lua, each a Lua file returning a table.
+-- Robot configuration, one concern (walk, robot, behavior, ...) at a time, overlaid from layers:
+--
+--   Config/common/<concern>.lua                   defaults for every robot (field, game, colours)
+--   Config/robots/<ROBOT>/<concern>.lua           the body: description, walk, keyframes, sizes
+--   Config/platforms/<PLATFORM>/<concern>.lua     what the platform changes (Sim: sim camera; OP: bus)
+--   Config/platforms/<PLATFORM>/<ROBOT>/<concern>.lua   a platform's setting for one body (rare)
+--   $HRP_SITE/<concern>.lua (default Config/site)  the venue: team and player number, colour table
 --
 --   local Config = require('Config')
---   local walk = Config.load('walk', { tStep = 'number', stanceLimitX = 'table' })
+--   local walk = Config.load('walk', { tStep = 'number', stepLimitX = 'table' })
+--   local other = Config.load('robot', nil, { robot = 'darwin' })
 --
--- PLATFORM (default Sim) selects the folder. A missing file, a missing key, a key of the
--- wrong type or an unknown platform fails at once with the file and the key named; reading a
--- key that the file does not have also fails (use Config.optional for optional keys).
+-- ROBOT (default op3) selects the body, PLATFORM (default Sim) the DCM. Each file returns a table.
+-- The first two layers are defaults and may add keys; the platform and site layers only change
+-- keys the defaults have (an unknown key there is a typo: an error naming the file and the key),
+-- unless no default layer has the concern at all (sim.lua, dcm.lua). Tables merge key by key;
+-- lists (tables with [1]) are replaced whole. Every error names the file, and reading a key that
+-- no layer has fails naming the files consulted (Config.optional reads optional keys).
 local native = require('native')
 
 local M = {}
@@ -17,15 +27,23 @@ local root -- nil: the project's root
 function M.use_root(dir) root = dir cache = {} end
 local function config_root() return root or native.root() end
 
-function M.platform()
-  local p = os.getenv('PLATFORM')
-  if p == nil or p == '' then return 'Sim' end
-  return p
+local function env(name, default)
+  local v = os.getenv(name)
+  if v == nil or v == '' then return default end
+  return v
 end
 
-function M.dir(platform)
-  return config_root() .. '/Config/' .. (platform or M.platform())
-end
+function M.platform() return env('PLATFORM', 'Sim') end
+function M.robot() return env('ROBOT', 'op3') end
+
+-- Repository-relative folder of a robot's body and of a platform.
+local function robot_rel(robot) return 'Config/robots/' .. robot end
+local function platform_rel(platform) return 'Config/platforms/' .. platform end
+
+-- Absolute path of Config/robots/<robot> (default ROBOT).
+function M.robot_dir(robot) return config_root() .. '/' .. robot_rel(robot or M.robot()) end
+-- Absolute path of the folder of a platform (default PLATFORM).
+function M.dir(platform) return config_root() .. '/' .. platform_rel(platform or M.platform()) end
 
 local function is_dir(path)
   local f = io.open(path .. '/.', 'r')
@@ -33,14 +51,96 @@ local function is_dir(path)
   return false
 end
 
--- Makes reading an absent key an error naming the file and the key path.
-local function strict(tbl, file, prefix)
+local function site_dir()
+  local s = env('HRP_SITE', nil)
+  if s then return s, s end
+  return config_root() .. '/Config/site', 'Config/site'
+end
+
+-- opts: nil, a table { robot =, platform = }, or (old form) a platform name.
+local function resolve(opts)
+  if type(opts) == 'string' then opts = { platform = opts } end
+  opts = opts or {}
+  local robot, platform = opts.robot or M.robot(), opts.platform or M.platform()
+  if not is_dir(M.robot_dir(robot)) then
+    error(string.format("unknown robot '%s': no folder %s", robot, robot_rel(robot)), 3)
+  end
+  if not is_dir(M.dir(platform)) then
+    error(string.format("unknown platform '%s': no folder %s", platform, platform_rel(platform)), 3)
+  end
+  return robot, platform
+end
+
+-- The layers of a concern: { { abs = path, file = shown name, default = bool }, ... }
+local function layers(concern, robot, platform)
+  local site_abs, site_shown = site_dir()
+  local r = config_root() .. '/'
+  local name = concern .. '.lua'
+  return {
+    { abs = r .. 'Config/common/' .. name, file = 'Config/common/' .. name, default = true },
+    { abs = r .. robot_rel(robot) .. '/' .. name, file = robot_rel(robot) .. '/' .. name, default = true },
+    { abs = r .. platform_rel(platform) .. '/' .. name, file = platform_rel(platform) .. '/' .. name },
+    { abs = r .. platform_rel(platform) .. '/' .. robot .. '/' .. name,
+      file = platform_rel(platform) .. '/' .. robot .. '/' .. name },
+    { abs = site_abs .. '/' .. name, file = site_shown .. '/' .. name },
+  }
+end
+
+local function exists(path)
+  local f = io.open(path, 'r')
+  if f then f:close() return true end
+  return false
+end
+
+local function read_file(layer)
+  if not exists(layer.abs) then return nil end
+  local chunk, err = loadfile(layer.abs)
+  if not chunk then error(string.format('%s: %s', layer.file, err), 0) end
+  local ok, res = pcall(chunk)
+  if not ok then error(string.format('%s: %s', layer.file, tostring(res)), 0) end
+  if type(res) ~= 'table' then
+    error(string.format('%s: must return a table, returned %s', layer.file, type(res)), 0)
+  end
+  return res
+end
+
+local function is_list(t) return rawget(t, 1) ~= nil end
+
+local function copy(v)
+  if type(v) ~= 'table' then return v end
+  local t = {}
+  for k, x in pairs(v) do t[k] = copy(x) end
+  return t
+end
+
+-- Overlays `src` (from `file`) onto `dst`. open: unknown keys may be added.
+local function merge(dst, src, file, prefix, open)
+  for k, v in pairs(src) do
+    local name = prefix .. tostring(k)
+    local cur = dst[k]
+    if cur == nil then
+      if not open then
+        error(string.format("%s: unknown key '%s' (no default layer has it)", file, name), 0)
+      end
+      dst[k] = copy(v)
+    elseif type(cur) ~= type(v) then
+      error(string.format("%s: key '%s' must be a %s, got %s", file, name, type(cur), type(v)), 0)
+    elseif type(v) == 'table' and not is_list(v) and not is_list(cur) then
+      merge(cur, v, file, name .. '.', open)
+    else
+      dst[k] = copy(v)
+    end
+  end
+end
+
+-- Makes reading an absent key an error naming the files and the key path.
+local function strict(tbl, files, prefix)
   for k, v in pairs(tbl) do
-    if type(v) == 'table' and getmetatable(v) == nil then strict(v, file, prefix .. tostring(k) .. '.') end
+    if type(v) == 'table' and getmetatable(v) == nil then strict(v, files, prefix .. tostring(k) .. '.') end
   end
   return setmetatable(tbl, {
     __index = function(_, key)
-      error(string.format("%s: missing key '%s%s'", file, prefix, tostring(key)), 2)
+      error(string.format("%s: missing key '%s%s'", files, prefix, tostring(key)), 2)
     end,
   })
 end
@@ -62,34 +162,64 @@ local function validate(tbl, spec, file, prefix)
   end
 end
 
--- Loads Config/<platform>/<concern>.lua (cached), checks it against spec (optional).
-function M.load(concern, spec, platform)
-  platform = platform or M.platform()
-  local dir = M.dir(platform)
-  if not is_dir(dir) then
-    error(string.format("unknown platform '%s': no folder %s", platform, dir), 2)
+-- Merges the layers of a concern: the plain table and the list of files used.
+local function build(concern, robot, platform)
+  local result, used, has_default = {}, {}, false
+  local ls = layers(concern, robot, platform)
+  for _, l in ipairs(ls) do
+    if l.default and exists(l.abs) then has_default = true end
   end
-  local file = 'Config/' .. platform .. '/' .. concern .. '.lua'
-  local cfg = cache[file]
-  if not cfg then
-    local chunk, err = loadfile(config_root() .. '/' .. file)
-    if not chunk then
-      if err:find('No such file') or err:find('cannot open') then
-        error(string.format("%s: missing config file for '%s' on platform %s", file, concern, platform), 2)
-      end
-      error(string.format('%s: %s', file, err), 2)
+  for _, l in ipairs(ls) do
+    local t = read_file(l)
+    if t then
+      merge(result, t, l.file, '', l.default or (not has_default and #used == 0))
+      used[#used + 1] = l.file
     end
-    local ok, res = pcall(chunk)
-    if not ok then error(string.format('%s: %s', file, res), 2) end
-    if type(res) ~= 'table' then error(string.format('%s: must return a table, returned %s', file, type(res)), 2) end
-    cfg = strict(res, file, '')
-    cache[file] = cfg
+  end
+  if #used == 0 then
+    error(string.format("no config file for '%s' (robot %s, platform %s): looked for %s/%s.lua and %s/%s.lua",
+      concern, robot, platform, robot_rel(robot), concern, platform_rel(platform), concern), 0)
+  end
+  return result, used
+end
+
+-- The files that make up a concern (repository-relative, lowest layer first).
+function M.files(concern, opts)
+  local robot, platform = resolve(opts)
+  local _, used = build(concern, robot, platform)
+  return used
+end
+
+-- Loads a concern (cached), checks it against spec (optional); a strict table.
+function M.load(concern, spec, opts)
+  local robot, platform = resolve(opts)
+  local key = concern .. '|' .. robot .. '|' .. platform
+  local entry = cache[key]
+  if not entry then
+    local ok, res, used = pcall(build, concern, robot, platform)
+    if not ok then error(res, 2) end
+    local files = table.concat(used, ' + ')
+    entry = { cfg = strict(res, files, ''), files = files }
+    cache[key] = entry
   end
   if spec then
-    local ok, err = pcall(validate, cfg, spec, file, '')
+    local ok, err = pcall(validate, entry.cfg, spec, entry.files, '')
     if not ok then error(err, 2) end
   end
-  return cfg
+  return entry.cfg
+end
+
+-- The same as a plain table without metatables (for C readers and tools), plus the files used.
+function M.export(concern, opts)
+  local robot, platform = resolve(opts)
+  local res, used = build(concern, robot, platform)
+  return res, table.concat(used, ' + ')
+end
+
+-- Absolute path of a file named in a robot's config (relative to the robot's folder).
+function M.robot_file(name, robot)
+  if name:sub(1, 1) == '/' then return name end
+  return M.robot_dir(robot) .. '/' .. name
 end
 
 -- Value of an optional key (nil when absent) without tripping the strict check.

@@ -1,11 +1,11 @@
 -- The walk from Lua and the REPL: velocity commands and run-time parameter changes.
 --
 --   Walk.set_velocity(0.2, 0, 0.3)   -- m/s forward, m/s left, rad/s; clamped to the limits of
---                                     -- Config/<PLATFORM>/walk.lua; NaN/inf refused (nil, message)
+--                                     -- the body's walk.lua (Config/robots/<ROBOT>/); NaN/inf refused (nil, message)
 --   Walk.get_velocity()              -- the command; Walk.velocity() the current rate-limited speed
 --   Walk.set('tStep', 0.3)           -- change a walk parameter while walking (checked here and
 --   Walk.set('feedback.ankle', {0.1, 0.2})  -- again in the motion process; applied at its next tick)
---   Walk.reload()                    -- re-read Config/<PLATFORM>/walk.lua in the motion process
+--   Walk.reload()                    -- re-read the body's walk.lua (Config/robots/<ROBOT>/) in the motion process
 --   Walk.param_status()              -- 'applied' / 'pending' / the reason of a refusal
 --   Walk.get('tStep')                -- value in the config file (as this process read it)
 -- Talks to the motion process through the `motion` shm block (velocity, param_*).

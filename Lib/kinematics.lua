@@ -1,9 +1,9 @@
 -- Kinematics of the robot (forward/inverse, camera pose, centre of mass) through LuaJIT FFI over
 -- Modules/kinematics (libhrpkin.so, C++/Eigen). The geometry and masses are data: the platform's
--- `kinematics` table (Config/Sim/robot.lua's `kinematics`, or Config/<platform>/kinematics.lua).
+-- `kinematics` table of the body's robot.lua (Config/robots/<ROBOT>/robot.lua).
 --
 --   local kin = require('kinematics')
---   local model = kin.load()                 -- PLATFORM's robot (default Sim); or kin.new(robot_cfg, kt)
+--   local model = kin.load()                 -- ROBOT's body (default op3); or kin.new(robot_cfg, kt)
 --   local q6, flags = model:leg_ik('l', x, y, z, roll, pitch, yaw, out)    -- or kin.leg_ik(model, ...)
 --   local q6, flags = model:leg_ik('r', { x, y, z, roll, pitch, yaw }, out)
 --   local flags = model:legs_ik(lpose, rpose, q)   -- both legs into q[joint index] (robot joint order)
@@ -17,7 +17,7 @@
 --
 -- Units and frames: metres, radians. Torso frame: x forward, y left, z up, origin `kinematics.origin`
 -- (OP3 and DARwIn-OP: between the hip yaw axes at the hip yaw joints' height; for the OP3 the
--- origin of body_link in Config/Sim/op3.urdf). `model.origin` gives it in the zero-pose frame.
+-- origin of body_link in Config/robots/op3/op3.urdf). `model.origin` gives it in the zero-pose frame.
 -- A foot pose is the pose of the foot frame (origin at the sole point below the ankle, axes
 -- parallel to the torso's at the zero pose)
 -- in the torso frame, as x y z roll pitch yaw with R = Rz(yaw) Ry(pitch) Rx(roll).
@@ -189,20 +189,11 @@ function M.new(robot, kt)
   return m
 end
 
--- The model of a platform (default $PLATFORM or Sim): Config/<platform>/robot.lua with its
--- `kinematics` entry, or else Config/<platform>/kinematics.lua (whose `joints_order` stands in
--- when the platform has no robot.lua yet).
-function M.load(platform)
+-- The model of a body (opts: nil = ROBOT, or { robot = name }): its robot.lua with `kinematics`.
+function M.load(opts)
   local Config = require('Config')
-  local okr, robot = pcall(Config.load, 'robot', nil, platform)
-  local kt = okr and rawget(robot, 'kinematics') or nil
-  if kt == nil then kt = Config.load('kinematics', nil, platform) end
-  if not okr then
-    local order = rawget(kt, 'joints_order')
-    if order == nil then error(robot, 2) end
-    robot = { joints = order }
-  end
-  local m, err = M.new(robot, kt)
+  local robot = Config.load('robot', nil, opts)
+  local m, err = M.new(robot, rawget(robot, 'kinematics'))
   if not m then error(err, 2) end
   return m
 end

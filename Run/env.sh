@@ -1,11 +1,16 @@
-# Sourced by the launchers: the project's root, Lua search path, platform and robot defaults.
+# Sourced by the launchers: the project's root, Lua search path, platform, body and robot id defaults.
 HRP_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 export HRP_ROOT
 export LUA_PATH="$HRP_ROOT/Lib/?.lua;$HRP_ROOT/Player/?.lua;$HRP_ROOT/?.lua;;"
-export PLATFORM="${PLATFORM:-Sim}"
+export PLATFORM="${PLATFORM:-Sim}"   # what serves the blocks: Sim, OP (Config/platforms/)
+export ROBOT="${ROBOT:-op3}"          # the body: op3, darwin, ... (Config/robots/)
 export ROBOT_ID="${ROBOT_ID:-1}"
-if [ ! -d "$HRP_ROOT/Config/$PLATFORM" ]; then
-  echo "unknown platform '$PLATFORM': no folder Config/$PLATFORM (have: $(ls "$HRP_ROOT/Config" | grep -v '\.' | tr '\n' ' '))" >&2
+if [ ! -d "$HRP_ROOT/Config/platforms/$PLATFORM" ]; then
+  echo "unknown platform '$PLATFORM': no folder Config/platforms/$PLATFORM (have: $(ls "$HRP_ROOT/Config/platforms" | tr '\n' ' '))" >&2
+  exit 2
+fi
+if [ ! -d "$HRP_ROOT/Config/robots/$ROBOT" ]; then
+  echo "unknown robot '$ROBOT': no folder Config/robots/$ROBOT (have: $(ls "$HRP_ROOT/Config/robots" | tr '\n' ' '))" >&2
   exit 2
 fi
 if [ ! -f "$HRP_ROOT/build/lib/libhrpshm.so" ]; then

@@ -74,7 +74,7 @@ function env.p(x)
 end
 
 local HELP = [[
-hrp REPL (robot %d, platform %s)
+hrp REPL (robot id %d, body %s, platform %s)
   Body.joint_names()  Body.get_position('head_pan')  Body.set_command('head_pan', 0.3)
   Body.set_head_command({pan, tilt})  Body.get_gyro()  Body.get_time()
   blocks['dcm.sensor']:dump()  dcm_sensor.position[0]  dcm_actuator:set('hardness', 1)
@@ -83,7 +83,7 @@ hrp REPL (robot %d, platform %s)
   Sim.truth() Sim.reset() Sim.teleport_robot(x, y, yaw) Sim.teleport_ball(x, y) Sim.push(fx, fy, t)
   Motion.request('walk')  Walk.set_velocity(vx, vy, va)  Vision.ball()   (when loaded)
   help()  quit with Ctrl-D]]
-function env.help() print(string.format(HELP, shm.robot_id(), Config.platform())) end
+function env.help() print(string.format(HELP, shm.robot_id(), Config.robot(), Config.platform())) end
 
 local function run_chunk(chunk)
   setfenv(chunk, env)

@@ -205,11 +205,11 @@ int shm_schema_load(const char *path, shm_schema **out, char *err, size_t errlen
   }
   shm_schema *s = calloc(1, sizeof *s);
   if (!s) { snprintf(err, errlen, "out of memory"); return -ENOMEM; }
-  /* The platform's constants are read first and locked: the schema's own values are defaults. */
-  const char *platform = getenv("PLATFORM");
+  /* The body's constants are read first and locked: the schema's own values are defaults. */
+  const char *robot = getenv("ROBOT");
   char over[1024];
-  snprintf(over, sizeof over, "%s/Config/%s/shm.consts", shm_root(),
-           (platform && *platform) ? platform : "Sim");
+  snprintf(over, sizeof over, "%s/Config/robots/%s/shm.consts", shm_root(),
+           (robot && *robot) ? robot : "op3");
   int rc = 0;
   FILE *probe = fopen(over, "r");
   if (probe) {

@@ -1,8 +1,8 @@
 /* dcm_op: the DCM of the OP platform (DARwIn-OP: MX-28 + CM-730, protocol 1.0; OP3: XM430 +
- * OpenCR, protocol 2.0). PLATFORM=OP ./run_dcm [--port PATH] [--robot darwin|op3] [--rate HZ]
+ * OpenCR, protocol 2.0). PLATFORM=OP ./run_dcm [--port PATH] [--robot darwin|op3 (sets ROBOT)] [--rate HZ]
  * [--baud N] [--cycles N] [--timeout-margin S] [--quiet]
  *
- * Lifecycle (one job per step): parse config (Config/OP/robot.lua, dcm.lua; no I/O) -> open
+ * Lifecycle (one job per step): parse config (robot.lua with its devices, dcm.lua; no I/O) -> open
  * the shm blocks -> open the port (retried) -> ping, read the pose, hold it -> cycle.
  * Each cycle, at an absolute deadline: read dcm.actuator; one sync write of goal positions
  * (and of torque enable / hardness only when they change); one bulk read of positions (one
@@ -111,11 +111,20 @@ static int lua_nums(lua_State *L, const char *file, const char *key, double *out
   return 0;
 }
 
-static int load_file(lua_State *L, const char *root, const char *name, char *err, size_t n) {
-  char path[512];
-  snprintf(path, sizeof path, "%s/Config/OP/%s", root, name);
-  if (luaL_dofile(L, path) != 0) { snprintf(err, n, "%s", lua_tostring(L, -1)); return -1; }
-  if (!lua_istable(L, -1)) { snprintf(err, n, "Config/OP/%s: must return a table", name); return -1; }
+/* Pushes Config.export(concern) of Lib/Config.lua (the layers of Config/, the one reader of the
+ * Lua processes too); the files it came from go into `files`. */
+static int load_concern(lua_State *L, const char *root, const char *concern, char *files, size_t flen,
+                        char *err, size_t n) {
+  static const char script[] =
+      "local root, concern = ...\n"
+      "package.path = root .. '/Lib/?.lua;' .. package.path\n"
+      "return require('Config').export(concern)\n";
+  if (luaL_loadstring(L, script) != 0) { snprintf(err, n, "%s", lua_tostring(L, -1)); return -1; }
+  lua_pushstring(L, root);
+  lua_pushstring(L, concern);
+  if (lua_pcall(L, 2, 2, 0) != 0) { snprintf(err, n, "%s", lua_tostring(L, -1)); return -1; }
+  snprintf(files, flen, "%s", lua_isstring(L, -1) ? lua_tostring(L, -1) : concern);
+  lua_pop(L, 1);
   return 0;
 }
 
@@ -128,12 +137,13 @@ static int load_config(config *c, char *err, size_t n) {
   int rc = -1;
   double v, tmp[NJ_MAX];
   char s[64];
-  /* robot.lua: joints, limits, period */
-  if (load_file(L, root, "robot.lua", err, n)) goto out;
+  /* robot.lua: joints, limits, period, the bus devices */
+  char rf[200], df[200];
+  if (load_concern(L, root, "robot", rf, sizeof rf, err, n)) goto out;
   lua_getfield(L, -1, "joints");
-  if (!lua_istable(L, -1)) { snprintf(err, n, "Config/OP/robot.lua: key 'joints' missing"); goto out; }
+  if (!lua_istable(L, -1)) { snprintf(err, n, "%s: key 'joints' missing", rf); goto out; }
   c->nj = (int)lua_objlen(L, -1);
-  if (c->nj <= 0 || c->nj > NJ_MAX) { snprintf(err, n, "Config/OP/robot.lua: %d joints", c->nj); goto out; }
+  if (c->nj <= 0 || c->nj > NJ_MAX) { snprintf(err, n, "%s: %d joints", rf, c->nj); goto out; }
   for (int j = 0; j < c->nj; j++) {
     lua_rawgeti(L, -1, j + 1);
     snprintf(c->joint[j], sizeof c->joint[j], "%s", lua_isstring(L, -1) ? lua_tostring(L, -1) : "?");
@@ -141,29 +151,25 @@ static int load_config(config *c, char *err, size_t n) {
   }
   lua_pop(L, 1);
   lua_getfield(L, -1, "limits");
-  if (!lua_istable(L, -1)) { snprintf(err, n, "Config/OP/robot.lua: key 'limits' missing"); goto out; }
+  if (!lua_istable(L, -1)) { snprintf(err, n, "%s: key 'limits' missing", rf); goto out; }
   for (int j = 0; j < c->nj; j++) {
     lua_getfield(L, -1, c->joint[j]);
     double lh[2];
-    if (!lua_istable(L, -1)) { snprintf(err, n, "Config/OP/robot.lua: limits.%s missing", c->joint[j]); goto out; }
+    if (!lua_istable(L, -1)) { snprintf(err, n, "%s: limits.%s missing", rf, c->joint[j]); goto out; }
     for (int k = 0; k < 2; k++) { lua_rawgeti(L, -1, k + 1); lh[k] = lua_tonumber(L, -1); lua_pop(L, 1); }
     c->lo[j] = lh[0]; c->hi[j] = lh[1];
     lua_pop(L, 1);
   }
   lua_pop(L, 1);
-  if (lua_num(L, "Config/OP/robot.lua", "period", &c->period, err, n)) goto out;
-  lua_pop(L, 1);
-  /* dcm.lua */
-  const char *f = "Config/OP/dcm.lua";
-  if (load_file(L, root, "dcm.lua", err, n)) goto out;
+  if (lua_num(L, rf, "period", &c->period, err, n)) goto out;
+  if (lua_str(L, rf, "name", c->robot, sizeof c->robot, err, n)) goto out;
+  lua_getfield(L, -1, "devices");
+  if (!lua_istable(L, -1)) { snprintf(err, n, "%s: key 'devices' missing (the Dynamixel bus table)", rf); goto out; }
+  const char *f = rf;
   if (lua_num(L, f, "protocol", &v, err, n)) goto out;
   c->protocol = (int)v;
-  if (lua_num(L, f, "baud", &v, err, n)) goto out;
-  c->baud = (int)v;
   if (lua_num(L, f, "board_id", &v, err, n)) goto out;
   c->board_id = (int)v;
-  if (lua_str(L, f, "port", c->port, sizeof c->port, err, n)) goto out;
-  if (lua_str(L, f, "name", c->robot, sizeof c->robot, err, n)) goto out;
   if (lua_str(L, f, "servo", s, sizeof s, err, n)) goto out;
   c->servo = NULL;
   for (size_t k = 0; k < sizeof MODELS / sizeof MODELS[0]; k++) if (!strcmp(MODELS[k].name, s)) c->servo = &MODELS[k];
@@ -178,6 +184,13 @@ static int load_config(config *c, char *err, size_t n) {
   for (int j = 0; j < c->nj; j++) c->dir[j] = tmp[j] < 0 ? -1 : 1;
   if (lua_nums(L, f, "zero", tmp, c->nj, err, n)) goto out;
   for (int j = 0; j < c->nj; j++) c->zero[j] = (int)tmp[j];
+  lua_pop(L, 2);
+  /* dcm.lua: the platform's bus settings */
+  if (load_concern(L, root, "dcm", df, sizeof df, err, n)) goto out;
+  f = df;
+  if (lua_num(L, f, "baud", &v, err, n)) goto out;
+  c->baud = (int)v;
+  if (lua_str(L, f, "port", c->port, sizeof c->port, err, n)) goto out;
   if (lua_num(L, f, "start_hardness", &c->start_hardness, err, n)) goto out;
   if (lua_num(L, f, "watchdog", &c->watchdog, err, n)) goto out;
   if (lua_num(L, f, "safe_hardness", &c->safe_hardness, err, n)) goto out;
@@ -536,7 +549,7 @@ static void sleep_until(double t) {
 }
 
 static void usage(void) {
-  fprintf(stderr, "usage: PLATFORM=OP ./run_dcm [--port PATH] [--robot darwin|op3] [--rate HZ] [--baud N]\n"
+  fprintf(stderr, "usage: PLATFORM=OP ./run_dcm [--port PATH] [--robot darwin|op3 (sets ROBOT)] [--rate HZ] [--baud N]\n"
                   "                             [--cycles N] [--timeout-margin S] [--quiet]\n");
 }
 
@@ -551,7 +564,7 @@ int main(int argc, char **argv) {
   for (int i = 1; i < argc; i++) {
     const char *o = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
     if (!strcmp(o, "--port") && v) { port = v; i++; }
-    else if (!strcmp(o, "--robot") && v) { setenv("OP_ROBOT", v, 1); i++; }
+    else if (!strcmp(o, "--robot") && v) { setenv("ROBOT", v, 1); i++; }
     else if (!strcmp(o, "--rate") && v) { rate = atof(v); i++; }
     else if (!strcmp(o, "--baud") && v) { baud = atoi(v); i++; }
     else if (!strcmp(o, "--cycles") && v) { max_cycles = atol(v); i++; }

@@ -1,8 +1,9 @@
-// config: LuaJIT runs the file, the returned table is flattened into "a.b.c" keys.
+// config: Lib/Config.lua (run in LuaJIT) merges a concern's layers; the table is flattened into "a.b.c" keys.
 #include "config.h"
 
 #include <lua.hpp>
 
+#include <cstdlib>
 #include <stdexcept>
 
 namespace sim {
@@ -30,19 +31,33 @@ static void flatten(lua_State *L, const std::string &prefix, int depth,
   }
 }
 
-Config::Config(const std::string &path) : file_(path) {
+Config::Config(const std::string &concern, const std::string &robot) {
   lua_State *L = luaL_newstate();
-  if (!L) throw std::runtime_error(path + ": out of memory");
+  if (!L) throw std::runtime_error(concern + ": out of memory");
   luaL_openlibs(L);
-  if (luaL_loadfile(L, path.c_str()) != 0 || lua_pcall(L, 0, 1, 0) != 0) {
+  // The one config reader (Lib/Config.lua): the same layers and errors as the Lua processes.
+  const char *script =
+      "local root, concern, robot = ...\n"
+      "package.path = root .. '/Lib/?.lua;' .. package.path\n"
+      "local Config = require('Config')\n"
+      "return Config.export(concern, { robot = robot ~= '' and robot or nil })\n";
+  const char *r = getenv("HRP_ROOT");
+  const std::string root = r && *r ? r : HRP_ROOT_DEFAULT;
+  if (luaL_loadstring(L, script) != 0) {
+    std::string msg = lua_tostring(L, -1);
+    lua_close(L);
+    throw std::runtime_error(msg);
+  }
+  lua_pushstring(L, root.c_str());
+  lua_pushstring(L, concern.c_str());
+  lua_pushstring(L, robot.c_str());
+  if (lua_pcall(L, 3, 2, 0) != 0) {
     std::string msg = lua_tostring(L, -1) ? lua_tostring(L, -1) : "error";
     lua_close(L);
-    throw std::runtime_error(path + ": " + msg);
+    throw std::runtime_error(msg);
   }
-  if (!lua_istable(L, -1)) {
-    lua_close(L);
-    throw std::runtime_error(path + ": must return a table");
-  }
+  file_ = lua_tostring(L, -1) ? lua_tostring(L, -1) : concern;
+  lua_pop(L, 1);
   flatten(L, "", 0, &num_, &str_);
   lua_close(L);
 }

@@ -1,5 +1,5 @@
-// config: reads a Lua config file (a file returning a table) into flat "a.b.c" keys.
-// Errors (std::runtime_error) name the file and the key.
+// config: one concern of the robot's configuration (Lib/Config.lua's layers: common, robot,
+// platform, site) as flat "a.b.c" keys. Errors (std::runtime_error) name the files and the key.
 #ifndef HRP_SIM_CONFIG_H
 #define HRP_SIM_CONFIG_H
 
@@ -11,8 +11,9 @@ namespace sim {
 
 class Config {
  public:
-  // Runs the file with LuaJIT; throws std::runtime_error naming the file on failure.
-  explicit Config(const std::string &path);
+  // Config.export(concern, { robot = robot }) through LuaJIT ("" robot: $ROBOT); throws
+  // std::runtime_error naming the files on failure.
+  explicit Config(const std::string &concern, const std::string &robot = "");
   const std::string &file() const { return file_; }
   bool has(const std::string &key) const;
   double num(const std::string &key) const;                 // required number

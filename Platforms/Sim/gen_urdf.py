@@ -3,8 +3,8 @@
 
     Platforms/Sim/gen_urdf.py [REFERENCE] [ROBOT_LUA] [OUT]
 
-defaults: /work/shared/robots/op3_reference.txt (or $HRP_ROBOT_REFERENCE), Config/Sim/robot.lua,
-Config/Sim/op3.urdf.
+defaults: /work/shared/robots/op3_reference.txt (or $HRP_ROBOT_REFERENCE), Config/robots/op3/robot.lua,
+Config/robots/op3/op3.urdf.
 
 Conventions of the generated file (what the sim DCM and the kinematics rely on):
 - Every link frame sits at its joint's anchor and is parallel to the world frame at the zero pose
@@ -12,11 +12,11 @@ Conventions of the generated file (what the sim DCM and the kinematics rely on):
   world-frame axis. body_link's frame is the midpoint of the two hip-yaw anchors.
 - Inertials: mass, COM and the inertia tensor about the COM, world-aligned, as in the reference.
 - Collision (and visual) boxes: the reference's oriented boxes, rotation converted to URDF rpy.
-- Joint limits come from Config/Sim/robot.lua (the single source of limits); effort and velocity
+- Joint limits come from Config/robots/op3/robot.lua (the single source of limits); effort and velocity
   are the XM430-W350's (stall torque as specified for the platform, no-load speed at 12 V);
   dynamics damping/friction are the reference's servo model.
 - The head camera is a fixed link `camera_link` on head_tilt_link: x along the optical axis,
-  z image-up; its field of view lives in Config/Sim/sim.lua.
+  z image-up; its field of view lives in Config/robots/op3/camera.lua.
 """
 import math
 import os
@@ -135,8 +135,8 @@ def main():
     root = os.path.abspath(os.path.join(os.path.dirname(__file__), '..', '..'))
     ref = sys.argv[1] if len(sys.argv) > 1 else os.environ.get(
         'HRP_ROBOT_REFERENCE', '/work/shared/robots/op3_reference.txt')
-    robot_lua = sys.argv[2] if len(sys.argv) > 2 else os.path.join(root, 'Config/Sim/robot.lua')
-    out = sys.argv[3] if len(sys.argv) > 3 else os.path.join(root, 'Config/Sim/op3.urdf')
+    robot_lua = sys.argv[2] if len(sys.argv) > 2 else os.path.join(root, 'Config/robots/op3/robot.lua')
+    out = sys.argv[3] if len(sys.argv) > 3 else os.path.join(root, 'Config/robots/op3/op3.urdf')
     bodies, boxes, camera = read_reference(ref)
     limits = read_limits(robot_lua)
 
@@ -198,7 +198,7 @@ def main():
     if camera['body'] not in names:
         fail('camera on unknown link %s' % camera['body'])
     co = origin[camera['body']]
-    w('  <!-- head camera: x along the optical axis, z image-up; vertical fov %.4g deg (Config/Sim/sim.lua) -->'
+    w('  <!-- head camera: x along the optical axis, z image-up; vertical fov %.4g deg (Config/robots/op3/camera.lua) -->'
       % camera['fovy'])
     w('  <link name="camera_link"/>')
     w('  <joint name="camera_joint" type="fixed">')

@@ -55,9 +55,9 @@ void set_yuv(Solid *s, int y, int u, int v) {
 
 }  // namespace
 
-void params_load(const std::string &sim_lua, const std::string &robot_lua, const std::string &root,
-                 Params *p) {
-  Config s(sim_lua), r(robot_lua);
+void params_load(const std::string &robot, Params *p) {
+  Config s("sim", robot), r("robot", robot), c("camera", robot);
+  const std::string &sim_lua = s.file(), &robot_lua = r.file();
   p->timestep = s.num("physics.timestep");
   p->iterations = (int)s.num("physics.iterations");
   p->gravity = s.num("physics.gravity");
@@ -98,10 +98,11 @@ void params_load(const std::string &sim_lua, const std::string &robot_lua, const
   p->ball_start[0] = bs[0];
   p->ball_start[1] = bs[1];
   p->camera_frame = s.str("camera.frame");
-  p->cam_width = (int)s.num("camera.width");
-  p->cam_height = (int)s.num("camera.height");
-  p->cam_rate = s.num("camera.rate");
-  p->cam_fovy = s.num("camera.fovy_deg") * M_PI / 180;
+  // the camera's image and optics are the body's (camera.lua); its pose is the URDF's camera frame
+  p->cam_width = (int)c.num("width");
+  p->cam_height = (int)c.num("height");
+  p->cam_rate = c.num("fps");
+  p->cam_fovy = c.num("fovy");
   p->cam_latency_ticks = (int)s.num("camera.latency_ticks");
   p->cam_noise = s.num("camera.noise");
   p->start.clear();
@@ -116,8 +117,8 @@ void params_load(const std::string &sim_lua, const std::string &robot_lua, const
   p->battery = s.num("battery");
   p->joints = r.strs("joints");
   p->period = r.num("period");
-  p->urdf = r.str("urdf");
-  if (!p->urdf.empty() && p->urdf[0] != '/') p->urdf = root + "/" + p->urdf;
+  p->urdf = r.str("description");
+  if (!p->urdf.empty() && p->urdf[0] != '/') p->urdf = robot_dir(r.str("name")) + "/" + p->urdf;
   double n = p->period / p->timestep;
   if (!(p->timestep > 0) || std::fabs(n - std::round(n)) > 1e-6 || n < 1) {
     throw std::runtime_error(sim_lua + ": 'physics.timestep' must divide the period of " + robot_lua);
@@ -752,11 +753,10 @@ std::string hrp_root() {
   return r && *r ? r : HRP_ROOT_DEFAULT;
 }
 
+std::string robot_dir(const std::string &robot) { return hrp_root() + "/Config/robots/" + robot; }
+
 void load_all(Params *p, Model *m) {
-  const std::string root = hrp_root();
-  const char *plat = getenv("PLATFORM");
-  const std::string dir = root + "/Config/" + (plat && *plat ? plat : "Sim");
-  params_load(dir + "/sim.lua", dir + "/robot.lua", root, p);
+  params_load("", p);
   std::string err;
   if (model_load(p->urdf, m, &err) < 0) throw std::runtime_error(err);
 }

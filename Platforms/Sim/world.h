@@ -18,7 +18,7 @@
 
 namespace sim {
 
-// Every number the world needs, from Config/Sim/sim.lua and robot.lua.
+// Every number the world needs, from the sim, robot and camera configs (Lib/Config.lua layers).
 struct Params {
   double timestep = 0.001, period = 0.008, gravity = 9.81;
   int iterations = 20;
@@ -43,9 +43,9 @@ struct Params {
   std::vector<std::string> joints;    // shm joint order (robot.lua)
   std::string urdf;                   // path of the robot file
 };
-// Reads sim.lua and robot.lua (paths) into p; throws std::runtime_error naming file and key.
-void params_load(const std::string &sim_lua, const std::string &robot_lua, const std::string &root,
-                 Params *p);
+// Reads the sim, robot and camera configs of a body ("" = $ROBOT) into p; throws
+// std::runtime_error naming the files and the key.
+void params_load(const std::string &robot, Params *p);
 
 // What the DCM publishes in dcm.sensor for one robot.
 struct Sensors {
@@ -179,6 +179,8 @@ class World {
 namespace sim {
 // The project's root: $HRP_ROOT, else the source tree the binary was built from.
 std::string hrp_root();
+// Config/robots/<robot> under the root.
+std::string robot_dir(const std::string &robot);
 // Params from <root>/Config/<platform>/{sim,robot}.lua ($PLATFORM, default Sim) and the model from
 // the robot file they name. Throws std::runtime_error naming the file and the element or key.
 void load_all(Params *p, Model *m);

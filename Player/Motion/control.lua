@@ -34,12 +34,12 @@ local TRANSITIONS = {
 local WATCH_FALL = { stance = true, walk = true, kick_left = true, kick_right = true }
 
 -- opts: robot (Config robot table), params (walk config, read live), model (kinematics),
--- initial (state name, default 'stance'), platform (keyframes folder, default PLATFORM).
+-- initial (state name, default 'stance').
 function M.new(opts)
   local robot, params = opts.robot, opts.params
   local n = #robot.joints
   local c = setmetatable({
-    robot = robot, p = params, model = opts.model, n = n, platform = opts.platform,
+    robot = robot, p = params, model = opts.model, n = n,
     q = {}, h = {}, pos = {}, gyro = { 0, 0, 0 }, angle = { 0, 0, 0 }, acc = { 0, 0, 9.81 },
     t = 0, dt = robot.period, want = 'stand', falls = 0, fall_time = -1, tilt = 0,
     vel_cmd = { 0, 0, 0 }, head = { 0, 0 },
@@ -59,7 +59,7 @@ function M.new(opts)
   -- keyframe motions are checked at start: a bad file stops the process with the file named
   c.keyframes = {}
   for _, name in ipairs({ 'sit', 'standup_front', 'standup_back' }) do
-    c.keyframes[name] = keyframe.load(name, n, opts.platform)
+    c.keyframes[name] = keyframe.load(name, n, robot.name)
   end
   c.machine = fsm.new({
     name = 'motion',

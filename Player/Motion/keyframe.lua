@@ -1,8 +1,8 @@
 -- Keyframe motions: joint-space frames with durations and hardness, interpolated.
 --
--- A keyframe file is Config/<PLATFORM>/keyframes/<name>.lua returning
+-- A keyframe file is Config/robots/<ROBOT>/keyframes/<name>.lua returning
 --   { frames = { { duration = s, hardness = h | {njoint}, q = {njoint rad} }, ... } }
--- (q in the robot's joint order, Config/<PLATFORM>/robot.lua). Each frame is reached from the
+-- (q in the robot's joint order, Config/robots/<ROBOT>/robot.lua). Each frame is reached from the
 -- previous one (the first from the pose the motion starts in) over its duration, with a smooth
 -- (zero-velocity at both ends) profile. A file with a wrong joint count, a missing or mistyped
 -- field fails at load with the file and the frame named.
@@ -46,10 +46,10 @@ function M.check(kf, file, njoint)
   return kf
 end
 
--- Loads (cached) Config/<platform>/keyframes/<name>.lua for a robot of njoint joints.
-function M.load(name, njoint, platform)
-  platform = platform or Config.platform()
-  local file = 'Config/' .. platform .. '/keyframes/' .. name .. '.lua'
+-- Loads (cached) Config/robots/<robot>/keyframes/<name>.lua for a robot of njoint joints.
+function M.load(name, njoint, robot)
+  robot = robot or Config.robot()
+  local file = 'Config/robots/' .. robot .. '/keyframes/' .. name .. '.lua'
   if cache[file] then return cache[file] end
   local chunk, err = loadfile(native.root() .. '/' .. file)
   if not chunk then error(file .. ': ' .. tostring(err), 0) end

@@ -1,7 +1,7 @@
 // lut_tool: builds, saves and checks the colour lookup tables of the vision pipeline.
 //
 //   lut_tool colors [--config FILE] -o OUT.lut
-//       the table of the colour boxes in the vision config (Config/$PLATFORM/vision.lua)
+//       the table of the colour boxes in the vision config (Lib/Config.lua layers: Config/common/vision.lua ...)
 //   lut_tool train [--config FILE] [--base IN.lut | --colors] [--grow N] -o OUT.lut IMAGE MASK [...]
 //       a table from labelled example images: MASK is an image of the same size in which labelled
 //       pixels are painted in a colour's `display` RGB (from the config); other pixels are ignored.
@@ -88,16 +88,25 @@ void pair_field(lua_State *L, int idx, const char *key, int out[2], int n, const
   lua_pop(L, 1);
 }
 
+// A vision config file given by name, or else the robot's vision config (Lib/Config.lua's layers).
 VisionConfig load_config(std::string file) {
-  if (file.empty()) {
-    const char *p = std::getenv("PLATFORM");
-    file = root() + "/Config/" + (p && *p ? p : "Sim") + "/vision.lua";
-  }
   VisionConfig cfg;
-  cfg.file = file;
   lua_State *L = luaL_newstate();
   luaL_openlibs(L);
-  if (luaL_loadfile(L, file.c_str()) != 0 || lua_pcall(L, 0, 1, 0) != 0) die(lua_tostring(L, -1));
+  if (file.empty()) {
+    const char *script =
+        "local root = ...\n"
+        "package.path = root .. '/Lib/?.lua;' .. package.path\n"
+        "local t, files = require('Config').export('vision')\n"
+        "return files, t\n";
+    if (luaL_loadstring(L, script) != 0) die(lua_tostring(L, -1));
+    lua_pushstring(L, root().c_str());
+    if (lua_pcall(L, 1, 2, 0) != 0) die(lua_tostring(L, -1));
+    file = lua_tostring(L, -2);
+  } else if (luaL_loadfile(L, file.c_str()) != 0 || lua_pcall(L, 0, 1, 0) != 0) {
+    die(lua_tostring(L, -1));
+  }
+  cfg.file = file;
   if (!lua_istable(L, -1)) die(file + ": must return a table");
   int t = lua_gettop(L);
   lua_getfield(L, t, "colors");

@@ -31,7 +31,7 @@ run() {   # run LABEL ROBOT EMU_ARGS...
   build/bin/dxl_emulator --link "$T/dxl" --quiet --realtime "$@" 2>/dev/null & EMU=$!
   for _ in $(seq 100); do [ -e "$T/dxl" ] && break; sleep 0.05; done
   local cycles=$((SECS * 125))
-  OP_ROBOT=$robot ./run_dcm --port "$T/dxl" --cycles "$cycles" 2>"$T/dcm.log" & DCM=$!
+  ROBOT=$robot ./run_dcm --port "$T/dxl" --cycles "$cycles" 2>"$T/dcm.log" & DCM=$!
   sleep "$SECS"
   # read while it runs (the window of the last second), then let it finish
   read -r rate bpc p99 jmax c missed rx to dead < <(stats)

@@ -6,7 +6,7 @@
 #   trips when motion stops acknowledging; a vanished port is reopened.
 set -u
 cd "${HRP_ROOT:-$(dirname "$0")/../..}"
-export HRP_ROOT=$PWD PLATFORM=OP
+export HRP_ROOT=$PWD PLATFORM=OP ROBOT=darwin
 export ROBOT_ID=${ROBOT_ID:-9400}
 T=$(mktemp -d)
 EMU="" DCM=""
@@ -133,7 +133,8 @@ stop_emu
 # ---------------------------------------------------------------- OP3, protocol 2.0
 rm -f /dev/shm/hrp."$ROBOT_ID".*
 start_emu --protocol 2
-OP_ROBOT=op3 start_dcm
+export ROBOT=op3
+start_dcm
 wait_for 'require("shm").open("dcm.stats").cycles[0] > 20'; ok $? "OP3 DCM cycles against the emulator (protocol 2.0)"
 repl 'Body.set_command("r_sho_pitch", 0.7)' >/dev/null
 # r_sho_pitch is servo 1: 2048 + 0.7 / (2 pi / 4096) = 2504

@@ -1,5 +1,6 @@
 -- luacheck: std +busted
--- Config loader: errors name the file and the key.
+-- Config loader: layers (common, robot, platform, platform x robot, site) and errors that name the
+-- file and the key.
 local Config = require('Config')
 
 local tmp
@@ -10,13 +11,26 @@ local function write(path, text)
   f:close()
 end
 
+local T = { robot = 'bot', platform = 'Test' }
+
 describe('Config', function()
   setup(function()
     tmp = os.tmpname()
     os.remove(tmp)
-    write('Config/Test/walk.lua', 'return { tStep = 0.25, limits = { vx = 0.3 }, name = "w" }')
-    write('Config/Test/broken.lua', 'return { tStep = ')
-    write('Config/Test/notable.lua', 'return 42')
+    write('Config/robots/bot/walk.lua',
+      'return { tStep = 0.25, limits = { vx = 0.3 }, name = "w", list = { 1, 2, 3 } }')
+    write('Config/robots/bot/broken.lua', 'return { tStep = ')
+    write('Config/robots/bot/notable.lua', 'return 42')
+    write('Config/robots/other/walk.lua', 'return { tStep = 0.5, list = { 1 } }')
+    write('Config/common/behavior.lua', 'return { team = 1, head = { pan = 1.0, tilt = 0.5 }, kick = true }')
+    write('Config/robots/bot/behavior.lua', 'return { head = { pan = 1.2, range = 3 } }')
+    write('Config/platforms/Test/behavior.lua', 'return { head = { tilt = 0.4 } }')
+    write('Config/platforms/Test/bot/behavior.lua', 'return { team = 2 }')
+    write('Config/platforms/Test/sim.lua', 'return { dt = 0.001 }')
+    write('Config/platforms/Test/walk.lua', 'return { list = { 9 } }')
+    write('Config/platforms/Bad/walk.lua', 'return { tSetp = 0.3 }')
+    write('Config/platforms/Typed/walk.lua', 'return { limits = { vx = "fast" } }')
+    write('Config/site/behavior.lua', 'return { team = 7 }')
     Config.use_root(tmp)
   end)
   teardown(function()
@@ -25,57 +39,115 @@ describe('Config', function()
   end)
 
   it('loads a file and checks types', function()
-    local w = Config.load('walk', { tStep = 'number', limits = { vx = 'number' } }, 'Test')
+    local w = Config.load('walk', { tStep = 'number', limits = { vx = 'number' } }, T)
     assert.equal(0.25, w.tStep)
     assert.equal(0.3, w.limits.vx)
   end)
 
-  it('names file and key for a missing key in the spec', function()
-    assert.has_error(function() Config.load('walk', { tDouble = 'number' }, 'Test') end,
-      "Config/Test/walk.lua: missing key 'tDouble'")
+  it('overlays common, robot, platform, platform x robot and site, key by key', function()
+    local b = Config.load('behavior', nil, T)
+    assert.equal(1.2, b.head.pan)       -- robot over common
+    assert.equal(3, b.head.range)       -- added by the robot layer
+    assert.equal(0.4, b.head.tilt)      -- platform over common
+    assert.equal(7, b.team)             -- site over platform x robot over common
+    assert.is_true(b.kick)
+    assert.same({ 'Config/common/behavior.lua', 'Config/robots/bot/behavior.lua',
+      'Config/platforms/Test/behavior.lua', 'Config/platforms/Test/bot/behavior.lua', 'Config/site/behavior.lua' },
+      Config.files('behavior', T))
   end)
 
-  it('names file and key for a wrong type, nested keys with their path', function()
-    assert.has_error(function() Config.load('walk', { name = 'number' }, 'Test') end,
-      "Config/Test/walk.lua: key 'name' must be a number, got string")
-    assert.has_error(function() Config.load('walk', { limits = { vx = 'table' } }, 'Test') end,
-      "Config/Test/walk.lua: key 'limits.vx' must be a table, got number")
+  it('replaces lists whole', function()
+    assert.same({ 9 }, Config.export('walk', T).list)
   end)
 
-  it('fails when code reads a key the file does not have', function()
-    local w = Config.load('walk', nil, 'Test')
+  it('ROBOT selects the body', function()
+    assert.equal(0.5, Config.load('walk', nil, { robot = 'other', platform = 'Test' }).tStep)
+  end)
+
+  it('a concern only a platform has is read from there', function()
+    assert.equal(0.001, Config.load('sim', nil, T).dt)
+  end)
+
+  it('an overlay key the defaults do not have is an error naming the file and the key', function()
+    local ok, err = pcall(Config.load, 'walk', nil, { robot = 'bot', platform = 'Bad' })
+    assert.is_false(ok)
+    assert.truthy(err:find("Config/platforms/Bad/walk.lua: unknown key 'tSetp'", 1, true), err)
+  end)
+
+  it('an overlay value of the wrong type names the file and the key', function()
+    local ok, err = pcall(Config.load, 'walk', nil, { robot = 'bot', platform = 'Typed' })
+    assert.is_false(ok)
+    assert.truthy(err:find("Config/platforms/Typed/walk.lua: key 'limits.vx' must be a number, got string", 1, true),
+      err)
+  end)
+
+  it('names files and key for a missing key in the spec', function()
+    assert.has_error(function() Config.load('walk', { tDouble = 'number' }, T) end,
+      "Config/robots/bot/walk.lua + Config/platforms/Test/walk.lua: missing key 'tDouble'")
+  end)
+
+  it('names files and key for a wrong type, nested keys with their path', function()
+    assert.has_error(function() Config.load('walk', { name = 'number' }, T) end,
+      "Config/robots/bot/walk.lua + Config/platforms/Test/walk.lua: key 'name' must be a number, got string")
+    assert.has_error(function() Config.load('walk', { limits = { vx = 'table' } }, T) end,
+      "Config/robots/bot/walk.lua + Config/platforms/Test/walk.lua: key 'limits.vx' must be a table, got number")
+  end)
+
+  it('fails when code reads a key no layer has', function()
+    local w = Config.load('walk', nil, T)
     local ok, err = pcall(function() return w.limits.vy end)
     assert.is_false(ok)
-    assert.truthy(err:find("Config/Test/walk.lua: missing key 'limits.vy'", 1, true))
+    assert.truthy(err:find("Config/robots/bot/walk.lua + Config/platforms/Test/walk.lua: missing key 'limits.vy'", 1,
+      true))
     assert.is_nil(Config.optional(w, 'absent'))
     assert.equal(7, Config.optional(w, 'absent', 7))
   end)
 
-  it('names an unknown platform', function()
-    local ok, err = pcall(Config.load, 'walk', nil, 'Nope')
+  it('names an unknown platform and an unknown robot', function()
+    local ok, err = pcall(Config.load, 'walk', nil, { robot = 'bot', platform = 'Nope' })
     assert.is_false(ok)
     assert.truthy(err:find("unknown platform 'Nope'", 1, true))
+    ok, err = pcall(Config.load, 'walk', nil, { robot = 'nobody', platform = 'Test' })
+    assert.is_false(ok)
+    assert.truthy(err:find("unknown robot 'nobody': no folder Config/robots/nobody", 1, true))
   end)
 
-  it('names a missing file, a syntax error and a file that returns no table', function()
-    local ok, err = pcall(Config.load, 'camera', nil, 'Test')
+  it('names a missing concern, a syntax error and a file that returns no table', function()
+    local ok, err = pcall(Config.load, 'camera', nil, T)
     assert.is_false(ok)
-    assert.truthy(err:find('Config/Test/camera.lua: missing config file', 1, true))
-    ok, err = pcall(Config.load, 'broken', nil, 'Test')
+    assert.truthy(err:find("no config file for 'camera'", 1, true))
+    ok, err = pcall(Config.load, 'broken', nil, T)
     assert.is_false(ok)
-    assert.truthy(err:find('broken.lua', 1, true))
-    ok, err = pcall(Config.load, 'notable', nil, 'Test')
+    assert.truthy(err:find('Config/robots/bot/broken.lua', 1, true))
+    ok, err = pcall(Config.load, 'notable', nil, T)
     assert.is_false(ok)
-    assert.truthy(err:find('Config/Test/notable.lua: must return a table, returned number', 1, true))
+    assert.truthy(err:find('Config/robots/bot/notable.lua: must return a table, returned number', 1, true))
   end)
 
-  it('PLATFORM selects the folder; the default is Sim', function()
-    local h = io.popen('cd "$HRP_ROOT" && PLATFORM= luajit -e \'print(require("Config").platform())\'')
-    assert.equal('Sim', h:read('*l'))
+  it('HRP_SITE names another site folder; a typo there is named', function()
+    write('venue/behavior.lua', 'return { team_number = 42 }')
+    write('typo/behavior.lua', 'return { team_numbr = 42 }')
+    local function team(site)
+      local h = io.popen('cd "$HRP_ROOT" && HRP_SITE=' .. tmp .. '/' .. site .. ' luajit -e \'local ok, b = ' ..
+        'pcall(require("Config").export, "behavior") print(ok and b.team_number or b)\' 2>&1')
+      local out = h:read('*a')
+      h:close()
+      return out
+    end
+    assert.equal('42\n', team('venue'))
+    local err = team('typo')
+    assert.truthy(err:find("typo/behavior.lua: unknown key 'team_numbr'", 1, true), err)
+  end)
+
+  it('PLATFORM and ROBOT select the folders; the defaults are Sim and op3', function()
+    local h = io.popen('cd "$HRP_ROOT" && PLATFORM= ROBOT= luajit -e ' ..
+      '\'local C = require("Config") print(C.platform(), C.robot())\'')
+    assert.equal('Sim\top3', h:read('*l'))
     h:close()
     Config.use_root(nil)
-    local robot = Config.load('robot', { joints = 'table' }, 'Sim')
+    local robot = Config.load('robot', { joints = 'table' }, { robot = 'op3', platform = 'Sim' })
     assert.equal(20, #robot.joints)
+    assert.equal('darwin', Config.load('robot', nil, { robot = 'darwin', platform = 'OP' }).name)
     Config.use_root(tmp)
   end)
 end)

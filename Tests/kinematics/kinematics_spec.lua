@@ -1,6 +1,6 @@
 -- luacheck: std +busted
--- Kinematics of the real configurations (OP3: Config/Sim/robot.lua; DARwIn-OP:
--- Config/OP/kinematics.lua) through the Lua API: FK(IK(x)) = x over the workspace, known poses,
+-- Kinematics of the real bodies (Config/robots/op3, Config/robots/darwin) through the Lua API:
+-- FK(IK(x)) = x over the workspace, known poses,
 -- unreachable and NaN targets, the OP3's COM against the reference, agreement with the URDF.
 local kin = require('kinematics')
 local native = require('native')
@@ -50,9 +50,9 @@ local function pose_error(p1, p2)
   return dp, rot_dist(rpy_rot(p1[4], p1[5], p1[6]), rpy_rot(p2[4], p2[5], p2[6]))
 end
 
-for _, platform in ipairs({ 'Sim', 'OP' }) do
-  describe('kinematics of ' .. platform, function()
-    local m = kin.load(platform)
+for _, robot in ipairs({ 'op3', 'darwin' }) do
+  describe('kinematics of ' .. robot, function()
+    local m = kin.load({ robot = robot })
     local leg_len = -m:leg_fk('l', { 0, 0, 0, 0, 0, 0 })[3] -- torso origin to sole, zero pose
 
     it('FK(IK(x)) = x over sampled foot poses of the walking workspace', function()
@@ -76,7 +76,7 @@ for _, platform in ipairs({ 'Sim', 'OP' }) do
         end
       end
       print(string.format('# %s: %d poses solved exactly (%d flagged), worst %.3g m, %.3g rad',
-        platform, n, flagged, worst_p, worst_r))
+        robot, n, flagged, worst_p, worst_r))
       assert.is_true(n > 5400) -- nearly all of this box is reachable within the limits
       assert.is_true(worst_p < 1e-6)
       assert.is_true(worst_r < 1e-6)
@@ -150,7 +150,7 @@ for _, platform in ipairs({ 'Sim', 'OP' }) do
     it('joint limits: a target beyond them is clamped and flagged', function()
       local y0 = m:leg_fk('l', { 0, 0, 0, 0, 0, 0 })[2]
       local q, flags = m:leg_ik('l', 0, y0, -leg_len + 0.05, 0, 0, 2.0) -- hip yaw 2 rad, limit 1.2
-      -- both platforms limit hip yaw to +-1.2 rad (Config/<platform>/robot.lua)
+      -- both bodies limit hip yaw to +-1.2 rad (Config/robots/<robot>/robot.lua)
       assert.are.equal(kin.JOINT_LIMIT, flags)
       assert.is_true(abs(q[1]) <= 1.2 + 1e-12)
     end)
@@ -216,7 +216,7 @@ for _, platform in ipairs({ 'Sim', 'OP' }) do
 end
 
 describe('OP3 model against the reference data', function()
-  local m = kin.load('Sim')
+  local m = kin.load({ robot = 'op3' })
   local q0 = {}
   for i = 1, m.n do q0[i] = 0 end
 
@@ -295,15 +295,15 @@ local function apply(R, v)
     R[7] * v[1] + R[8] * v[2] + R[9] * v[3] }
 end
 
-describe('OP3 model against Config/Sim/op3.urdf', function()
-  local path = native.root() .. '/Config/Sim/op3.urdf'
+describe('OP3 model against Config/robots/op3/op3.urdf', function()
+  local path = native.root() .. '/Config/robots/op3/op3.urdf'
   local fh = io.open(path, 'r')
   if not fh then
-    it('needs Config/Sim/op3.urdf (not there yet)', function() pending('no URDF') end)
+    it('needs Config/robots/op3/op3.urdf (not there yet)', function() pending('no URDF') end)
     return
   end
   fh:close()
-  local m = kin.load('Sim')
+  local m = kin.load({ robot = 'op3' })
   local links, joints = read_urdf(path)
   local by_child = {}
   for name, j in pairs(joints) do by_child[j.child] = name end

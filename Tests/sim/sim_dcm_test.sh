@@ -102,22 +102,19 @@ fi
 
 # ---- a bad robot file stops start-up with the file and the element named
 tmp=$(mktemp -d)
-mkdir -p "$tmp/Config/Sim"
-cp Config/Sim/sim.lua "$tmp/Config/Sim/"
-sed "s#urdf = .*#urdf = '$tmp/broken.urdf',#" Config/Sim/robot.lua >"$tmp/Config/Sim/robot.lua"
-sed 's#<mass value="1.34928"/>##' Config/Sim/op3.urdf >"$tmp/broken.urdf"
-cp Config/shm.schema "$tmp/Config/"
-cp -r Config/Common "$tmp/Config/"
+cp -r Config "$tmp/"
+sed 's#<mass value="1.34928"/>##' Config/robots/op3/op3.urdf >"$tmp/Config/robots/op3/op3.urdf"
+cp -r Lib "$tmp/"
 err=$(HRP_ROOT=$tmp HRP_SCHEMA=$HRP_ROOT/Config/shm.schema timeout 10 build/bin/dcm_sim --quiet 2>&1)
 rc=$?
 echo "# $err"
-[ $rc -ne 0 ] && echo "$err" | grep -q "broken.urdf" && echo "$err" | grep -q "body_link"
+[ $rc -ne 0 ] && echo "$err" | grep -q "op3.urdf" && echo "$err" | grep -q "body_link"
 check $? "a robot file with a missing <mass> stops start-up naming file and link"
-rm -f "$tmp/broken.urdf"
+rm -f "$tmp/Config/robots/op3/op3.urdf"
 err=$(HRP_ROOT=$tmp timeout 10 build/bin/dcm_sim --quiet 2>&1)
 rc=$?
 echo "# $err"
-[ $rc -ne 0 ] && echo "$err" | grep -q "broken.urdf"
+[ $rc -ne 0 ] && echo "$err" | grep -q "op3.urdf"
 check $? "a missing robot file stops start-up naming the file"
 rm -rf "$tmp"
 

@@ -11,10 +11,10 @@ local W, H = 640, 480
 local FOVY = math.rad(43.3)
 local R_BALL = 0.07
 
-local vcfg = dofile(os.getenv('HRP_ROOT') .. '/Config/Sim/vision.lua')
+local vcfg = require('Config').load('vision', nil, { robot = 'op3', platform = 'Sim' })
 local ccfg = { width = W, height = H, fovy = FOVY, head_joint = { 0, 1 } }
 
-local model = assert(kinematics.load('Sim'))
+local model = assert(kinematics.load({ robot = 'op3' }))
 local cm = project.camera(W, H, FOVY)
 local q0 = {}
 for i = 1, #model.joints do q0[i] = 0 end

@@ -17,7 +17,7 @@ classify() {
              io.write(ip.classify(lut, $2, $3, $4))"
 }
 
-$TOOL colors -o "$D/colors.lut" >"$D/out" 2>&1 && tap ok "colors: table from Config/Sim/vision.lua" \
+$TOOL colors -o "$D/colors.lut" >"$D/out" 2>&1 && tap ok "colors: table from the vision config (Config/common/vision.lua)" \
   || { tap fail "colors failed: $(cat "$D/out")"; }
 [ "$(classify "$D/colors.lut" 147 45 205)" = 1 ] && [ "$(classify "$D/colors.lut" 99 95 86)" = 8 ] \
   && [ "$(classify "$D/colors.lut" 240 128 128)" = 16 ] && [ "$(classify "$D/colors.lut" 80 200 60)" = 0 ] \

@@ -1,5 +1,6 @@
 // sim_model: the robot file and the sim config (TAP): the OP3 URDF matches the reference's mass
 // model; a missing or invalid robot file, or a broken config, fails with the file and element named.
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cmath>
@@ -27,10 +28,10 @@ int main() {
   try {
     sim::load_all(&p, &m);
   } catch (const std::exception &e) {
-    printf("not ok 1 - loads Config/Sim: %s\n", e.what());
+    printf("not ok 1 - loads the sim and robot configs: %s\n", e.what());
     return 1;
   }
-  check(true, "loads Config/Sim/sim.lua, robot.lua and the URDF they name");
+  check(true, "loads the sim and robot configs and the URDF they name");
   printf("# %zu links, %zu frames, total mass %.4f kg\n", m.links.size(), m.frames.size(), m.total_mass());
   check(std::fabs(m.total_mass() - 3.1475) < 1e-3, "total mass is the reference's 3.1475 kg");
   // whole-body COM at the zero pose (reference: -0.0105675 7.17532e-05 0.274312 with soles on z=0)
@@ -105,17 +106,23 @@ int main() {
   }
   // config errors name the file and the key
   {
-    std::string path = dir + "_sim.lua";
+    // a site overlay (HRP_SITE) with a wrong type
+    std::string site = dir + "_site";
+    mkdir(site.c_str(), 0700);
+    std::string path = site + "/sim.lua";
     std::ofstream(path) << "return { physics = { timestep = 'fast' } }";
+    setenv("HRP_SITE", site.c_str(), 1);
     try {
       sim::Params q;
-      sim::params_load(path, sim::hrp_root() + "/Config/Sim/robot.lua", sim::hrp_root(), &q);
+      sim::params_load("", &q);
       check(false, "config with a wrong type is an error");
     } catch (const std::exception &ex) {
-      check(contains(ex.what(), "_sim.lua") && contains(ex.what(), "physics.timestep"),
+      check(contains(ex.what(), "_site/sim.lua") && contains(ex.what(), "physics.timestep"),
             std::string("config error names file and key: ") + ex.what());
     }
+    unsetenv("HRP_SITE");
     unlink(path.c_str());
+    rmdir(site.c_str());
   }
   return tap_done();
 }

@@ -1,4 +1,4 @@
--- sit: the platform's sit keyframes from the current pose, then hold.
+-- sit: the body's sit keyframes from the current pose, then hold.
 local keyframe = require('Motion.keyframe')
 
 local M = {}

@@ -1,4 +1,4 @@
--- Shared by standup_front and standup_back: play the platform's keyframe motion from the lying
+-- Shared by standup_front and standup_back: play the body's keyframe motion from the lying
 -- pose; upright at the end -> stance, else fall again (and retry).
 local keyframe = require('Motion.keyframe')
 

@@ -4,6 +4,7 @@
 -- lines and goals, and an orange ball.
 return {
   lut = false,                  -- path of a LUT file (relative to the repo root), or false: from colors
+                                -- (a venue's trained table: set it in the site folder's vision.lua)
   scale = 2,                    -- label image = frame subsampled by 2 (320x240)
   block = 4,                    -- block image = 4x4 bit-OR of the label image (80x60)
   -- bit: the colour's label bit; y/u/v: {min, max}; display: RGB for label renderings

@@ -1,8 +1,10 @@
--- Behavior parameters (Player/Behavior, World, HeadFSM, BodyFSM, GameFSM) for the simulated robot.
+-- Behavior parameters (Player/Behavior, World, HeadFSM, BodyFSM, GameFSM), defaults for every body;
+-- a body changes what depends on its size in Config/robots/<ROBOT>/behavior.lua, a venue sets the
+-- team and player numbers in its site folder (Config/site/behavior.lua or $HRP_SITE).
 -- Units: metres, seconds, radians. Everything here can be changed while the robot runs (the
 -- behavior process re-reads nothing by itself; restart it, or set fields from the REPL).
 return {
-  -- the robot's team and number, as the GameController knows them
+  -- the robot's team and number, as the GameController knows them (set per robot in the site folder)
   team_number = 1,
   player_number = 1,
   gamecontroller = {

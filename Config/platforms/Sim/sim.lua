@@ -1,4 +1,4 @@
--- The simulated world (read by the sim DCM, Platforms/Sim). SI units, radians.
+-- The simulated world (read by the sim DCM, Platforms/Sim; the bodies are Config/robots/*). SI units, radians.
 -- Field frame: origin at the centre spot, x towards the goal at +x, z up.
 return {
   physics = {
@@ -62,11 +62,10 @@ return {
     start = { 0, 0 },
   },
 
+  -- the simulated camera: size, rate and field of view are the body's (Config/robots/<ROBOT>/camera.lua),
+  -- its pose the description's camera frame; here what only the simulation adds
   camera = {
     frame = 'camera_link',       -- URDF frame: x along the optical axis, z image-up
-    width = 640, height = 480,
-    rate = 30,                   -- frames per second of simulated time
-    fovy_deg = 43.3,             -- vertical field of view (OP3)
     latency_ticks = 4,           -- a frame exposed at tick N is delivered with sensor tick N + 4 (32 ms)
     noise = 2,                   -- standard deviation of the luma noise, grey levels
   },

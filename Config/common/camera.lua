@@ -1,15 +1,17 @@
--- The head camera (read by the vision process through Lib/camera.lua). Under Sim the frames come
--- from the sim DCM (Config/Sim/sim.lua's camera section renders them into camera.image).
+-- The head camera (read by the vision process through Lib/camera.lua): a UVC webcam through V4L2 on
+-- a real robot; Config/platforms/Sim/camera.lua switches to the frames the sim DCM renders. The
+-- field of view is the body's (Config/robots/<ROBOT>/camera.lua).
 return {
-  driver = 'sim',               -- 'sim' | 'v4l2' | 'dummy'
+  driver = 'v4l2',              -- 'sim' | 'v4l2' | 'dummy'
   device = '/dev/video0',       -- v4l2 only
   width = 640, height = 480,    -- px, YUYV
   fps = 30,                     -- frames per second
-  fovy = math.rad(43.3),        -- rad, vertical field of view (OP3)
   nbuffers = 4,                 -- v4l2 mmap buffers
   reopen_interval = 1.0,        -- s between attempts to reopen a missing camera
   seed = 1,                     -- dummy driver's random seed
   head_joint = { 0, 1 },        -- 0-based indices of head_pan, head_tilt in the joint order
   -- v4l2 controls (absent: left as the camera has them; -1: automatic exposure/white balance)
+  -- exposure, gain, white_balance (K), brightness, contrast, saturation; -1 = automatic; absent = as the
+  -- camera has them. Fix exposure and white balance at the venue so the colour table stays valid.
   controls = {},
 }

@@ -1,21 +1,16 @@
 -- luacheck: std +busted
--- The OP platform's motion configs (Config/OP: walk.lua, keyframes) for both robots it drives,
--- checked offline against that robot's own kinematic model: every walk target reachable and every
--- joint inside the platform's limits at the walk's top speeds, keyframes loadable.
-local ffi = require('ffi')
+-- Every body's motion configs (Config/robots/<robot>: walk.lua, keyframes) on every platform that
+-- carries it, checked offline against the body's own kinematic model: every walk target reachable
+-- and every joint inside the limits at the walk's top speeds, keyframes loadable.
 local Config = require('Config')
 local kin = require('kinematics')
 local Walk = require('Motion.walk')
 local keyframe = require('Motion.keyframe')
 
-ffi.cdef('int setenv(const char *name, const char *value, int overwrite);')
-
--- loads the OP platform's robot, walk and model for OP_ROBOT = robot_name
-local function op_platform(robot_name)
-  ffi.C.setenv('OP_ROBOT', robot_name, 1)
-  Config.reload()
-  local robot = Config.load('robot', nil, 'OP')
-  return robot, Config.load('walk', nil, 'OP'), kin.load('OP')
+-- the robot, walk and model of a body on a platform
+local function body(robot_name, platform)
+  local opts = { robot = robot_name, platform = platform }
+  return Config.load('robot', nil, opts), Config.load('walk', nil, opts), kin.load(opts)
 end
 
 -- walks at (vx, vy, va) for `seconds`; returns ticks with an unreachable IK target and the
@@ -40,23 +35,17 @@ local function walk_check(robot, params, model, vx, vy, va, seconds)
   return flagged, beyond
 end
 
-for _, robot_name in ipairs({ 'darwin', 'op3' }) do
-  describe('Config/OP with OP_ROBOT=' .. robot_name, function()
+for _, case in ipairs({ { 'op3', 'Sim' }, { 'darwin', 'Sim' }, { 'op3', 'OP' }, { 'darwin', 'OP' } }) do
+  local robot_name, platform = case[1], case[2]
+  local opts = { robot = robot_name, platform = platform }
+  describe(robot_name .. ' on ' .. platform, function()
     local robot, params, model
-    setup(function() robot, params, model = op_platform(robot_name) end)
-    teardown(function()
-      ffi.C.setenv('OP_ROBOT', '', 1)
-      Config.reload()
-    end)
+    setup(function() robot, params, model = body(robot_name, platform) end)
 
     it('uses its own robot model', function()
-      assert.equals(robot_name == 'op3' and 'op3' or 'darwin-op', robot.name)
-      -- the OP3 is the simulated robot; the DARwIn-OP's model (Config/OP/kinematics.lua) weighs 3.11 kg
-      if robot_name == 'op3' then
-        assert.equals(kin.load('Sim').mass, model.mass)
-      else
-        assert.is_near(3.109, model.mass, 0.001)
-      end
+      assert.equals(robot_name, robot.name)
+      -- the OP3's model weighs 3.147 kg (op3_reference.txt), the DARwIn-OP's 3.11 kg
+      assert.is_near(robot_name == 'op3' and 3.147 or 3.109, model.mass, 0.001)
     end)
 
     it('walks at its top speeds with every target reachable and inside the joint limits', function()
@@ -75,15 +64,15 @@ for _, robot_name in ipairs({ 'darwin', 'op3' }) do
 
     it('has every config the robot processes load', function()
       for _, concern in ipairs({ 'walk', 'camera', 'vision', 'behavior' }) do
-        assert.is_table(Config.load(concern, nil, 'OP'), concern)
+        assert.is_table(Config.load(concern, nil, opts), concern)
       end
-      assert.equals('v4l2', Config.load('camera', nil, 'OP').driver)
+      assert.equals(platform == 'Sim' and 'sim' or 'v4l2', Config.load('camera', nil, opts).driver)
     end)
 
     it('has the keyframe motions of the motion state machine', function()
       keyframe.reload()
       for _, name in ipairs({ 'sit', 'standup_front', 'standup_back' }) do
-        local kf = keyframe.load(name, #robot.joints, 'OP')
+        local kf = keyframe.load(name, #robot.joints, robot_name)
         assert.is_true(#kf.frames >= 1, name)
       end
     end)

@@ -1,25 +1,55 @@
 -- The simulated robot: an OP3-class 20-joint humanoid (numbers from shared/robots/op3_reference.txt).
 -- Joint angles follow the right-hand rule about each joint's axis in the robot description
--- (Config/Sim/op3.urdf); at zero every joint is in the reference zero pose (straight legs, arms down).
--- the family's joints, groups and limits, found next to this file
-local here = debug.getinfo(1, 'S').source:match('^@(.*)/[^/]*$') or 'Config/Sim'
-local family = dofile(here .. '/../Common/op_family.lua')
-
+-- (op3.urdf, beside this file); at zero every joint is in the reference zero pose (straight legs,
+-- arms down). The servos turn the same way as these axes (direction +1 on the bus).
 return {
   name = 'op3',
-  -- joint order of every joint array in shm (dcm.sensor, dcm.actuator)
-  joints = family.joints,     -- Config/Common/op_family.lua
-  groups = family.groups,
-  limits = family.limits,
-  -- the robot description the sim and the kinematics read
-  urdf = 'Config/Sim/op3.urdf',
+  -- the robot description the sim and the kinematics read (relative to this folder)
+  description = 'op3.urdf',
+  -- joint order of every joint array in shm (dcm.sensor, dcm.actuator): the bus order
+  joints = {
+    'head_pan', 'head_tilt',
+    'l_sho_pitch', 'l_sho_roll', 'l_el',
+    'l_hip_yaw', 'l_hip_roll', 'l_hip_pitch', 'l_knee', 'l_ank_pitch', 'l_ank_roll',
+    'r_hip_yaw', 'r_hip_roll', 'r_hip_pitch', 'r_knee', 'r_ank_pitch', 'r_ank_roll',
+    'r_sho_pitch', 'r_sho_roll', 'r_el',
+  },
+  groups = {
+    head = { 'head_pan', 'head_tilt' },
+    larm = { 'l_sho_pitch', 'l_sho_roll', 'l_el' },
+    lleg = { 'l_hip_yaw', 'l_hip_roll', 'l_hip_pitch', 'l_knee', 'l_ank_pitch', 'l_ank_roll' },
+    rleg = { 'r_hip_yaw', 'r_hip_roll', 'r_hip_pitch', 'r_knee', 'r_ank_pitch', 'r_ank_roll' },
+    rarm = { 'r_sho_pitch', 'r_sho_roll', 'r_el' },
+  },
+  -- joint limits, rad { min, max }: kept inside the mechanical ranges
+  limits = {
+    head_pan = { -1.57, 1.57 }, head_tilt = { -1.2, 0.6 },
+    l_sho_pitch = { -3.14, 3.14 }, l_sho_roll = { -1.6, 1.6 }, l_el = { -2.6, 2.6 },
+    r_sho_pitch = { -3.14, 3.14 }, r_sho_roll = { -1.6, 1.6 }, r_el = { -2.6, 2.6 },
+    l_hip_yaw = { -1.2, 1.2 }, l_hip_roll = { -0.8, 0.8 }, l_hip_pitch = { -2.0, 2.0 },
+    l_knee = { -2.6, 2.6 }, l_ank_pitch = { -1.4, 1.4 }, l_ank_roll = { -0.8, 0.8 },
+    r_hip_yaw = { -1.2, 1.2 }, r_hip_roll = { -0.8, 0.8 }, r_hip_pitch = { -2.0, 2.0 },
+    r_knee = { -2.6, 2.6 }, r_ank_pitch = { -1.4, 1.4 }, r_ank_roll = { -0.8, 0.8 },
+  },
+  -- the Dynamixel bus on the OP platform (Platforms/OP): ROBOTIS numbering, odd = right side,
+  -- even = left side, 19/20 = head; ids in joint order
+  devices = {
+    protocol = 2,             -- Dynamixel protocol 2.0
+    servo = 'XM430',
+    board = 'OpenCR',
+    board_id = 200,
+    ids = { 19, 20, 2, 4, 6, 8, 10, 12, 14, 16, 18, 7, 9, 11, 13, 15, 17, 1, 3, 5 },
+    direction = { 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1 },
+    zero = { 2048, 2048, 2048, 2048, 2048, 2048, 2048, 2048, 2048, 2048, 2048, 2048, 2048, 2048, 2048, 2048,
+      2048, 2048, 2048, 2048 },
+  },
   -- the DCM's control period, s
   period = 0.008,
   -- kinematic and mass model (Lib/kinematics.lua), numbers from shared/robots/op3_reference.txt:
   -- per joint, in the reference frame at the zero pose (soles on z=0, x forward, y left, z up):
   -- parent joint (nil = torso), axis, anchor (a point on the axis), mass (kg) and centre of mass of
   -- the link the joint moves. Torso-frame origin (`origin`): between the hip yaw axes at their
-  -- anchor height, the origin of body_link in Config/Sim/op3.urdf.
+  -- anchor height, the origin of body_link in op3.urdf.
   kinematics = {
     origin = { 0, 0, 0.27915 },
     torso = { mass = 1.34928, com = { -0.01501, 0.00013, 0.34497 } },

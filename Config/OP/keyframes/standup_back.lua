@@ -1,4 +1,0 @@
--- The OP platform's standup back: the simulated OP3's frames (same joint order and convention, Config/Sim/keyframes),
--- not yet tried on a real robot.
-local here = debug.getinfo(1, 'S').source:match('^@(.*)/[^/]*$') or 'Config/OP/keyframes'
-return dofile(here .. '/../../Sim/keyframes/standup_back.lua')
