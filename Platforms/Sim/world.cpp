@@ -56,15 +56,13 @@ void set_yuv(Solid *s, int y, int u, int v) {
 }  // namespace
 
 void params_load(const std::string &robot, Params *p) {
-  Config s("sim", robot), r("robot", robot), c("camera", robot);
+  Config s("sim", robot), r("robot", robot), c("camera", robot), act("actuators", robot);
   const std::string &sim_lua = s.file(), &robot_lua = r.file();
   p->timestep = s.num("physics.timestep");
   p->iterations = (int)s.num("physics.iterations");
   p->gravity = s.num("physics.gravity");
   p->rotor_inertia = s.num("physics.link_rotor_inertia");
   p->linear_damping = s.num("physics.linear_damping", 0);
-  p->servo_gain = s.num("servo.p_gain");
-  p->servo_resolution = s.num("servo.resolution");
   p->temperature = s.num("servo.temperature");
   p->mu = s.num("contact.mu");
   p->kp = s.num("contact.kp");
@@ -116,6 +114,23 @@ void params_load(const std::string &robot, Params *p) {
   p->watchdog = s.num("watchdog");
   p->battery = s.num("battery");
   p->joints = r.strs("joints");
+  // each joint's servo: the actuator model robot.lua names for it
+  p->servos.clear();
+  for (const std::string &j : p->joints) {
+    if (!r.has("actuator." + j)) throw std::runtime_error(robot_lua + ": missing string 'actuator." + j + "' (its model)");
+    Servo sv;
+    sv.model = r.str("actuator." + j);
+    if (!act.has(sv.model + ".gain")) {
+      throw std::runtime_error(robot_lua + ": actuator." + j + " is '" + sv.model + "', not a model of " + act.file());
+    }
+    sv.gain = act.num(sv.model + ".gain");
+    sv.resolution = act.num(sv.model + ".resolution");
+    sv.speed_unit = act.num(sv.model + ".speed_unit");
+    if (!(sv.gain > 0) || !(sv.resolution >= 2) || !(sv.speed_unit > 0)) {
+      throw std::runtime_error(act.file() + ": model '" + sv.model + "' needs gain, speed_unit > 0, resolution >= 2");
+    }
+    p->servos.push_back(sv);
+  }
   p->period = r.num("period");
   p->urdf = r.str("description");
   if (!p->urdf.empty() && p->urdf[0] != '/') p->urdf = robot_dir(r.str("name")) + "/" + p->urdf;
@@ -136,6 +151,7 @@ World::World(const Params &p, const Model &m, int nrobots, uint64_t seed)
   if (m_.frame_index(p_.camera_frame) < 0 && m_.link_index(p_.camera_frame) < 0) {
     throw std::runtime_error(m_.file + ": no link or frame '" + p_.camera_frame + "' for the camera");
   }
+  if (p_.servos.size() != p_.joints.size()) throw std::runtime_error(m_.file + ": no servo model for every joint");
   substeps_ = (int)std::lround(p_.period / p_.timestep);
   dInitODE2(0);
   dRandSetSeed((unsigned long)(seed & 0xffffffffu));
@@ -473,7 +489,7 @@ void World::servo_update(Robot &rb) {
         rb.mode[j] = 1;
       }
       const double target = std::min(std::max(rb.cmd[j], l.lower), l.upper);
-      double v = p_.servo_gain * (target - dJointGetHingeAngle(h));
+      double v = p_.servos[j].gain * (target - dJointGetHingeAngle(h));
       v = std::min(std::max(v, -l.velocity), l.velocity);
       dJointSetHingeParam(h, dParamVel, v);
       dJointSetHingeParam(h, dParamFMax, rb.hard[j] * l.effort);
@@ -639,9 +655,8 @@ void World::sense(int r, Sensors *s) {
   s->position.resize(nj);
   s->velocity.resize(nj);
   s->load.resize(nj);
-  const double qstep = 2 * M_PI / p_.servo_resolution;
-  const double vstep = 0.229 * 2 * M_PI / 60;   // XM430 velocity unit: 0.229 rpm
   for (size_t j = 0; j < nj; j++) {
+    const double qstep = 2 * M_PI / p_.servos[j].resolution, vstep = p_.servos[j].speed_unit;
     const int li = rb.jlink[j];
     dJointID h = rb.hinge[li];
     s->position[j] = std::round(dJointGetHingeAngle(h) / qstep) * qstep;
@@ -759,6 +774,12 @@ void load_all(Params *p, Model *m) {
   params_load("", p);
   std::string err;
   if (model_load(p->urdf, m, &err) < 0) throw std::runtime_error(err);
+  // every joint of the description is driven: each must be in the robot's joint list
+  for (const Link &l : m->links) {
+    if (!l.joint.empty() && std::find(p->joints.begin(), p->joints.end(), l.joint) == p->joints.end()) {
+      throw std::runtime_error(p->urdf + ": joint '" + l.joint + "' is not in the robot config's joints");
+    }
+  }
 }
 
 }  // namespace sim

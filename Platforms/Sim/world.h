@@ -18,12 +18,21 @@
 
 namespace sim {
 
-// Every number the world needs, from the sim, robot and camera configs (Lib/Config.lua layers).
+// A joint's servo: the numbers of its actuator model (Config/common/actuators.lua) that the URDF
+// cannot carry (its torque, speed, damping and friction are the URDF joint's).
+struct Servo {
+  std::string model;            // e.g. "MX-28"
+  double gain = 30;             // 1/s, velocity-motor gain: target speed = gain * position error
+  double resolution = 4096;     // encoder counts per turn (positions are quantised to it)
+  double speed_unit = 0.0240;   // rad/s per count of the present speed (speeds are quantised to it)
+};
+
+// Every number the world needs, from the sim, robot, camera and actuators configs (Lib/Config.lua layers).
 struct Params {
   double timestep = 0.001, period = 0.008, gravity = 9.81;
   int iterations = 20;
   double rotor_inertia = 5e-4, linear_damping = 0;
-  double servo_gain = 30, servo_resolution = 4096, temperature = 40;
+  double temperature = 40;
   double mu = 1, kp = 5e4, kd = 300, robot_mu = 0.5;
   int max_contacts = 8;
   double gyro_noise = 0, accel_noise = 0;
@@ -41,6 +50,7 @@ struct Params {
   std::vector<double> start;   // x, y, yaw per robot, flattened
   double fall_angle = 1.0, watchdog = 0.5, battery = 12;
   std::vector<std::string> joints;    // shm joint order (robot.lua)
+  std::vector<Servo> servos;          // per shm joint: its actuator model (robot.lua `actuator`)
   std::string urdf;                   // path of the robot file
 };
 // Reads the sim, robot and camera configs of a body ("" = $ROBOT) into p; throws

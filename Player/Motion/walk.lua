@@ -353,22 +353,21 @@ function Walk:leg_angles(q)
   return self.model:legs_ik(self.lpose, self.rpose, q)
 end
 
--- Joint bookkeeping from the robot config: 1-based indices by name and each joint's axis
--- components along x and y (so feedback can be stated as rotations about the torso's axes).
+-- Joint bookkeeping from the robot config and the kinematic model: 1-based indices by name, each
+-- joint's axis components along x and y in the torso frame at the zero pose (so feedback can be
+-- stated as rotations about the torso's axes), and the legs' joints from the model's leg chains.
 function Walk:bind(robot)
   local ji, ax, ay = {}, {}, {}
-  local kj = robot.kinematics.joints
+  local model, a = self.model, {}
   for i, name in ipairs(robot.joints) do
     ji[name] = i
-    local a = kj[name].axis
+    model:axis(name, a)
     ax[i], ay[i] = a[1], a[2]
   end
   self.ji, self.ax, self.ay = ji, ax, ay
   self.legs = { [LEFT] = {}, [RIGHT] = {} }
-  for side, pre in pairs({ [LEFT] = 'l_', [RIGHT] = 'r_' }) do
-    for k, j in ipairs({ 'hip_yaw', 'hip_roll', 'hip_pitch', 'knee', 'ank_pitch', 'ank_roll' }) do
-      self.legs[side][k] = ji[pre .. j]
-    end
+  for side in pairs(self.legs) do
+    for k, i in ipairs(model.leg_index[side]) do self.legs[side][k] = i end
   end
   self.qleg = {}
   self.pose_meas = {}
