@@ -98,15 +98,24 @@ end
 
 local scenarios = {}
 
+-- this body's targets (Tests/motion/targets.lua)
+local robot_name = require('Config').robot()
+local targets = require('targets')[robot_name]
+if not targets then
+  tap(false, 'no walking targets for robot ' .. robot_name .. ' in Tests/motion/targets.lua')
+  os.exit(1)
+end
+
 function scenarios.forward(v)
-  v = tonumber(v) or 0.35
+  local goal = targets.forward
+  v = tonumber(v) or goal.command
   start_clean()
   local t0 = Sim.truth()
   local vel, fell, _, _, yaw = walk_for(v, 0, 0, 30, 3)
   note('forward: commanded %.2f m/s, measured %.3f m/s over 30 s, sideways %.3f m/s, heading drift %.1f deg',
     v, vel[1], vel[2], yaw * deg)
   tap(not fell, 'forward walk: no fall in 30 s')
-  tap(vel[1] >= 0.25, string.format('forward walk at >= 0.25 m/s (measured %.3f)', vel[1]))
+  tap(vel[1] >= goal.least, string.format('forward walk at >= %.2f m/s (measured %.3f)', goal.least, vel[1]))
   tap(math.abs(yaw) * deg < 10, string.format('heading drift below 10 deg (%.1f)', yaw * deg))
   -- stop into stance: the walk finishes its step and the torso comes to rest
   Walk.set_velocity(0, 0, 0)
@@ -124,35 +133,42 @@ end
 
 -- (commands a little above the goal speeds: the feet slip a little on the carpet)
 function scenarios.sideways(v)
-  v = tonumber(v) or 0.12
+  local goal = targets.sideways
+  v = tonumber(v) or goal.command
   start_clean()
   local vel, fell = walk_for(0, v, 0, 15, 2)
   note('sideways: commanded %.3f m/s, measured %.3f m/s (forward %.3f)', v, vel[2], vel[1])
-  tap(not fell and vel[2] >= 0.1, string.format('sideways 0.1 m/s for 15 s (measured %.3f)', vel[2]))
+  tap(not fell and vel[2] >= goal.least,
+    string.format('sideways %.2f m/s for 15 s (measured %.3f)', goal.least, vel[2]))
   vel, fell = walk_for(0, -v, 0, 8, 2)
-  tap(not fell and vel[2] <= -0.1, string.format('sideways right 0.1 m/s (measured %.3f)', vel[2]))
+  tap(not fell and vel[2] <= -goal.least, string.format('sideways right %.2f m/s (measured %.3f)', goal.least, vel[2]))
   tap(stand(5) and not Sim.truth().fallen, 'stops into stance')
 end
 
 function scenarios.turn(v)
-  v = tonumber(v) or 1.7
+  local goal = targets.turn
+  v = tonumber(v) or goal.command
   start_clean()
   local a0 = Sim.truth()
   local vel, fell, _, b = walk_for(0, 0, v, 10, 2)
   local drift = math.sqrt((b.x - a0.x) ^ 2 + (b.y - a0.y) ^ 2)
   note('turn: commanded %.2f rad/s, measured %.3f rad/s, position drift %.2f m', v, vel[3], drift)
-  tap(not fell and vel[3] >= 1.0, string.format('turning on the spot at 1 rad/s (measured %.3f)', vel[3]))
+  tap(not fell and vel[3] >= goal.least,
+    string.format('turning on the spot at %.1f rad/s (measured %.3f)', goal.least, vel[3]))
   vel, fell = walk_for(0, 0, -v, 6, 2)
-  tap(not fell and vel[3] <= -1.0, string.format('turning right at 1 rad/s (measured %.3f)', vel[3]))
+  tap(not fell and vel[3] <= -goal.least,
+    string.format('turning right at %.1f rad/s (measured %.3f)', goal.least, vel[3]))
   tap(stand(5) and not Sim.truth().fallen, 'stops into stance')
 end
 
 function scenarios.backward(v)
-  v = tonumber(v) or 0.12
+  local goal = targets.backward
+  v = tonumber(v) or goal.command
   start_clean()
   local vel, fell = walk_for(-v, 0, 0, 15, 2)
   note('backward: commanded %.3f m/s, measured %.3f m/s', -v, vel[1])
-  tap(not fell and vel[1] <= -0.1, string.format('backwards 0.1 m/s for 15 s (measured %.3f)', vel[1]))
+  tap(not fell and vel[1] <= -goal.least,
+    string.format('backwards %.2f m/s for 15 s (measured %.3f)', goal.least, vel[1]))
   tap(stand(5) and not Sim.truth().fallen, 'stops into stance')
 end
 
@@ -259,8 +275,9 @@ local function kick_one(side, gap)
   note('kick %s: toe forward speed before contact %.2f m/s, ball speed after contact %.2f m/s, 0.3 s ' ..
     'later (rolling) %.2f m/s; ball travelled %.2f m; the robot turned %.2f rad', side, toe_contact or 0, launch,
     rolling or 0, d, wrap(r1.yaw - r0.yaw))
-  tap(d >= 2.0, string.format('kick %s: a ball (its centre %.2f m ahead of the toe) travels >= 2 m (%.2f m)',
-    side, gap, d))
+  local least = targets.kick.least
+  tap(d >= least, string.format('kick %s: a ball (its centre %.2f m ahead of the toe) travels >= %.1f m (%.2f m)',
+    side, gap, least, d))
   wait(1)
   -- a fall and a stand-up during the waits would end in stance too: the fall counter must not move
   tap(motion.falls[0] == falls0 and not Sim.truth().fallen and Motion.state() == 'stance',

@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
-# Walking scenarios in the simulator's lockstep mode (the motion process alone, no behavior):
-# forward >= 0.25 m/s for 30 s with heading drift < 10 deg and a clean stop into stance; sideways
-# and backwards 0.1 m/s; turning on the spot 1 rad/s; 60 s of random commands; pushed over
+# Walking scenarios of the body ROBOT (default op3) in the simulator's lockstep mode (the motion
+# process alone, no behavior): forward for 30 s with heading drift < 10 deg and a clean stop into
+# stance; sideways and backwards; turning on the spot; 60 s of random commands; pushed over
 # forwards and backwards: fall detected within 0.3 s, stands up, walks again; a kick with either
-# foot sends a ball (its centre 0.1 m ahead of the toe) >= 2 m and the robot stays up. Each scenario runs in its
-# own sim (Tests/motion/sim_scenarios.lua prints TAP).
-#   [SIM_SEED=N] Tests/motion/sim_walk_test.sh [SCENARIO...]   (the sim's seed, default 1)
+# foot sends a ball (its centre 0.1 m ahead of the toe) far and the robot stays up. The speeds and
+# distances each body must reach: Tests/motion/targets.lua (OP3: forward >= 0.25 m/s, sideways and
+# backwards 0.1 m/s, turning 1 rad/s, kick >= 2 m). Each scenario runs in its own sim
+# (Tests/motion/sim_scenarios.lua prints TAP).
+#   [ROBOT=name] [SIM_SEED=N] Tests/motion/sim_walk_test.sh [SCENARIO...]   (the sim's seed, default 1)
 set -u
 cd "$(dirname "$0")/../.."
 source Run/env.sh

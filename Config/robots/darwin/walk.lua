@@ -61,27 +61,27 @@ return {
     supportY = 0.01,         -- m, COM over the support foot: outward from its ankle
     body = {
       -- weight over the support foot
-      { duration = 0.45, shift = 1, height = -0.001, lean = -0.008 },
-      { duration = 0.5228, shift = 1, height = -0.001, lean = 0.002 },
+      { duration = 0.6, shift = 1, height = -0.001, lean = -0.008 },
+      { duration = 0.5, shift = 1, height = -0.001, lean = 0.0 },
       -- torso back, arms back, through the swing
-      { duration = 0.1654, shift = 1, height = 0.0202, lean = -0.0425, tilt = -0.3391, arms = 0.4021 },
+      { duration = 0.2, shift = 1, height = 0.01, lean = -0.02, tilt = -0.15, arms = 0.2 },
       -- upright again, then the weight back to the middle
-      { duration = 0.35, shift = 1, lean = 0.023 },
-      { duration = 0.327, shift = 1 },
-      { duration = 0.45, shift = 0 },
+      { duration = 0.35, shift = 1, lean = 0.01 },
+      { duration = 0.35, shift = 1 },
+      { duration = 0.5, shift = 0 },
     },
     leg = {
-      { duration = 0.45 },
+      { duration = 0.6 },
       -- lift, then wind up: foot back and up, knee bent, toe down
-      { duration = 0.0919, z = 0.0383 },
-      { duration = 0.3288, x = -0.0198, z = 0.0596, hip = 0.7011, knee = 1.4806, ankle = 0.4798, arm = 0.3503 },
+      { duration = 0.1, z = 0.03 },
+      { duration = 0.35, x = -0.015, z = 0.045, hip = 0.5, knee = 1.2, ankle = 0.4, arm = 0.3 },
       -- swing: a short phase, so the servos run at their speed limit; follow through
-      { duration = 0.0372, x = 0.0923, z = 0.0261, hip = -1.7574, knee = 0.0013, ankle = 0.217, arm = 0.2423 },
-      { duration = 0.0931, x = 0.0923, z = 0.0261, hip = -1.7574, knee = 0.0013, ankle = 0.217, arm = 0.2423 },
+      { duration = 0.04, x = 0.07, z = 0.02, hip = -1.2, knee = 0.0, ankle = 0.2, arm = 0.2 },
+      { duration = 0.1, x = 0.07, z = 0.02, hip = -1.2, knee = 0.0, ankle = 0.2, arm = 0.2 },
       -- back, down
-      { duration = 0.3819, x = -0.0323, z = 0.0456, hip = 0.0678, knee = -0.0413, ankle = -0.0335 },
-      { duration = 0.3 },
-      { duration = 0.45 },
+      { duration = 0.4, x = -0.025, z = 0.035, hip = 0.05, knee = -0.03, ankle = -0.03 },
+      { duration = 0.35 },
+      { duration = 0.5 },
     },
   },
   -- stance and transitions

@@ -1,0 +1,19 @@
+-- What each body must reach in the walking scenarios (Tests/motion/sim_scenarios.lua): the command
+-- given and the least measured speed, per robot (ROBOT). The OP3's figures are the platform's
+-- reference; the DARwIn-OP's forward goal is issue 12's (>= 0.20 m/s for 30 s).
+return {
+  op3 = {
+    forward = { command = 0.35, least = 0.25 },   -- m/s
+    sideways = { command = 0.12, least = 0.10 },  -- m/s
+    backward = { command = 0.12, least = 0.10 },  -- m/s
+    turn = { command = 1.7, least = 1.0 },        -- rad/s
+    kick = { least = 2.0 },                       -- m the ball travels
+  },
+  darwin = {
+    forward = { command = 0.25, least = 0.20 },
+    sideways = { command = 0.12, least = 0.10 },
+    backward = { command = 0.12, least = 0.10 },
+    turn = { command = 1.7, least = 1.0 },
+    kick = { least = 1.0 },
+  },
+}
