@@ -7,6 +7,8 @@
 #include <cmath>
 #include <fstream>
 #include <functional>
+#include <map>
+#include <set>
 #include <sstream>
 
 namespace desc {
@@ -78,12 +80,27 @@ int load(const std::string &path, Model *out, std::string *err) {
   urdf::LinkConstSharedPtr root = u->getRoot();
   if (!root) { *err = path + ": no root link"; return -1; }
 
+  // A link that is the child of two joints makes a cycle that urdfdom does not report (it keeps
+  // the last parent): refuse it here, naming the link and both joints.
+  std::map<std::string, std::string> parent_joint;
+  for (const auto &kv : u->joints_) {
+    const std::string &child = kv.second->child_link_name;
+    auto it = parent_joint.find(child);
+    if (it != parent_joint.end()) {
+      *err = path + ": link '" + child + "' is the child of two joints ('" + it->second + "' and '" + kv.first +
+             "'): the joints form a cycle";
+      return -1;
+    }
+    parent_joint[child] = kv.first;
+  }
   std::string e;
+  std::set<std::string> seen;
   // Depth-first from the root so parents come first.
   std::function<void(const urdf::LinkConstSharedPtr &, int)> visit =
       [&](const urdf::LinkConstSharedPtr &ul, int parent) {
     if (!e.empty()) return;
     const std::string where = path + ": link '" + ul->name + "'";
+    if (!seen.insert(ul->name).second) { e = where + ": reached twice, the joints form a cycle"; return; }
     urdf::JointConstSharedPtr uj = ul->parent_joint;
     if (uj && uj->type == urdf::Joint::FIXED && !ul->inertial) {
       // massless fixed link: a frame on the parent
@@ -163,6 +180,12 @@ int load(const std::string &path, Model *out, std::string *err) {
   };
   visit(root, -1);
   if (!e.empty()) { *err = e; return -1; }
+  for (const auto &kv : u->links_) {
+    if (!seen.count(kv.first)) {
+      *err = path + ": link '" + kv.first + "' is not connected to the root link '" + root->name + "'";
+      return -1;
+    }
+  }
   *out = std::move(m);
   return 0;
 }

@@ -256,7 +256,8 @@ for _, body in ipairs(BODIES) do
     it('refuses a wrong side, a wrong model and an unknown joint', function()
       assert.has_error(function() m:leg_ik('x', 0, 0, 0, 0, 0, 0) end)
       assert.has_error(function() kin.leg_ik({}, 'l', 0, 0, 0, 0, 0, 0) end)
-      assert.has_error(function() m:axis('no_such_joint') end, "kinematics: " .. body .. " has no joint 'no_such_joint'")
+      assert.has_error(function() m:axis("no_such_joint") end,
+        "kinematics: " .. body .. " has no joint 'no_such_joint'")
     end)
 
     it('agrees with an independent reading of the URDF: axes, every link\'s FK, the COM', function()
