@@ -1,13 +1,13 @@
 #!/usr/bin/env python3
 """Writes a robot's description (URDF) from reference data plus the robot's own data.
 
-    Run/gen_urdf.py ROBOT REFERENCE
+    Run/gen_urdf.py ROBOT REFERENCE [--out FILE]
 
 ROBOT names Config/robots/<ROBOT>; REFERENCE is a reference file in the shared format (e.g.
 ../shared/robots/darwin_reference.txt: sections BODIES, COLLISION, optional CAMERA; sections this
 tool does not use, such as LIMITS, ACTUATORS or SENSORS, are skipped). The output is the file that
-robot.lua's `description` names, beside robot.lua; it is committed. A developer runs this by hand:
-nothing at run time reads the reference.
+robot.lua's `description` names, beside robot.lua (or FILE); it is committed. A developer runs this
+by hand: nothing at run time reads the reference.
 
 What comes from where:
 - BODIES: links, inertials (mass, COM, inertia about the COM, world-aligned), joints (parent, axis).
@@ -183,10 +183,15 @@ def chain_joints(robot, name, files):
 
 
 def main():
-    if len(sys.argv) != 3:
+    args = sys.argv[1:]
+    out = None
+    if len(args) == 4 and args[2] == '--out':
+        out = args[3]
+        args = args[:2]
+    if len(args) != 2:
         sys.stderr.write(__doc__)
         sys.exit(2)
-    robot_name, ref = sys.argv[1], sys.argv[2]
+    robot_name, ref = args
     root = os.path.abspath(os.path.join(os.path.dirname(__file__), '..'))
     bodies, boxes, camera, skipped = read_reference(ref)
     for s in skipped:
@@ -196,7 +201,7 @@ def main():
     rfiles, afiles = data['robot_files'], data['actuator_files']
     if not isinstance(robot.get('description'), str):
         fail("%s: key 'description' (the URDF's file name) missing" % rfiles)
-    out = os.path.join(root, 'Config', 'robots', robot_name, robot['description'])
+    out = out or os.path.join(root, 'Config', 'robots', robot_name, robot['description'])
 
     # joints: the reference's and the robot's joint list must be the same set
     ref_joints = [b['joint'] for b in bodies if b['joint'] != 'floating']
@@ -316,8 +321,7 @@ def main():
     w('</robot>')
     with open(out, 'w') as fh:
         fh.write('\n'.join(lines) + '\n')
-    print('gen_urdf: wrote %s (%d links, %d boxes, %d frames)'
-          % (os.path.relpath(out, root), len(bodies), len(boxes), len(frames)))
+    print('gen_urdf: wrote %s (%d links, %d boxes, %d frames)' % (out, len(bodies), len(boxes), len(frames)))
 
 
 if __name__ == '__main__':
