@@ -219,7 +219,8 @@ function M.load(opts)
   local files = table.concat(Config.files('robot', opts), ' + ')
   local desc = rawget(robot, 'description')
   if type(desc) ~= 'string' then error(files .. ": missing key 'description' (the URDF)", 2) end
-  local m, err = M.new(robot, Config.robot_file(desc, robot.name), files)
+  local body = type(opts) == 'table' and opts.robot or Config.robot()
+  local m, err = M.new(robot, Config.robot_file(desc, body), files)
   if not m then error(err, 2) end
   return m
 end
@@ -269,11 +270,11 @@ end
 -- joints of q place the legs' bases); returns the flags of both legs OR-ed.
 function Model:legs_ik(lpose, rpose, q)
   local flags = 0
-  local cm = self.cm
+  local cm, qb = self.cm, qbase(self, q)
   for s = 0, 1 do
     local p = s == 0 and lpose or rpose
     b_in[0], b_in[1], b_in[2], b_in[3], b_in[4], b_in[5] = p[1], p[2], p[3], p[4], p[5], p[6]
-    local f = check(self, C.kin_leg_ik(cm, s, b_in, nil, b_out), 'leg')
+    local f = check(self, C.kin_leg_ik(cm, s, b_in, qb, b_out), 'leg')
     flags = bor(flags, f)
     local li = self.leg_index[s]
     for k = 1, 6 do q[li[k]] = b_out[k - 1] end
