@@ -14,8 +14,10 @@ DEPS_STAMP := $(BUILD)/.deps-ok
 
 all: $(DEPS_STAMP) $(NATIVE_DIRS)
 
-# Modules/shm first: others link against it.
+# Modules/shm first: others link against it. The DCMs stand on Modules/dcm (and the OP's on dynamixel).
 $(filter-out Modules/shm/,$(NATIVE_DIRS)): Modules/shm/
+$(filter Platforms/%,$(NATIVE_DIRS)): Modules/dcm/
+Platforms/OP/: Modules/dynamixel/
 # the robot description parser: linked by the kinematics and the sim
 Modules/kinematics/ Platforms/Sim/: Modules/description/
 

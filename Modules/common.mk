@@ -6,14 +6,17 @@ BUILD    ?= $(TOP)/build
 LIBDIR   := $(BUILD)/lib
 BINDIR   := $(BUILD)/bin
 TESTDIR  := $(BUILD)/tests
+GENDIR   := $(BUILD)/gen
 OBJDIR    = $(BUILD)/obj/$(notdir $(CURDIR))
 
 CC       := gcc
 CXX      := g++
 WARN     := -Wall -Wextra -Werror -Wshadow -Wno-unused-parameter
-CFLAGS   += -std=c11 -O2 -g -fPIC $(WARN) -D_GNU_SOURCE -I$(TOP)/Modules -DHRP_ROOT_DEFAULT='"$(TOP)"'
-CXXFLAGS += -std=c++17 -O2 -g -fPIC $(WARN) -D_GNU_SOURCE -I$(TOP)/Modules -DHRP_ROOT_DEFAULT='"$(TOP)"'
+CFLAGS   += -std=c11 -O2 -g -fPIC $(WARN) -D_GNU_SOURCE -I$(TOP)/Modules -I$(GENDIR) -DHRP_ROOT_DEFAULT='"$(TOP)"'
+CXXFLAGS += -std=c++17 -O2 -g -fPIC $(WARN) -D_GNU_SOURCE -I$(TOP)/Modules -I$(GENDIR) -DHRP_ROOT_DEFAULT='"$(TOP)"'
 # Link against the shm library by path with an rpath, so nothing needs installing.
 SHM_LIBS := -L$(LIBDIR) -lhrpshm -Wl,-rpath,$(LIBDIR) -lpthread -lrt -lm
+# The DCM library (Modules/dcm; its header dcm.h includes the generated $(GENDIR)/dcm_blocks.h).
+DCM_LIBS := -L$(LIBDIR) -lhrpdcm $(SHM_LIBS)
 
-$(shell mkdir -p $(LIBDIR) $(BINDIR) $(TESTDIR))
+$(shell mkdir -p $(LIBDIR) $(BINDIR) $(TESTDIR) $(GENDIR))

@@ -233,6 +233,15 @@ const char *shm_schema_block_name(const shm_schema *s, int i) {
   return (i >= 0 && i < s->nblocks) ? s->blocks[i].name : NULL;
 }
 
+int shm_schema_block_nfields(const shm_schema *s, int i) {
+  return (i >= 0 && i < s->nblocks) ? s->blocks[i].nfields : -1;
+}
+
+const shm_field *shm_schema_block_field(const shm_schema *s, int i, int k) {
+  if (i < 0 || i >= s->nblocks || k < 0 || k >= s->blocks[i].nfields) return NULL;
+  return &s->blocks[i].fields[k];
+}
+
 const shm_block_decl *shm_schema_find(const shm_schema *s, const char *block) {
   for (int i = 0; i < s->nblocks; i++)
     if (strcmp(s->blocks[i].name, block) == 0) return &s->blocks[i];

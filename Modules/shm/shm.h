@@ -75,6 +75,10 @@ void shm_schema_free(shm_schema *schema);
 /* Number of blocks and the name of block i (0-based), for tools. */
 int shm_schema_nblocks(const shm_schema *schema);
 const char *shm_schema_block_name(const shm_schema *schema, int i);
+/* Fields of block i (0-based): their number (-1 if no such block), and entry k with name, type
+ * and count (and the offset a segment of it has), for generators such as Modules/dcm's. */
+int shm_schema_block_nfields(const shm_schema *schema, int i);
+const shm_field *shm_schema_block_field(const shm_schema *schema, int i, int k);
 /* Value of a schema constant (e.g. "njoint"), or -1 if absent. */
 long shm_schema_const(const shm_schema *schema, const char *name);
 

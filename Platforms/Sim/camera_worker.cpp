@@ -70,7 +70,7 @@ void CameraWorker::run() {
       j.fn();
     } else {
       world_.solids(j.scene, &solids);
-      ren_.render(j.cam, solids, j.self, hide_, j.scene.ball, world_.ball_radius(), j.seq, j.out);
+      ren_.render(j.cam, solids, j.self, j.hide ? *j.hide : hide_, j.scene.ball, world_.ball_radius(), j.seq, j.out);
     }
     {
       std::lock_guard<std::mutex> l(mu_);

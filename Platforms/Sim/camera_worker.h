@@ -34,6 +34,7 @@ class CameraWorker {
     int self = 0;           // the robot whose camera it is
     uint32_t seq = 0;       // frame number for the sensor noise
     uint8_t *out = nullptr; // width * height * 2 bytes, untouched by the caller until wait()
+    const std::vector<int> *hide = nullptr;   // links of `self` not seen (null: the worker's own list)
     std::function<void()> fn;   // instead of rendering (post())
   };
   // Queues a job (rendered in order of submission); returns its ticket.

@@ -112,7 +112,10 @@ void params_load(const std::string &robot, Params *p) {
   if (p->start.empty()) throw std::runtime_error(sim_lua + ": missing list 'start'");
   p->fall_angle = s.num("fall_angle");
   p->watchdog = s.num("watchdog");
+  p->safe_hardness = s.num("safe_hardness");
+  p->start_hardness = s.num("start_hardness");
   p->battery = s.num("battery");
+  p->name = r.str("name");
   p->joints = r.strs("joints");
   // each joint's servo: the actuator model robot.lua names for it
   p->servos.clear();
@@ -146,12 +149,17 @@ void params_load(const std::string &robot, Params *p) {
 // ---------------------------------------------------------------- construction
 
 World::World(const Params &p, const Model &m, int nrobots, uint64_t seed)
-    : p_(p), m_(m), seed_(seed), rng_(seed) {
-  if (m_.links.empty()) throw std::runtime_error(m_.file + ": no links");
-  if (m_.frame_index(p_.camera_frame) < 0 && m_.link_index(p_.camera_frame) < 0) {
-    throw std::runtime_error(m_.file + ": no link or frame '" + p_.camera_frame + "' for the camera");
+    : World(p, std::vector<Body>(std::max(nrobots, 0), Body{m, p.joints, p.servos}), seed) {}
+
+World::World(const Params &p, std::vector<Body> bodies, uint64_t seed)
+    : p_(p), bodies_(std::move(bodies)), seed_(seed), rng_(seed) {
+  for (const Body &b : bodies_) {
+    if (b.model.links.empty()) throw std::runtime_error(b.model.file + ": no links");
+    if (b.model.frame_index(p_.camera_frame) < 0 && b.model.link_index(p_.camera_frame) < 0) {
+      throw std::runtime_error(b.model.file + ": no link or frame '" + p_.camera_frame + "' for the camera");
+    }
+    if (b.servos.size() != b.joints.size()) throw std::runtime_error(b.model.file + ": no servo model for every joint");
   }
-  if (p_.servos.size() != p_.joints.size()) throw std::runtime_error(m_.file + ": no servo model for every joint");
   substeps_ = (int)std::lround(p_.period / p_.timestep);
   dInitODE2(0);
   dRandSetSeed((unsigned long)(seed & 0xffffffffu));
@@ -168,8 +176,8 @@ World::World(const Params &p, const Model &m, int nrobots, uint64_t seed)
   cfb_.reserve(4096);
   cfb_owner_.reserve(4096);
   build_env();
-  robots_.resize(nrobots);
-  for (int r = 0; r < nrobots; r++) build_robot(r);
+  robots_.resize(bodies_.size());
+  for (size_t r = 0; r < bodies_.size(); r++) build_robot((int)r, bodies_[r]);
   reset();
 }
 
@@ -253,9 +261,12 @@ void World::build_env() {
   dGeomSetData(ball_geom_, info(kBall));
 }
 
-void World::build_robot(int r) {
+void World::build_robot(int r, const Body &body) {
   Robot &rb = robots_[r];
-  const int nl = (int)m_.links.size();
+  rb.m = &body.model;
+  rb.servo = &body.servos;
+  const Model &m = body.model;
+  const int nl = (int)m.links.size();
   rb.space = dSimpleSpaceCreate(top_);
   rb.body.assign(nl, nullptr);
   rb.hinge.assign(nl, nullptr);
@@ -264,7 +275,7 @@ void World::build_robot(int r) {
   std::vector<Vec3> pos(nl);
   std::vector<Mat3> rot(nl);
   for (int i = 0; i < nl; i++) {
-    const Link &l = m_.links[i];
+    const Link &l = m.links[i];
     if (l.parent < 0) {
       pos[i] = Vec3::Zero();
       rot[i] = Mat3::Identity();
@@ -319,12 +330,12 @@ void World::build_robot(int r) {
   }
   // shm joint order -> links
   rb.jlink.clear();
-  for (const std::string &jn : p_.joints) {
-    int li = m_.joint_link(jn);
-    if (li < 0) throw std::runtime_error(m_.file + ": no joint '" + jn + "' (listed in the robot config)");
+  for (const std::string &jn : body.joints) {
+    int li = m.joint_link(jn);
+    if (li < 0) throw std::runtime_error(m.file + ": no joint '" + jn + "' (listed in the robot config)");
     rb.jlink.push_back(li);
   }
-  const int nj = (int)p_.joints.size();
+  const int nj = (int)body.joints.size();
   rb.cmd.assign(nj, 0);
   rb.hard.assign(nj, 1);
   rb.enable.assign(nj, 1);
@@ -333,9 +344,9 @@ void World::build_robot(int r) {
   // boxes already touch at the zero pose (the mesh boxes are larger than the parts)
   rb.allowed.assign(nl * nl, 1);
   auto related = [&](int a, int b) {
-    int pa = m_.links[a].parent, pb = m_.links[b].parent;
-    return a == b || pa == b || pb == a || (pa >= 0 && m_.links[pa].parent == b) ||
-           (pb >= 0 && m_.links[pb].parent == a);
+    int pa = m.links[a].parent, pb = m.links[b].parent;
+    return a == b || pa == b || pb == a || (pa >= 0 && m.links[pa].parent == b) ||
+           (pb >= 0 && m.links[pb].parent == a);
   };
   const int ng = dSpaceGetNumGeoms(rb.space);
   for (int a = 0; a < nl; a++)
@@ -387,10 +398,11 @@ Mat3 World::body_rot(dBodyID b) const {
 
 void World::place_robot(int r, double x, double y, double yaw, const double *q) {
   Robot &rb = robots_[r];
-  const int nl = (int)m_.links.size();
+  const Model &m = *rb.m;
+  const int nl = (int)m.links.size();
   std::vector<double> ql(nl, 0.0);
   for (size_t j = 0; j < rb.jlink.size(); j++) {
-    const Link &l = m_.links[rb.jlink[j]];
+    const Link &l = m.links[rb.jlink[j]];
     double v = q ? q[j] : rb.cmd[j];
     ql[rb.jlink[j]] = std::min(std::max(v, l.lower), l.upper);
   }
@@ -398,7 +410,7 @@ void World::place_robot(int r, double x, double y, double yaw, const double *q) 
   std::vector<Mat3> rot(nl);
   double zmin = 1e9;
   for (int i = 0; i < nl; i++) {
-    const Link &l = m_.links[i];
+    const Link &l = m.links[i];
     if (l.parent < 0) {
       pos[i] = Vec3::Zero();
       rot[i] = rot_z(yaw);
@@ -416,7 +428,7 @@ void World::place_robot(int r, double x, double y, double yaw, const double *q) 
   }
   const Vec3 shift(x, y, -zmin + 0.0002);
   for (int i = 0; i < nl; i++) {
-    Vec3 c = pos[i] + shift + rot[i] * m_.links[i].com;
+    Vec3 c = pos[i] + shift + rot[i] * m.links[i].com;
     dBodyID b = rb.body[i];
     dBodySetPosition(b, c.x(), c.y(), c.z());
     dMatrix3 R;
@@ -481,7 +493,7 @@ int World::set_command(int r, const double *cmd, const double *hardness, const i
 
 void World::servo_update(Robot &rb) {
   for (size_t j = 0; j < rb.jlink.size(); j++) {
-    const Link &l = m_.links[rb.jlink[j]];
+    const Link &l = rb.m->links[rb.jlink[j]];
     dJointID h = rb.hinge[rb.jlink[j]];
     if (rb.enable[j] && rb.hard[j] > 0) {
       if (rb.mode[j] != 1) {
@@ -489,7 +501,7 @@ void World::servo_update(Robot &rb) {
         rb.mode[j] = 1;
       }
       const double target = std::min(std::max(rb.cmd[j], l.lower), l.upper);
-      double v = p_.servos[j].gain * (target - dJointGetHingeAngle(h));
+      double v = (*rb.servo)[j].gain * (target - dJointGetHingeAngle(h));
       v = std::min(std::max(v, -l.velocity), l.velocity);
       dJointSetHingeParam(h, dParamVel, v);
       dJointSetHingeParam(h, dParamFMax, rb.hard[j] * l.effort);
@@ -517,7 +529,7 @@ void World::collide(dGeomID o1, dGeomID o2) {
   const GeomInfo *a = (const GeomInfo *)dGeomGetData(o1), *b = (const GeomInfo *)dGeomGetData(o2);
   if (a->kind == kGround && b->kind == kGround) return;
   if (a->kind == kRobot && b->kind == kRobot && a->robot == b->robot) {
-    const int nl = (int)m_.links.size();
+    const int nl = (int)robots_[a->robot].m->links.size();
     if (!robots_[a->robot].allowed[a->link * nl + b->link]) return;
   }
   dContact c[16];
@@ -656,7 +668,8 @@ void World::sense(int r, Sensors *s) {
   s->velocity.resize(nj);
   s->load.resize(nj);
   for (size_t j = 0; j < nj; j++) {
-    const double qstep = 2 * M_PI / p_.servos[j].resolution, vstep = p_.servos[j].speed_unit;
+    const Servo &sv = (*rb.servo)[j];
+    const double qstep = 2 * M_PI / sv.resolution, vstep = sv.speed_unit;
     const int li = rb.jlink[j];
     dJointID h = rb.hinge[li];
     s->position[j] = std::round(dJointGetHingeAngle(h) / qstep) * qstep;
@@ -683,7 +696,7 @@ void World::sense(int r, Sensors *s) {
 void World::link_pose(int r, int link, Vec3 *pos, Mat3 *rot) const {
   dBodyID b = robots_[r].body[link];
   *rot = body_rot(b);
-  *pos = body_pos(b) - *rot * m_.links[link].com;
+  *pos = body_pos(b) - *rot * robots_[r].m->links[link].com;
 }
 
 Truth World::truth(int r) const {
@@ -710,25 +723,32 @@ Truth World::truth(int r) const {
 Vec3 World::ball_position() const { return body_pos(ball_); }
 
 void World::camera_pose(int r, Vec3 *pos, Mat3 *rot) const {
-  int fi = m_.frame_index(p_.camera_frame);
+  const Model &m = *robots_[r].m;
+  int fi = m.frame_index(p_.camera_frame);
   Vec3 lp;
   Mat3 lR;
   if (fi >= 0) {
-    const Frame &f = m_.frames[fi];
+    const Frame &f = m.frames[fi];
     link_pose(r, f.link, &lp, &lR);
     *pos = lp + lR * f.pos;
     *rot = lR * f.rot;
   } else {
-    link_pose(r, m_.link_index(p_.camera_frame), pos, rot);
+    link_pose(r, m.link_index(p_.camera_frame), pos, rot);
   }
 }
 
 void World::snapshot(Scene *s) const {
-  const size_t nl = m_.links.size();
-  s->link_pos.resize(robots_.size() * nl);
-  s->link_rot.resize(robots_.size() * nl);
+  s->first.resize(robots_.size());
+  size_t n = 0;
+  for (size_t r = 0; r < robots_.size(); r++) {
+    s->first[r] = n;
+    n += robots_[r].m->links.size();
+  }
+  s->link_pos.resize(n);
+  s->link_rot.resize(n);
   for (size_t r = 0; r < robots_.size(); r++)
-    for (size_t i = 0; i < nl; i++) link_pose((int)r, (int)i, &s->link_pos[r * nl + i], &s->link_rot[r * nl + i]);
+    for (size_t i = 0; i < robots_[r].m->links.size(); i++)
+      link_pose((int)r, (int)i, &s->link_pos[s->first[r] + i], &s->link_rot[s->first[r] + i]);
   s->ball = ball_position();
 }
 
@@ -741,13 +761,13 @@ void World::solids(std::vector<Solid> *out) const {
 void World::solids(const Scene &scene, std::vector<Solid> *out) const {
   out->clear();
   for (const Solid &s : goal_solids_) out->push_back(s);
-  const size_t nl = m_.links.size();
-  for (size_t r = 0; r < scene.link_pos.size() / nl; r++) {
-    for (size_t i = 0; i < nl; i++) {
-      const Vec3 &p = scene.link_pos[r * nl + i];
-      const Mat3 &R = scene.link_rot[r * nl + i];
-      const bool dark = i == 0 || m_.links[i].name.find("head") != std::string::npos;
-      for (const Box &b : m_.links[i].boxes) {
+  for (size_t r = 0; r < scene.first.size(); r++) {
+    const Model &m = *robots_[r].m;
+    for (size_t i = 0; i < m.links.size(); i++) {
+      const Vec3 &p = scene.link_pos[scene.first[r] + i];
+      const Mat3 &R = scene.link_rot[scene.first[r] + i];
+      const bool dark = i == 0 || m.links[i].name.find("head") != std::string::npos;
+      for (const Box &b : m.links[i].boxes) {
         Solid s;
         box_solid(p + R * b.pos, R * b.rot, b.size, &s);
         if (dark) set_yuv(&s, 60, 128, 128); else set_yuv(&s, 120, 128, 128);
@@ -770,15 +790,49 @@ std::string hrp_root() {
 
 std::string robot_dir(const std::string &robot) { return hrp_root() + "/Config/robots/" + robot; }
 
+// Every joint of a description is driven: each must be in the robot's joint list.
+static void check_joints(const Params &p, const Model &m) {
+  for (const Link &l : m.links) {
+    if (!l.joint.empty() && std::find(p.joints.begin(), p.joints.end(), l.joint) == p.joints.end()) {
+      throw std::runtime_error(p.urdf + ": joint '" + l.joint + "' is not in the robot config's joints");
+    }
+  }
+}
+
 void load_all(Params *p, Model *m) {
   params_load("", p);
   std::string err;
   if (model_load(p->urdf, m, &err) < 0) throw std::runtime_error(err);
-  // every joint of the description is driven: each must be in the robot's joint list
-  for (const Link &l : m->links) {
-    if (!l.joint.empty() && std::find(p->joints.begin(), p->joints.end(), l.joint) == p->joints.end()) {
-      throw std::runtime_error(p->urdf + ": joint '" + l.joint + "' is not in the robot config's joints");
+  check_joints(*p, *m);
+}
+
+void load_bodies(const std::vector<std::string> &robots, std::vector<Params> *params, std::vector<Body> *bodies) {
+  params->clear();
+  bodies->clear();
+  for (size_t r = 0; r < robots.size(); r++) {
+    size_t same = 0;   // a body already loaded is copied, not read again
+    while (same < r && robots[same] != robots[r]) same++;
+    if (same < r) {
+      params->push_back((*params)[same]);
+      bodies->push_back((*bodies)[same]);
+      continue;
     }
+    Params p;
+    params_load(robots[r], &p);
+    Body b;
+    std::string err;
+    if (model_load(p.urdf, &b.model, &err) < 0) throw std::runtime_error(err);
+    check_joints(p, b.model);
+    b.joints = p.joints;
+    b.servos = p.servos;
+    // one world steps every robot with one control period
+    if (r > 0 && std::fabs(p.period - (*params)[0].period) > 1e-12) {
+      throw std::runtime_error("robot '" + robots[r] + "' has a control period of " + std::to_string(p.period) +
+                               " s, robot '" + robots[0] + "' one of " + std::to_string((*params)[0].period) +
+                               " s: one world steps all robots with one period (robot.lua 'period')");
+    }
+    params->push_back(p);
+    bodies->push_back(std::move(b));
   }
 }
 

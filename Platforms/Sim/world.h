@@ -49,6 +49,8 @@ struct Params {
   double cam_noise = 2;
   std::vector<double> start;   // x, y, yaw per robot, flattened
   double fall_angle = 1.0, watchdog = 0.5, battery = 12;
+  double safe_hardness = 0.3, start_hardness = 1;   // the DCM's safe state; a fresh actuator block
+  std::string name;                   // the body (robot.lua's name)
   std::vector<std::string> joints;    // shm joint order (robot.lua)
   std::vector<Servo> servos;          // per shm joint: its actuator model (robot.lua `actuator`)
   std::string urdf;                   // path of the robot file
@@ -81,23 +83,35 @@ struct Solid {
 // What the camera sees that moves, copied at the exposure tick: the link poses of every robot and
 // the ball. Cheap to take on the physics thread; the solids are built from it on the render thread.
 struct Scene {
-  std::vector<Vec3> link_pos;   // robot r, link i at [r * nlinks + i] (link frame origin, field frame)
+  std::vector<Vec3> link_pos;   // robot r, link i at [first[r] + i] (link frame origin, field frame)
   std::vector<Mat3> link_rot;
+  std::vector<size_t> first;
   Vec3 ball = Vec3::Zero();
+};
+
+// One robot's body: its description, the shm order of its joints (robot.lua's joints) and each
+// joint's servo (its actuator model).
+struct Body {
+  Model model;
+  std::vector<std::string> joints;
+  std::vector<Servo> servos;   // per shm joint
 };
 
 class World {
  public:
+  // nrobots robots of one body (joints: p.joints, servos: p.servos).
   World(const Params &p, const Model &m, int nrobots, uint64_t seed);
+  // Robot r has bodies[r]: different bodies in one world. The world's own numbers come from p.
+  World(const Params &p, std::vector<Body> bodies, uint64_t seed);
   ~World();
   World(const World &) = delete;
   World &operator=(const World &) = delete;
 
   int nrobots() const { return (int)robots_.size(); }
-  int njoints() const { return (int)p_.joints.size(); }
+  int njoints(int r = 0) const { return (int)robots_[r].jlink.size(); }
   double time() const { return time_; }
   const Params &params() const { return p_; }
-  const Model &model() const { return m_; }
+  const Model &model(int r = 0) const { return *robots_[r].m; }
 
   // Servo commands of robot r (arrays of njoints; rad, 0..1, 0/1). Non-finite entries are
   // ignored (the previous value stays) and counted; returns how many were ignored.
@@ -135,6 +149,8 @@ class World {
  private:
   struct GeomInfo { int kind; int robot; int link; int sole; };   // kind: 0 ground/env, 1 ball, 2 robot
   struct Robot {
+    const Model *m = nullptr;              // its body (in bodies_)
+    const std::vector<Servo> *servo = nullptr;   // its body's servos, per shm joint
     dSpaceID space = nullptr;
     std::vector<dBodyID> body;             // per model link
     std::vector<dJointID> hinge;           // per model link (null for the root)
@@ -152,7 +168,7 @@ class World {
   };
 
   void build_env();
-  void build_robot(int r);
+  void build_robot(int r, const Body &body);
   void servo_update(Robot &rb);
   void physics_step();
   void set_hinge_feedback(bool on);
@@ -163,7 +179,7 @@ class World {
   Mat3 body_rot(dBodyID b) const;
 
   Params p_;
-  Model m_;
+  std::vector<Body> bodies_;               // per robot
   dWorldID world_ = nullptr;
   dSpaceID top_ = nullptr;
   dJointGroupID contacts_ = nullptr;
@@ -194,4 +210,8 @@ std::string robot_dir(const std::string &robot);
 // Params from <root>/Config/<platform>/{sim,robot}.lua ($PLATFORM, default Sim) and the model from
 // the robot file they name. Throws std::runtime_error naming the file and the element or key.
 void load_all(Params *p, Model *m);
+// Different bodies in one world: robots[r] names robot r's body ("" = $ROBOT); (*params)[r] are its
+// numbers (robot.lua, camera.lua and sim.lua with its layers), (*bodies)[r] its description. The
+// world's own numbers (physics, field, ball) are robot 0's. Throws naming the file and the key.
+void load_bodies(const std::vector<std::string> &robots, std::vector<Params> *params, std::vector<Body> *bodies);
 }  // namespace sim

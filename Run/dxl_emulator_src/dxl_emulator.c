@@ -120,18 +120,22 @@ static device *find(uint8_t id) {
 
 static int clampi(double v, int lo, int hi) { return v < lo ? lo : v > hi ? hi : (int)lround(v); }
 
-/* Sensor registers of the sub-controller from the IMU truth. CM-730: 10-bit, 512 = 0,
- * gyro +-1600 deg/s and accelerometer +-4 g over the range (order Z Y X for the gyro).
- * OpenCR (as emulated here): signed 16-bit, gyro 0.06103 deg/s and accel 1/2048 g per count. */
+/* Sensor registers of the sub-controller from the IMU truth (torso frame: x forward, y left, z up).
+ * CM-730: 10-bit, 512 = 0, gyro +-1600 deg/s and accelerometer +-4 g over the range, words GYRO_Z,
+ * GYRO_Y, GYRO_X at 38, 40, 42 and ACC_X, ACC_Y, ACC_Z at 44, 46, 48, mounted as in the DARwIn-OP
+ * (shared/robots/darwin_reference.txt, IMU): GYRO_X = -wx, GYRO_Y = -wy, GYRO_Z = wz; ACC_X = the
+ * specific force toward the robot's right (-y), ACC_Y = forward (+x), ACC_Z = up.
+ * OpenCR (as emulated here): signed 16-bit, gyro 0.06103 deg/s and accel 1/2048 g per count, axes
+ * as the torso's. */
 static void update_board(device *d) {
   if (d->kind == CM730) {
     double gs = 512.0 / (1600.0 * PI / 180.0), as = 512.0 / (4 * 9.80665);
     d->t[30] = (uint8_t)buttons;
     put16(d, 38, clampi(512 + gyro[2] * gs, 0, 1023));
-    put16(d, 40, clampi(512 + gyro[1] * gs, 0, 1023));
-    put16(d, 42, clampi(512 + gyro[0] * gs, 0, 1023));
-    put16(d, 44, clampi(512 + accel[0] * as, 0, 1023));
-    put16(d, 46, clampi(512 + accel[1] * as, 0, 1023));
+    put16(d, 40, clampi(512 - gyro[1] * gs, 0, 1023));
+    put16(d, 42, clampi(512 - gyro[0] * gs, 0, 1023));
+    put16(d, 44, clampi(512 - accel[1] * as, 0, 1023));
+    put16(d, 46, clampi(512 + accel[0] * as, 0, 1023));
     put16(d, 48, clampi(512 + accel[2] * as, 0, 1023));
     d->t[50] = 121;
   } else if (d->kind == OPENCR) {

@@ -385,8 +385,11 @@ describe('DARwIn-OP model against the reference data (its own joint convention)'
     -- page 9 "walkready" of motion_4096.bin (darwin_reference.txt), counts for servo ids 1..20
     local counts = { 1498, 2518, 1845, 2248, 2381, 1712, 2048, 2048, 2052, 2044, 1637, 2459, 2653, 1443, 2389,
       1707, 2057, 2039, 2048, 2161 }
-    local d, q = robot.devices, {}
-    for i = 1, #robot.joints do q[i] = d.direction[i] * (counts[d.ids[i]] - d.zero[i]) * 2 * pi / 4096 end
+    local q = {}
+    for _, d in ipairs(robot.devices) do -- one row per servo: its joint, id, direction and zero
+      local j = rawget(d, 'joint')
+      if j then q[m.index[j] + 1] = d.direction * (counts[d.id] - d.zero) * 2 * pi / 4096 end
+    end
     local feet = {}
     for s, side in ipairs({ 'l', 'r' }) do
       local q6 = {}

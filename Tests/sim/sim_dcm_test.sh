@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The sim DCM through shared memory (TAP): lockstep determinism (same seed, same script: identical
-# truth to the last bit), Sim requests, two robots in one world, NaN commands counted, a robot whose
+# truth to the last bit), Sim requests, two robots in one world, two different bodies in one world
+# (each its own description and joint order), NaN commands counted, a robot whose
 # Lua side went away holds its pose (real time), clear errors for a bad robot file.
 set -u
 cd "$(dirname "$0")/../.."
@@ -79,6 +80,47 @@ if start_dcm two --lockstep --robots 2 --seed 1 --quiet; then
 else
   nok "dcm_sim starts with two robots"
 fi
+
+# ---- two different bodies in one world: op3 and a body "op3r" of the same description whose bus
+# order is reversed (a test tree: Config/robots/op3r); each robot id gets its body's joint order
+cleanup
+tmp=$(mktemp -d)
+cp -r Config Lib "$tmp/"
+mkdir -p "$tmp/Config/robots/op3r"
+cp Config/robots/op3/camera.lua "$tmp/Config/robots/op3r/"
+cat >"$tmp/Config/robots/op3r/robot.lua" <<LUA
+local t = dofile('$tmp/Config/robots/op3/robot.lua')
+t.name = 'op3r'
+t.description = '../op3/op3.urdf'
+local rev = {}
+for i = #t.joints, 1, -1 do rev[#rev + 1] = t.joints[i] end
+t.joints = rev
+return t
+LUA
+DCM_PID=
+HRP_ROOT=$tmp build/bin/dcm_sim --lockstep --robots op3,op3r --seed 1 >"$LOG/bodies.log" 2>&1 &
+DCM_PID=$!
+sleep 1
+out=$(timeout 60 ./run_repl -e '
+  local shm = require("shm")
+  local a2 = shm.open("dcm.actuator", { robot = shm.robot_id() + 1 })
+  local s2 = shm.open("dcm.sensor", { robot = shm.robot_id() + 1 })
+  wait(0.1)
+  a2:write(function(a) a.command[19] = 0.5 end)   -- op3r: joint 20 of its order is head_pan
+  wait(1.0)
+  local other = shm.open("sim", { robot = shm.robot_id() + 1 })
+  print(string.format("r2_head_pan %.3f r2_first %.3f r1_head_pan %.3f fallen %d %d", s2.position[19], s2.position[0],
+    Body.get_position("head_pan"), Sim.truth().fallen and 1 or 0, other.fallen[0]))' 2>&1)
+stop_dcm
+echo "$out" | sed 's/^/# /'
+head -1 "$LOG/bodies.log" | sed 's/^/# /'
+grep -q "op3 $ID, op3r $((ID + 1))" "$LOG/bodies.log" && echo "$out" | grep -Eq 'r2_head_pan 0\.(49|50)[0-9] r2_first -?0\.00[0-9] r1_head_pan -?0\.00[0-9] fallen 0 0'
+check $? "two bodies in one world: each robot id its body's joint order (op3 and op3r)"
+err=$(HRP_ROOT=$tmp timeout 10 build/bin/dcm_sim --robots op3,nobody --quiet 2>&1)
+echo "# $err"
+echo "$err" | grep -q "unknown robot 'nobody'"
+check $? "an unknown body in --robots is named"
+rm -rf "$tmp"
 
 # ---- real time: the Lua side sets the stance and goes away; the robot holds its pose
 cleanup

@@ -1,11 +1,10 @@
--- The OP platform's bus settings (Platforms/OP/dcm_op), the same for every body on a Dynamixel bus.
--- Which servos and how their counts map to joint angles is the body's: `devices` in
+-- The OP platform's DCM settings (Platforms/OP/dcm_op), the same for every body on Dynamixel buses.
+-- The buses (port, baud rate) and their devices (which servo drives which joint, how its counts map
+-- to the joint angle, the board with the IMU) are the body's: `buses` and `devices` in
 -- Config/robots/<ROBOT>/robot.lua:
 --   angle (rad) = direction * (count - zero) * 2*pi / 4096
 -- Check each joint on a new robot (./run_repl: Body.set_command) before trusting the walk.
 return {
-  port = '/dev/ttyUSB0',        -- CM-730's FTDI or OpenCR's USB CDC; --port overrides
-  baud = 1000000,
   start_hardness = 1.0,         -- hardness commanded when the DCM starts (it holds the current pose)
   watchdog = 0.5,               -- s without a new tick_ack from motion before the safe state
   safe_hardness = 0.3,          -- safe state: hold the present pose at this fraction of torque
@@ -14,6 +13,4 @@ return {
   timeout_margin = 0.0015,      -- s added to the wire time of expected answers (USB latency)
   latency_timer = 1,            -- ms, FTDI latency timer set through libusb / sysfs
   rt_priority = 20,             -- SCHED_FIFO priority of the DCM (0: normal process); needs the right
-  gyro_sign = { 1, 1, 1 },      -- board axes to torso axes (x forward, y left, z up)
-  accel_sign = { 1, 1, 1 },
 }

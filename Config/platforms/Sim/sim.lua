@@ -78,5 +78,7 @@ return {
 
   fall_angle = 1.0,              -- rad of torso tilt beyond which the robot counts as fallen
   watchdog = 0.5,                -- s of robot time without tick_ack before holding the pose (real time)
+  safe_hardness = 0.3,           -- the held pose's hardness after a watchdog trip (as on the OP platform)
+  start_hardness = 1.0,          -- a fresh actuator block: hold the zero pose at full hardness (a standing robot)
   battery = 12.0,                -- V
 }

@@ -56,16 +56,40 @@ return {
   },
   -- each joint's actuator model (Config/common/actuators.lua): MX-28 at 11.1 V everywhere
   actuator = every_joint('MX-28'),
-  -- the Dynamixel bus on the OP platform (Platforms/OP): ROBOTIS numbering; ids in joint order
+  -- the Dynamixel bus on the OP platform (Platforms/OP), in the form of ROBOTIS' .robot files: the
+  -- buses (port, baud rate; `--port` overrides bus 1's), then one row per servo (the joint it drives)
+  -- or board (IMU, buttons), in any order. ROBOTIS numbering (shared/robots/darwin_reference.txt
+  -- JOINTS): odd = right, even = left, 19/20 = head. direction +1 and zero 2048 everywhere: this body's
+  -- joint convention is its servos' own (the axes of its URDF, darwin.urdf, follow the servos; zero =
+  -- every servo at its centre):  angle (rad) = direction * (count - zero) * 2*pi / 4096.
+  -- The CM-730's axes (darwin_reference.txt IMU): GYRO_X = -wx, GYRO_Y = -wy, GYRO_Z = wz; ACC_X
+  -- points to the robot's right, ACC_Y forward, ACC_Z up.
+  buses = {
+    { port = '/dev/ttyUSB0', baud = 1000000 },   -- the CM-730's FTDI; MX-28 baud register 1
+  },
   devices = {
-    protocol = 1,             -- Dynamixel protocol 1.0
-    servo = 'MX-28',
-    board = 'CM-730',
-    board_id = 200,
-    ids = { 19, 20, 2, 4, 6, 8, 10, 12, 14, 16, 18, 7, 9, 11, 13, 15, 17, 1, 3, 5 },
-    direction = { 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1 },
-    zero = { 2048, 2048, 2048, 2048, 2048, 2048, 2048, 2048, 2048, 2048, 2048, 2048, 2048, 2048, 2048, 2048,
-      2048, 2048, 2048, 2048 },
+    { joint = 'head_pan',    bus = 1, id = 19, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
+    { joint = 'head_tilt',   bus = 1, id = 20, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
+    { joint = 'l_sho_pitch', bus = 1, id =  2, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
+    { joint = 'l_sho_roll',  bus = 1, id =  4, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
+    { joint = 'l_el',        bus = 1, id =  6, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
+    { joint = 'l_hip_yaw',   bus = 1, id =  8, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
+    { joint = 'l_hip_roll',  bus = 1, id = 10, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
+    { joint = 'l_hip_pitch', bus = 1, id = 12, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
+    { joint = 'l_knee',      bus = 1, id = 14, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
+    { joint = 'l_ank_pitch', bus = 1, id = 16, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
+    { joint = 'l_ank_roll',  bus = 1, id = 18, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
+    { joint = 'r_hip_yaw',   bus = 1, id =  7, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
+    { joint = 'r_hip_roll',  bus = 1, id =  9, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
+    { joint = 'r_hip_pitch', bus = 1, id = 11, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
+    { joint = 'r_knee',      bus = 1, id = 13, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
+    { joint = 'r_ank_pitch', bus = 1, id = 15, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
+    { joint = 'r_ank_roll',  bus = 1, id = 17, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
+    { joint = 'r_sho_pitch', bus = 1, id =  1, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
+    { joint = 'r_sho_roll',  bus = 1, id =  3, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
+    { joint = 'r_el',        bus = 1, id =  5, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
+    { board = 'CM-730', bus = 1, id = 200, protocol = 1,
+      gyro_axes = { '-x', '-y', 'z' }, accel_axes = { 'y', '-x', 'z' } },
   },
   -- the DCM's control period, s (125 Hz)
   period = 0.008,

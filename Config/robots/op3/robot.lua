@@ -40,17 +40,38 @@ return {
     r_hip_yaw = { -1.2, 1.2 }, r_hip_roll = { -0.8, 0.8 }, r_hip_pitch = { -2.0, 2.0 },
     r_knee = { -2.6, 2.6 }, r_ank_pitch = { -1.4, 1.4 }, r_ank_roll = { -0.8, 0.8 },
   },
-  -- the Dynamixel bus on the OP platform (Platforms/OP): ROBOTIS numbering, odd = right side,
-  -- even = left side, 19/20 = head; ids in joint order
+  -- the Dynamixel bus on the OP platform (Platforms/OP), in the form of ROBOTIS' .robot files
+  -- (op3_manager/config/OP3.robot): the buses (port, baud rate; `--port` overrides bus 1's), then one
+  -- row per servo (the joint it drives) or board (IMU, buttons), in any order. ROBOTIS numbering:
+  -- odd = right side, even = left side, 19/20 = head. direction +1 and zero 2048 everywhere: the
+  -- URDF's axes are the servos' own:  angle (rad) = direction * (count - zero) * 2*pi / 4096.
+  -- The OpenCR's IMU axes are taken as the torso's (no reference data on its mounting yet).
+  buses = {
+    { port = '/dev/ttyUSB0', baud = 1000000 },   -- the OpenCR (USB CDC)
+  },
   devices = {
-    protocol = 2,             -- Dynamixel protocol 2.0
-    servo = 'XM430',
-    board = 'OpenCR',
-    board_id = 200,
-    ids = { 19, 20, 2, 4, 6, 8, 10, 12, 14, 16, 18, 7, 9, 11, 13, 15, 17, 1, 3, 5 },
-    direction = { 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1 },
-    zero = { 2048, 2048, 2048, 2048, 2048, 2048, 2048, 2048, 2048, 2048, 2048, 2048, 2048, 2048, 2048, 2048,
-      2048, 2048, 2048, 2048 },
+    { joint = 'head_pan',    bus = 1, id = 19, model = 'XM430-W350', protocol = 2, direction = 1, zero = 2048 },
+    { joint = 'head_tilt',   bus = 1, id = 20, model = 'XM430-W350', protocol = 2, direction = 1, zero = 2048 },
+    { joint = 'l_sho_pitch', bus = 1, id =  2, model = 'XM430-W350', protocol = 2, direction = 1, zero = 2048 },
+    { joint = 'l_sho_roll',  bus = 1, id =  4, model = 'XM430-W350', protocol = 2, direction = 1, zero = 2048 },
+    { joint = 'l_el',        bus = 1, id =  6, model = 'XM430-W350', protocol = 2, direction = 1, zero = 2048 },
+    { joint = 'l_hip_yaw',   bus = 1, id =  8, model = 'XM430-W350', protocol = 2, direction = 1, zero = 2048 },
+    { joint = 'l_hip_roll',  bus = 1, id = 10, model = 'XM430-W350', protocol = 2, direction = 1, zero = 2048 },
+    { joint = 'l_hip_pitch', bus = 1, id = 12, model = 'XM430-W350', protocol = 2, direction = 1, zero = 2048 },
+    { joint = 'l_knee',      bus = 1, id = 14, model = 'XM430-W350', protocol = 2, direction = 1, zero = 2048 },
+    { joint = 'l_ank_pitch', bus = 1, id = 16, model = 'XM430-W350', protocol = 2, direction = 1, zero = 2048 },
+    { joint = 'l_ank_roll',  bus = 1, id = 18, model = 'XM430-W350', protocol = 2, direction = 1, zero = 2048 },
+    { joint = 'r_hip_yaw',   bus = 1, id =  7, model = 'XM430-W350', protocol = 2, direction = 1, zero = 2048 },
+    { joint = 'r_hip_roll',  bus = 1, id =  9, model = 'XM430-W350', protocol = 2, direction = 1, zero = 2048 },
+    { joint = 'r_hip_pitch', bus = 1, id = 11, model = 'XM430-W350', protocol = 2, direction = 1, zero = 2048 },
+    { joint = 'r_knee',      bus = 1, id = 13, model = 'XM430-W350', protocol = 2, direction = 1, zero = 2048 },
+    { joint = 'r_ank_pitch', bus = 1, id = 15, model = 'XM430-W350', protocol = 2, direction = 1, zero = 2048 },
+    { joint = 'r_ank_roll',  bus = 1, id = 17, model = 'XM430-W350', protocol = 2, direction = 1, zero = 2048 },
+    { joint = 'r_sho_pitch', bus = 1, id =  1, model = 'XM430-W350', protocol = 2, direction = 1, zero = 2048 },
+    { joint = 'r_sho_roll',  bus = 1, id =  3, model = 'XM430-W350', protocol = 2, direction = 1, zero = 2048 },
+    { joint = 'r_el',        bus = 1, id =  5, model = 'XM430-W350', protocol = 2, direction = 1, zero = 2048 },
+    { board = 'OpenCR', bus = 1, id = 200, protocol = 2,
+      gyro_axes = { 'x', 'y', 'z' }, accel_axes = { 'x', 'y', 'z' } },
   },
   -- the DCM's control period, s
   period = 0.008,

@@ -1,0 +1,260 @@
+/* dcm: the library every DCM is built on (Platforms/Sim, Platforms/OP, later Hubo).
+ *
+ * A DCM is a driver -- a table of functions in the lifecycle of ros2_control's hardware
+ * interfaces: configure (parse config, no I/O), open (communication), enable (power, hold the
+ * present pose), then write / read every cycle -- run by dcm_main, which does the rest the same way
+ * for every platform:
+ *   config    one strict reader: an embedded LuaJIT runs Lib/Config.lua's
+ *             Config.export(concern, { robot =, platform = }); errors name the file(s) and the key
+ *   blocks    dcm.sensor, dcm.actuator, dcm.stats and sync of every robot, bound through the structs
+ *             generated from Config/shm.schema at build time (dcm_blocks.h): no field lists by hand
+ *   pacing    absolute deadlines, missed cycles, jitter p99 / max and the rate, into dcm.stats
+ *   guard     NaN / inf commands refused (counted), hardness clamped to 0..1; the watchdog: when
+ *             tick_ack stops advancing or its writer dies, hold the present pose at the safe
+ *             hardness until acknowledgements return
+ *   lockstep  the DCM side of the sync block (Lib/lockstep.lua is the participants' side)
+ *
+ * Errors: functions return 0 (or a count) on success and a negative errno code on failure with a
+ * message in the caller's buffer. Nothing here calls exit(): a DCM must never die with the motors
+ * on. No hidden state except the signal flag of dcm_main.
+ */
+#ifndef HRP_DCM_H
+#define HRP_DCM_H
+
+#include <signal.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include "dcm_blocks.h"   /* generated from Config/shm.schema */
+#include "shm/shm.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define DCM_NJ_MAX 64        /* joints of one robot */
+#define DCM_ROBOTS_MAX 16    /* robots served by one DCM (the sim's world) */
+#define DCM_NAME_MAX 64      /* names in config (joints, models, robots) */
+#define DCM_JITTER_MAX 4096  /* cycles of one statistics window */
+
+/* ---------------------------------------------------------------- config */
+
+typedef struct dcm_config dcm_config;   /* one concern, merged over its layers */
+
+/* Loads `concern` ("robot", "dcm", "sim" ...) through $HRP_ROOT/Lib/Config.lua for robot and
+ * platform (NULL: $ROBOT and $PLATFORM, defaulted as Config.lua does). */
+int dcm_config_load(const char *concern, const char *robot, const char *platform, dcm_config **out, char *err,
+                    size_t errlen);
+void dcm_config_free(dcm_config *c);
+/* The layer files the concern came from ("Config/robots/op3/robot.lua"; several joined by " + "). */
+const char *dcm_config_files(const dcm_config *c);
+/* The robot and platform it was loaded for. */
+const char *dcm_config_robot(const dcm_config *c);
+const char *dcm_config_platform(const dcm_config *c);
+/* The project's root: $HRP_ROOT, else the source tree the library was built from. */
+const char *dcm_root(void);
+
+/* Keys are dotted paths; a number indexes a list from 1: "devices.3.model" (messages print it as
+ * devices[3].model). Every getter fails with the files and the key named when the key is missing
+ * or of another type. */
+int dcm_config_has(const dcm_config *c, const char *key);
+int dcm_config_num(const dcm_config *c, const char *key, double *out, char *err, size_t errlen);
+/* A number that must be an integer. */
+int dcm_config_int(const dcm_config *c, const char *key, int *out, char *err, size_t errlen);
+int dcm_config_bool(const dcm_config *c, const char *key, int *out, char *err, size_t errlen);
+int dcm_config_str(const dcm_config *c, const char *key, char *out, size_t outlen, char *err, size_t errlen);
+/* Optional keys: *out = dflt when absent (a present key of another type is still an error). */
+int dcm_config_num_or(const dcm_config *c, const char *key, double dflt, double *out, char *err, size_t errlen);
+int dcm_config_str_or(const dcm_config *c, const char *key, const char *dflt, char *out, size_t outlen, char *err,
+                      size_t errlen);
+/* Entries of the list at key (the rows of a table such as devices); an error if not a list. */
+int dcm_config_len(const dcm_config *c, const char *key, char *err, size_t errlen);
+/* A list of min..max numbers / strings into out; returns how many. */
+int dcm_config_nums(const dcm_config *c, const char *key, double *out, int min, int max, char *err, size_t errlen);
+int dcm_config_strs(const dcm_config *c, const char *key, char (*out)[DCM_NAME_MAX], int min, int max, char *err,
+                    size_t errlen);
+/* Writes "<files>: <message>" into err (for checks of the caller's own); returns -EINVAL. */
+int dcm_config_fail(const dcm_config *c, char *err, size_t errlen, const char *fmt, ...)
+    __attribute__((format(printf, 4, 5)));
+
+/* ---------------------------------------------------------------- blocks */
+
+/* Opens (creating it if needed) block `block` of robot_id and binds a generated struct:
+ *   dcm_blk_dcm_sensor s;  dcm_blocks_open(schema, id, DCM_BLK_dcm_sensor(&s), err, sizeof err);
+ * then s.position[j], s.n.position. Fails naming the block and the field on a mismatch. */
+int dcm_blocks_open(const shm_schema *schema, int robot_id, const char *block, const dcm_blk_field *fields,
+                    int nfields, void *out, shm_block **blk, char *err, size_t errlen);
+/* Binds a block that is already open. */
+int dcm_blocks_bind(shm_block *b, const char *block, const dcm_blk_field *fields, int nfields, void *out,
+                    shm_block **blk, char *err, size_t errlen);
+
+/* ---------------------------------------------------------------- pacing */
+
+/* A clock: monotonic seconds, and a sleep to an absolute time (tests give a fake one). */
+typedef struct dcm_clock {
+  double (*now)(void *ctx);
+  void (*sleep_until)(void *ctx, double t);
+  void *ctx;
+} dcm_clock;
+
+/* CLOCK_MONOTONIC; a sleep ends early once *stop (a signal's flag, may be NULL) is set. */
+dcm_clock dcm_clock_wall(volatile sig_atomic_t *stop);
+
+typedef struct dcm_pacer {
+  dcm_clock clock;
+  double period;                 /* s */
+  double window;                 /* s of the clock per statistics window (1) */
+  double deadline;               /* s, start of the current cycle as planned */
+  uint32_t cycles, missed;       /* cycles run; cycles lost to overruns (skipped, not raced) */
+  double rate;                   /* Hz over the last window */
+  double jitter_p99, jitter_max; /* s, |start - deadline| over the last window */
+  int closed;                    /* 1 in the cycle that closed a window */
+  uint32_t window_cycles;        /* cycles of the window just closed */
+  /* private */
+  double win_start;
+  uint32_t win_cycles;
+  int njit;
+  double jit[DCM_JITTER_MAX];
+} dcm_pacer;
+
+void dcm_pacer_init(dcm_pacer *p, double period, dcm_clock clock);
+/* Sleeps until the next deadline; returns the clock time. An overrun longer than a period counts
+ * the lost cycles as missed and restarts the deadlines from now. */
+double dcm_pacer_wait(dcm_pacer *p);
+/* A cycle paced by someone else (lockstep): counted for the rate, no deadline, no jitter. */
+double dcm_pacer_count(dcm_pacer *p);
+
+/* ---------------------------------------------------------------- guard */
+
+/* One cycle's commands of a robot. */
+typedef struct dcm_command {
+  double position[DCM_NJ_MAX];   /* rad */
+  double hardness[DCM_NJ_MAX];   /* 0..1, fraction of the servo's torque */
+  int32_t enable[DCM_NJ_MAX];    /* 0 / 1 */
+  uint32_t tick_ack;             /* last sensor tick the motion process acted on */
+  uint32_t writer_pid;
+} dcm_command;
+
+typedef struct dcm_guard {
+  int nj;
+  double timeout;                /* s of the robot clock without a new tick_ack (<= 0: no watchdog) */
+  double safe_hardness;          /* 0..1, held in the safe state */
+  int safe;                      /* 1 while holding the safe pose */
+  uint32_t trips, refused;       /* watchdog trips; NaN / inf values refused */
+  /* private */
+  uint32_t last_ack;
+  double ack_time;
+  int armed;                     /* a nonzero tick_ack was seen: somebody drives the robot */
+  double last_pos[DCM_NJ_MAX], last_hard[DCM_NJ_MAX], hold[DCM_NJ_MAX];
+} dcm_guard;
+
+/* present: the pose held until the first commands (nj rad). */
+void dcm_guard_init(dcm_guard *g, int nj, double timeout, double safe_hardness, const double *present,
+                    uint32_t tick_ack);
+/* Copies a robot's commands out of dcm.actuator (a torn read is retried). */
+void dcm_command_read(const dcm_blk_dcm_actuator *a, int nj, dcm_command *out);
+/* Checks commands in place at robot time `now`: NaN / inf -> the last good value (counted),
+ * hardness clamped; on a watchdog trip holds `present` (the sensed pose, rad) at the safe
+ * hardness until tick_ack moves again. Returns 1 while in the safe state. */
+int dcm_guard_apply(dcm_guard *g, double now, const double *present, dcm_command *c);
+
+/* ---------------------------------------------------------------- lockstep */
+
+typedef struct dcm_lockstep {
+  int n;                                /* robots, each with its sync block */
+  dcm_blk_sync *sync[DCM_ROBOTS_MAX];
+  double spin;                          /* s of polling before sleeping on the futex */
+  double drop_after;                    /* s of waiting before dead participants are dropped */
+  uint32_t dropped;                     /* participants dropped because they died */
+} dcm_lockstep;
+
+/* Lockstep on: participants registered with an earlier DCM are consulted from `tick` on. */
+void dcm_lockstep_start(dcm_lockstep *l, uint32_t tick);
+/* Tick `tick` is published (dcm.sensor written): participants may work on it. */
+void dcm_lockstep_publish(dcm_lockstep *l, uint32_t tick);
+/* Waits until every live participant whose wake_tick <= tick reports done_tick >= tick; while
+ * nobody has joined at all, holds the clock. idle(ctx, alone) runs while waiting. Returns 0, or 1
+ * when *stop was set. */
+int dcm_lockstep_wait(dcm_lockstep *l, uint32_t tick, void (*idle)(void *ctx, int alone), void *ctx,
+                      volatile sig_atomic_t *stop);
+/* Lockstep off (also for a real-time DCM at start, so no participant waits for it). */
+void dcm_lockstep_end(dcm_lockstep *l);
+
+/* ---------------------------------------------------------------- lifecycle */
+
+/* One robot served by the DCM. */
+typedef struct dcm_robot {
+  int id;                         /* ROBOT_ID of its blocks */
+  int nj;                         /* its joints: the first nj entries of every joint array */
+  char name[DCM_NAME_MAX];        /* its body (ROBOT) */
+  dcm_blk_dcm_sensor sensor;
+  dcm_blk_dcm_actuator actuator;
+  dcm_blk_dcm_stats stats;
+  dcm_blk_sync sync;
+  dcm_guard guard;
+  dcm_command cmd;                /* this cycle's commands, after the guard */
+} dcm_robot;
+
+typedef struct dcm {
+  const char *name;               /* program name, prefix of messages */
+  /* filled by the driver's configure */
+  int nrobots;
+  dcm_robot robot[DCM_ROBOTS_MAX];
+  double period;                  /* s, control period */
+  double watchdog;                /* s without a new tick_ack before the safe state (<= 0: none) */
+  double safe_hardness;           /* 0..1 */
+  double start_hardness;          /* 0..1, given to a blank actuator block at start */
+  int simulated;                  /* 1: the robot clock is tick * period (simulation) */
+  /* options (command line) */
+  int lockstep;                   /* wait each tick for the sync participants */
+  long max_cycles;                /* stop after this many cycles (< 0: run until a signal) */
+  int quiet;
+  /* state, read by drivers */
+  uint32_t tick;                  /* last published tick */
+  double time;                    /* s, robot clock of the last published tick */
+  double now;                     /* s, wall clock at the start of this cycle */
+  dcm_pacer pacer;
+  dcm_lockstep sync;
+  shm_schema *schema;
+  volatile sig_atomic_t *stop;    /* set by SIGINT / SIGTERM or dcm_stop */
+  /* private */
+  double t0, time0;
+} dcm;
+
+typedef struct dcm_driver {
+  /* Parses config into hw and fills nrobots, robot[].id / nj / name, period, watchdog,
+   * safe_hardness, start_hardness, simulated. No I/O. */
+  int (*configure)(void *hw, dcm *d, char *err, size_t errlen);
+  /* Opens communication. -EAGAIN: not there yet, retried every 0.5 s until it works. */
+  int (*open)(void *hw, dcm *d, char *err, size_t errlen);
+  /* Powers on and holds; afterwards publish gives the present pose. */
+  int (*enable)(void *hw, dcm *d, char *err, size_t errlen);
+  /* This cycle's commands (robot[r].cmd, checked by the guard) to the hardware. */
+  void (*write)(void *hw, dcm *d);
+  /* The hardware's state into the driver (the sim steps its world here). */
+  void (*read)(void *hw, dcm *d);
+  /* Robot r's sensors into dcm.sensor, inside its write lock (time, tick, period, dcm_pid are set). */
+  void (*publish)(void *hw, dcm *d, int r, const dcm_blk_dcm_sensor *s);
+  /* Optional: the platform's figures into dcm.stats, inside its write lock. */
+  void (*stats)(void *hw, dcm *d, int r, const dcm_blk_dcm_stats *s);
+  /* Optional: runs while lockstep waits for participants (alone: nobody has joined yet). */
+  void (*idle)(void *hw, dcm *d, int alone);
+  /* Optional: the tick is published; runs before the wait for the next cycle. */
+  void (*published)(void *hw, dcm *d);
+  /* Optional: last call (the servos keep holding where they are). */
+  void (*close)(void *hw, dcm *d);
+} dcm_driver;
+
+/* Runs a DCM: configure, blocks, open (retried), enable, then cycles until a signal, dcm_stop or
+ * max_cycles. Returns 0, -EINVAL for bad configuration (the message names file and key), or
+ * another negative code. */
+int dcm_main(dcm *d, const dcm_driver *drv, void *hw, char *err, size_t errlen);
+/* Asks dcm_main to finish the current cycle and return. */
+void dcm_stop(dcm *d);
+/* "<name>: message" on stderr, unless quiet. */
+void dcm_log(const dcm *d, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+
+#ifdef __cplusplus
+}
+#endif
+#endif

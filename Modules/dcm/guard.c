@@ -1,0 +1,70 @@
+/* guard: what stands between the actuator block and the servos -- NaN / inf refused, hardness
+ * clamped, and the watchdog with its safe pose. */
+#include "dcm.h"
+
+#include <math.h>
+#include <string.h>
+
+void dcm_guard_init(dcm_guard *g, int nj, double timeout, double safe_hardness, const double *present,
+                    uint32_t tick_ack) {
+  memset(g, 0, sizeof *g);
+  g->nj = nj;
+  g->timeout = timeout;
+  g->safe_hardness = safe_hardness < 0 ? 0 : safe_hardness > 1 ? 1 : safe_hardness;
+  /* an acknowledgement left from before this DCM started does not arm the watchdog: the next
+   * new one does */
+  g->last_ack = tick_ack;
+  for (int j = 0; j < nj; j++) {
+    g->last_pos[j] = present[j];
+    g->last_hard[j] = 0;
+  }
+}
+
+void dcm_command_read(const dcm_blk_dcm_actuator *a, int nj, dcm_command *out) {
+  const size_t nd = sizeof(double) * (size_t)nj, ni = sizeof(int32_t) * (size_t)nj;
+  uint32_t seq;
+  do {
+    seq = shm_read_begin(a->blk);
+    memcpy(out->position, a->command, nd);
+    memcpy(out->hardness, a->hardness, nd);
+    memcpy(out->enable, a->torque_enable, ni);
+    out->tick_ack = *(volatile uint32_t *)a->tick_ack;
+    out->writer_pid = *(volatile uint32_t *)a->writer_pid;
+  } while (shm_read_retry(a->blk, seq));
+}
+
+int dcm_guard_apply(dcm_guard *g, double now, const double *present, dcm_command *c) {
+  for (int j = 0; j < g->nj; j++) {
+    if (!isfinite(c->position[j])) {
+      g->refused++;
+      c->position[j] = g->last_pos[j];
+    }
+    if (!isfinite(c->hardness[j])) {
+      g->refused++;
+      c->hardness[j] = g->last_hard[j];
+    }
+    c->hardness[j] = c->hardness[j] < 0 ? 0 : c->hardness[j] > 1 ? 1 : c->hardness[j];
+    c->enable[j] = c->enable[j] ? 1 : 0;
+    g->last_pos[j] = c->position[j];
+    g->last_hard[j] = c->hardness[j];
+  }
+  if (c->tick_ack != g->last_ack) {
+    g->last_ack = c->tick_ack;
+    g->ack_time = now;
+    if (c->tick_ack) g->armed = 1;
+    g->safe = 0;   /* motion answers (again): its commands go through */
+  }
+  if (g->timeout > 0 && g->armed && !g->safe &&
+      (now - g->ack_time > g->timeout || (c->writer_pid && !shm_pid_alive((int)c->writer_pid)))) {
+    g->safe = 1;
+    g->trips++;
+    memcpy(g->hold, present, sizeof(double) * (size_t)g->nj);
+  }
+  if (g->safe) {
+    for (int j = 0; j < g->nj; j++) {
+      c->position[j] = g->hold[j];
+      if (c->hardness[j] > g->safe_hardness) c->hardness[j] = g->safe_hardness;
+    }
+  }
+  return g->safe;
+}

@@ -1,0 +1,92 @@
+/* lockstep: the DCM side of the sync block. Participants (Lib/lockstep.lua) claim a slot with their
+ * pid; the DCM publishes tick N and waits until every live participant whose wake_tick <= N
+ * reports done_tick >= N. Participants that died without leaving are dropped. */
+#include "dcm.h"
+
+#define LOAD32(p) __atomic_load_n((p), __ATOMIC_ACQUIRE)
+
+void dcm_lockstep_start(dcm_lockstep *l, uint32_t tick) {
+  for (int r = 0; r < l->n; r++) {
+    dcm_blk_sync *y = l->sync[r];
+    /* a participant registered with an earlier DCM: consult it from the first tick on */
+    for (int k = 0; k < y->n.pid; k++)
+      if (y->pid[k] != 0 && y->wake_tick[k] != 0xffffffffu && y->wake_tick[k] > tick) y->wake_tick[k] = tick;
+    *y->lockstep = 1;
+  }
+}
+
+void dcm_lockstep_end(dcm_lockstep *l) {
+  for (int r = 0; r < l->n; r++) {
+    *l->sync[r]->lockstep = 0;
+    shm_futex_wake(l->sync[r]->tick);
+  }
+}
+
+void dcm_lockstep_publish(dcm_lockstep *l, uint32_t tick) {
+  for (int r = 0; r < l->n; r++) {
+    shm_store_release_u32(l->sync[r]->tick, tick);
+    shm_futex_wake(l->sync[r]->tick);
+  }
+}
+
+/* 1 if anybody (alive) has a slot on any robot. */
+static int anybody(const dcm_lockstep *l, uint32_t tick) {
+  for (int r = 0; r < l->n; r++) {
+    const dcm_blk_sync *y = l->sync[r];
+    for (int k = 0; k < y->n.pid; k++) {
+      const int pid = LOAD32(&y->pid[k]);
+      /* one that answered the last tick needs no system call to prove it is alive */
+      if (pid != 0 && (LOAD32(&y->done_tick[k]) + 1 >= tick || shm_pid_alive(pid))) return 1;
+    }
+  }
+  return 0;
+}
+
+/* Slot of a participant robot r still waits for at `tick`, or -1. */
+static int pending(const dcm_blk_sync *y, uint32_t tick) {
+  for (int k = 0; k < y->n.pid; k++) {
+    if (LOAD32(&y->pid[k]) == 0) continue;
+    if (LOAD32(&y->wake_tick[k]) > tick) continue;
+    if (LOAD32(&y->done_tick[k]) >= tick) continue;
+    return k;
+  }
+  return -1;
+}
+
+int dcm_lockstep_wait(dcm_lockstep *l, uint32_t tick, void (*idle)(void *ctx, int alone), void *ctx,
+                      volatile sig_atomic_t *stop) {
+  /* nobody anywhere: hold the clock until one joins (a run starts on a defined tick and burns no
+   * CPU meanwhile) */
+  while (!anybody(l, tick)) {
+    if (stop && *stop) return 1;
+    if (idle) idle(ctx, 1);
+    shm_futex_wait(l->sync[0]->done_count, shm_load_acquire_u32(l->sync[0]->done_count), 0.02);
+  }
+  for (int r = 0; r < l->n; r++) {
+    dcm_blk_sync *y = l->sync[r];
+    double since = shm_now();
+    for (;;) {
+      if (stop && *stop) return 1;
+      if (idle) idle(ctx, 0);
+      const uint32_t c = shm_load_acquire_u32(y->done_count);
+      if (pending(y, tick) < 0) break;
+      if (shm_now() - since > l->drop_after) {
+        for (int k = 0; k < y->n.pid; k++) {
+          const int pid = y->pid[k];
+          if (pid != 0 && !shm_pid_alive(pid) && shm_cas_i32(&y->pid[k], pid, 0)) l->dropped++;
+        }
+        since = shm_now();
+      }
+      /* participants usually answer within tens of microseconds: polling a little before sleeping
+       * saves the DCM's own wake-up latency on every tick */
+      const double spin_until = shm_now() + l->spin;
+      while (shm_load_acquire_u32(y->done_count) == c && shm_now() < spin_until) {
+#if defined(__x86_64__) || defined(__i386__)
+        for (int k = 0; k < 64; k++) __builtin_ia32_pause();
+#endif
+      }
+      if (shm_load_acquire_u32(y->done_count) == c) shm_futex_wait(y->done_count, c, 0.05);
+    }
+  }
+  return 0;
+}
