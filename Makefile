@@ -18,6 +18,8 @@ all: $(DEPS_STAMP) $(NATIVE_DIRS)
 $(filter-out Modules/shm/,$(NATIVE_DIRS)): Modules/shm/
 $(filter Platforms/%,$(NATIVE_DIRS)): Modules/dcm/
 Platforms/OP/: Modules/dynamixel/
+# the robot description parser: linked by the kinematics and the sim
+Modules/kinematics/ Platforms/Sim/: Modules/description/
 
 $(NATIVE_DIRS): $(DEPS_STAMP)
 	@$(MAKE) --no-print-directory -C $@ all

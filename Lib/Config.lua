@@ -6,6 +6,9 @@
 --   Config/platforms/<PLATFORM>/<ROBOT>/<concern>.lua   a platform's setting for one body (rare)
 --   $HRP_SITE/<concern>.lua (default Config/site)  the venue: team and player number, colour table
 --
+-- A body whose robot.lua names a `base` body (a variant, a test body) takes every other concern
+-- from the base's folder first, then its own file over it.
+--
 --   local Config = require('Config')
 --   local walk = Config.load('walk', { tStep = 'number', stepLimitX = 'table' })
 --   local other = Config.load('robot', nil, { robot = 'darwin' })
@@ -21,10 +24,11 @@ local native = require('native')
 local M = {}
 
 local cache = {}
+local bases = {} -- robot -> its base body's name, or false
 local root -- nil: the project's root
 
 -- Reads configs from another tree (tests); nil restores the project's root.
-function M.use_root(dir) root = dir cache = {} end
+function M.use_root(dir) root = dir cache = {} bases = {} end
 local function config_root() return root or native.root() end
 
 local function env(name, default)
@@ -72,18 +76,55 @@ local function resolve(opts)
 end
 
 -- The layers of a concern: { { abs = path, file = shown name, default = bool }, ... }
+-- The body a robot's robot.lua names as its `base` (nil: none): a variant of a body takes every
+-- concern but robot.lua (and keyframes) from its base unless it has its own file.
+local function base_of(robot)
+  local b = bases[robot]
+  if b == nil then
+    b = false
+    local path = M.robot_dir(robot) .. '/robot.lua'
+    local chunk = loadfile(path)
+    local ok, t = false, nil
+    if chunk then ok, t = pcall(chunk) end
+    if ok and type(t) == 'table' and rawget(t, 'base') ~= nil then
+      b = rawget(t, 'base')
+      if type(b) ~= 'string' or not is_dir(M.robot_dir(b)) then
+        error(string.format("%s/robot.lua: key 'base' must name a body in Config/robots, got %s", robot_rel(robot),
+          tostring(b)), 0)
+      end
+    end
+    bases[robot] = b
+  end
+  return b or nil
+end
+
+-- The folders of a body, its own first, then its base's (and theirs): Config/robots/<name> each.
+function M.robot_chain(robot)
+  local chain, seen = {}, {}
+  robot = robot or M.robot()
+  while robot and not seen[robot] do
+    chain[#chain + 1] = robot
+    seen[robot] = true
+    robot = base_of(robot)
+  end
+  return chain
+end
+
 local function layers(concern, robot, platform)
   local site_abs, site_shown = site_dir()
   local r = config_root() .. '/'
   local name = concern .. '.lua'
-  return {
-    { abs = r .. 'Config/common/' .. name, file = 'Config/common/' .. name, default = true },
-    { abs = r .. robot_rel(robot) .. '/' .. name, file = robot_rel(robot) .. '/' .. name, default = true },
-    { abs = r .. platform_rel(platform) .. '/' .. name, file = platform_rel(platform) .. '/' .. name },
-    { abs = r .. platform_rel(platform) .. '/' .. robot .. '/' .. name,
-      file = platform_rel(platform) .. '/' .. robot .. '/' .. name },
-    { abs = site_abs .. '/' .. name, file = site_shown .. '/' .. name },
-  }
+  local ls = { { abs = r .. 'Config/common/' .. name, file = 'Config/common/' .. name, default = true } }
+  local chain = concern == 'robot' and { robot } or M.robot_chain(robot)
+  for k = #chain, 1, -1 do
+    local rel = robot_rel(chain[k]) .. '/' .. name
+    ls[#ls + 1] = { abs = r .. rel, file = rel, default = true }
+  end
+  ls[#ls + 1] = { abs = r .. platform_rel(platform) .. '/' .. name, file = platform_rel(platform) .. '/' .. name }
+  ls[#ls + 1] = { abs = r .. platform_rel(platform) .. '/' .. robot .. '/' .. name,
+    file = platform_rel(platform) .. '/' .. robot .. '/' .. name }
+  ls[#ls + 1] = { abs = site_abs .. '/' .. name, file = site_shown .. '/' .. name }
+  return ls
 end
 
 local function exists(path)
@@ -230,6 +271,6 @@ function M.optional(tbl, key, default)
 end
 
 -- Forget cached files (tests; re-reading a file edited at run time).
-function M.reload() cache = {} end
+function M.reload() cache = {} bases = {} end
 
 return M

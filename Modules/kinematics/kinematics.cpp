@@ -1,12 +1,15 @@
-// kinematics: forward kinematics (product of exponentials of the zero-pose joint axes),
-// analytic 6-joint leg IK, arm and head IK, centre of mass. See kinematics.h.
+// kinematics: forward kinematics (product of exponentials of the zero-pose joint axes) over a
+// joint tree in any order, analytic 6-joint leg IK, damped least squares arm IK of any length,
+// head look-at, centre of mass. See kinematics.h; kin_load.cpp reads a URDF into a kin_desc.
 #include "kinematics/kinematics.h"
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
 #include <new>
+#include <string>
 #include <vector>
 
 using Eigen::Matrix3d;
@@ -22,38 +25,43 @@ struct Joint {
   double mass, qmin, qmax;
 };
 
+// A pose as a rigid displacement from the zero pose: a reference-frame point x0 goes to R x0 + p.
+struct Pose {
+  Matrix3d R;
+  Vector3d p;
+};
+
+// A chain and its tip frame (zero pose, reference frame).
+struct Chain {
+  bool present = false;
+  std::vector<int> idx;
+  int base = -1;            // parent joint of the first joint (-1: the torso)
+  Vector3d tip = Vector3d::Zero();
+  Matrix3d tip_rot = Matrix3d::Identity();
+};
+
 // Per leg: what the analytic solver needs, in the reference frame.
 struct Leg {
-  int idx[6];
   double sign[6];    // joint angle = sign * canonical angle (about +z, +x, +y, +y, +y, +x)
   Vector3d yaw_pt;   // a point on the hip yaw axis (z of no importance)
   Vector3d hip0;     // hip centre: hip roll and pitch axes meet here
   Vector3d ankle0;   // ankle centre: ankle pitch and roll axes meet here
-  Vector3d sole0;    // foot-frame origin
   double tx, tz;     // hip -> knee axis, xz plane
   double sx, sz;     // knee axis -> ankle, xz plane
   double lt2, ls2, lts, phi;  // |t|^2, |s|^2, |t||s|, knee angle of the straight leg
   bool yaw_offset;   // hip yaw axis misses the hip centre
 };
 
-struct Pose {
-  Matrix3d R;
-  Vector3d p;
-};
-
 }  // namespace
 
 struct kin_model {
   std::vector<Joint> joints;
+  std::vector<int> order;    // joints with parents first
   double torso_mass, total_mass;
   Vector3d torso_com, origin;
-  Leg leg[2];
-  int arm[2][3];
-  Vector3d hand[2];
-  int head[2];
+  Chain leg[2], arm[2], head;
+  Leg legs[2];
   double head_sign[2];
-  bool head_ok;
-  Vector3d camera;
 };
 
 namespace {
@@ -68,9 +76,7 @@ void set_err(char *err, size_t errlen, const char *fmt, ...) {
 
 inline bool finite3(const Vector3d &v) { return std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z()); }
 
-inline Matrix3d rot_axis(const Vector3d &w, double q) {
-  return Eigen::AngleAxisd(q, w).toRotationMatrix();
-}
+inline Matrix3d rot_axis(const Vector3d &w, double q) { return Eigen::AngleAxisd(q, w).toRotationMatrix(); }
 
 inline Matrix3d rz(double a) { return rot_axis(Vector3d::UnitZ(), a); }
 inline Matrix3d ry(double a) { return rot_axis(Vector3d::UnitY(), a); }
@@ -99,13 +105,15 @@ inline double clean(double v, int *flags) {
 
 inline double clamp(double v, double lo, double hi) { return v < lo ? lo : (v > hi ? hi : v); }
 
-// Pose of a chain of joints given as indices ending at `last`, walking parents up to the torso.
-// T_j = T_parent * exp(xi_j q_j); a point x0 of link j at the zero pose goes to R x0 + p.
+const Pose kIdentity{Matrix3d::Identity(), Vector3d::Zero()};
+
+// Displacement of joint `last`'s link for all angles qfull, walking parents up to the torso:
+// T_j = T_parent * exp(xi_j q_j). last = -1: the torso (identity).
 Pose chain_pose(const kin_model *m, int last, const double *qfull, int *flags) {
-  int path[64];
+  int path[KIN_MAXJ];
   int n = 0;
-  for (int j = last; j >= 0 && n < 64; j = m->joints[j].parent) path[n++] = j;
-  Pose T{Matrix3d::Identity(), Vector3d::Zero()};
+  for (int j = last; j >= 0 && n < KIN_MAXJ; j = m->joints[j].parent) path[n++] = j;
+  Pose T = kIdentity;
   for (int k = n - 1; k >= 0; k--) {
     const Joint &J = m->joints[path[k]];
     Matrix3d E = rot_axis(J.axis, clean(qfull[path[k]], flags));
@@ -116,27 +124,32 @@ Pose chain_pose(const kin_model *m, int last, const double *qfull, int *flags) {
   return T;
 }
 
-// Every joint's link pose (rotation and the displacement of reference points) for all angles q;
-// parents come before their children in the joint list.
+// Every joint's link displacement for all angles q, parents first.
 std::vector<Pose> all_poses(const kin_model *m, const double *q, int *flags) {
-  const int n = (int)m->joints.size();
-  std::vector<Pose> T(n);
-  for (int j = 0; j < n; j++) {
+  std::vector<Pose> T(m->joints.size());
+  for (int j : m->order) {
     const Joint &J = m->joints[j];
     Matrix3d E = rot_axis(J.axis, clean(q[j], flags));
     Vector3d e = J.anchor - E * J.anchor;
-    Pose P = J.parent < 0 ? Pose{Matrix3d::Identity(), Vector3d::Zero()} : T[J.parent];
+    const Pose &P = J.parent < 0 ? kIdentity : T[J.parent];
     T[j].p = P.R * e + P.p;
     T[j].R = P.R * E;
   }
   return T;
 }
 
-// Same as chain_pose for a limb given by its own angles (limb order) instead of all joints.
-Pose limb_pose(const kin_model *m, const int *idx, int n, const double *qlimb, int *flags) {
-  double qfull[64] = {0};
-  for (int k = 0; k < n; k++) qfull[idx[k]] = qlimb[k];
-  return chain_pose(m, idx[n - 1], qfull, flags);
+// Whole-body angles from qbase (NULL: zeros) with the chain's own angles put in.
+void fill_full(const kin_model *m, const Chain &c, const double *qc, const double *qbase, double *qfull) {
+  const int n = (int)m->joints.size();
+  for (int j = 0; j < n; j++) qfull[j] = qbase ? qbase[j] : 0.0;
+  if (qc)
+    for (size_t k = 0; k < c.idx.size(); k++) qfull[c.idx[k]] = qc[k];
+}
+
+// The tip frame of a chain for the whole-body angles qfull: R (axes) and p (origin), torso frame.
+Pose tip_pose(const kin_model *m, const Chain &c, const double *qfull, int *flags) {
+  Pose T = chain_pose(m, c.idx.back(), qfull, flags);
+  return Pose{T.R * c.tip_rot, T.R * c.tip + T.p - m->origin};
 }
 
 bool is_axis(const Vector3d &a, int k, double *sign) {
@@ -146,55 +159,86 @@ bool is_axis(const Vector3d &a, int k, double *sign) {
   return std::fabs(std::fabs(a[k]) - 1.0) < kAxisTol;
 }
 
-bool check_chain(const kin_desc *d, const int *idx, int n, char *err, size_t errlen, const char *what) {
-  for (int k = 0; k < n; k++) {
-    if (idx[k] < 0 || idx[k] >= d->njoint) {
-      set_err(err, errlen, "%s joint %d: index %d out of range", what, k + 1, idx[k]);
+const char *kind_name(int kind) { return kind == KIN_LEG ? "leg" : kind == KIN_ARM ? "arm" : "head"; }
+
+std::string chain_label(const kin_chain &c) {
+  std::string s = c.name ? std::string("chain '") + c.name + "'" : std::string("chain");
+  s += std::string(" (") + (c.kind == KIN_HEAD ? "" : c.side == KIN_LEFT ? "left " : "right ") + kind_name(c.kind) + ")";
+  return s;
+}
+
+std::string joint_label(const kin_desc *d, int j) {
+  if (d->names && d->names[j]) return std::string("'") + d->names[j] + "'";
+  return "#" + std::to_string(j);
+}
+
+// The joints of a chain must follow each other down the tree.
+bool setup_chain(kin_model *m, const kin_desc *d, const kin_chain &c, Chain *out, char *err, size_t errlen) {
+  const std::string what = chain_label(c);
+  const int want = c.kind == KIN_LEG ? 6 : c.kind == KIN_HEAD ? 2 : -1;
+  if (!c.joints || c.n < 1 || (want > 0 && c.n != want) || (c.kind == KIN_ARM && c.n > KIN_MAXARM)) {
+    if (want > 0) set_err(err, errlen, "%s: needs %d joints, has %d", what.c_str(), want, c.n);
+    else set_err(err, errlen, "%s: needs 1..%d joints, has %d", what.c_str(), KIN_MAXARM, c.n);
+    return false;
+  }
+  out->idx.assign(c.joints, c.joints + c.n);
+  for (int k = 0; k < c.n; k++) {
+    const int j = c.joints[k];
+    if (j < 0 || j >= d->njoint) {
+      set_err(err, errlen, "%s: joint %d: index %d out of range", what.c_str(), k + 1, j);
       return false;
     }
-    int want = k == 0 ? -1 : idx[k - 1];
-    if (d->parent[idx[k]] != want) {
-      set_err(err, errlen, "%s joint %d (index %d): parent must be %d (%s)", what, k + 1, idx[k], want,
-              k == 0 ? "the torso" : "the previous joint");
+    if (k > 0 && m->joints[j].parent != c.joints[k - 1]) {
+      set_err(err, errlen, "%s: joint %s does not hang from the chain's previous joint %s", what.c_str(),
+              joint_label(d, j).c_str(), joint_label(d, c.joints[k - 1]).c_str());
       return false;
     }
   }
+  out->base = m->joints[c.joints[0]].parent;
+  out->tip = Vector3d(c.tip[0], c.tip[1], c.tip[2]);
+  for (int i = 0; i < 3; i++)
+    for (int k = 0; k < 3; k++) out->tip_rot(i, k) = c.tip_rot[3 * i + k];
+  if (!finite3(out->tip) || !out->tip_rot.allFinite() ||
+      (out->tip_rot.transpose() * out->tip_rot - Matrix3d::Identity()).norm() > 1e-6 || out->tip_rot.determinant() < 0) {
+    set_err(err, errlen, "%s: the tip frame is not a finite point with a rotation", what.c_str());
+    return false;
+  }
+  out->present = true;
   return true;
 }
 
-bool setup_leg(kin_model *m, const kin_desc *d, int side, char *err, size_t errlen) {
-  Leg &L = m->leg[side];
-  const char *what = side == KIN_LEFT ? "left leg" : "right leg";
-  if (!check_chain(d, d->leg[side], 6, err, errlen, what)) return false;
+bool setup_leg(kin_model *m, const kin_desc *d, const kin_chain &c, char *err, size_t errlen) {
+  const std::string what = chain_label(c);
+  Leg &L = m->legs[c.side];
+  const Chain &C = m->leg[c.side];
   static const int canon[6] = {2, 0, 1, 1, 1, 0};
   static const char *names[6] = {"hip yaw", "hip roll", "hip pitch", "knee", "ankle pitch", "ankle roll"};
   for (int k = 0; k < 6; k++) {
-    L.idx[k] = d->leg[side][k];
-    if (!is_axis(m->joints[L.idx[k]].axis, canon[k], &L.sign[k])) {
-      set_err(err, errlen, "%s: %s axis must be along %c", what, names[k], "xyz"[canon[k]]);
+    if (!is_axis(m->joints[C.idx[k]].axis, canon[k], &L.sign[k])) {
+      set_err(err, errlen, "%s: %s joint %s: axis must be along %c for the analytic leg IK", what.c_str(), names[k],
+              joint_label(d, C.idx[k]).c_str(), "xyz"[canon[k]]);
       return false;
     }
   }
-  const Vector3d &ry_ = m->joints[L.idx[0]].anchor, &rr = m->joints[L.idx[1]].anchor,
-                 &rp = m->joints[L.idx[2]].anchor, &rk = m->joints[L.idx[3]].anchor,
-                 &rap = m->joints[L.idx[4]].anchor, &rar = m->joints[L.idx[5]].anchor;
+  const Vector3d &ry_ = m->joints[C.idx[0]].anchor, &rr = m->joints[C.idx[1]].anchor,
+                 &rp = m->joints[C.idx[2]].anchor, &rk = m->joints[C.idx[3]].anchor,
+                 &rap = m->joints[C.idx[4]].anchor, &rar = m->joints[C.idx[5]].anchor;
   if (std::fabs(rr.z() - rp.z()) > kAxisTol) {
-    set_err(err, errlen, "%s: hip roll and hip pitch axes do not meet (z %g vs %g)", what, rr.z(), rp.z());
+    set_err(err, errlen, "%s: hip roll and hip pitch axes do not meet (z %g vs %g)", what.c_str(), rr.z(), rp.z());
     return false;
   }
   if (std::fabs(rap.z() - rar.z()) > kAxisTol) {
-    set_err(err, errlen, "%s: ankle pitch and roll axes do not meet (z %g vs %g)", what, rap.z(), rar.z());
+    set_err(err, errlen, "%s: ankle pitch and roll axes do not meet (z %g vs %g)", what.c_str(), rap.z(), rar.z());
     return false;
   }
   L.yaw_pt = ry_;
   L.hip0 = Vector3d(rp.x(), rr.y(), rr.z());
   L.ankle0 = Vector3d(rap.x(), rar.y(), rap.z());
   if (std::fabs(L.hip0.y() - L.ankle0.y()) > kAxisTol) {
-    set_err(err, errlen, "%s: ankle centre (y %g) not below the hip centre (y %g)", what, L.ankle0.y(),
+    set_err(err, errlen, "%s: ankle centre (y %g) not below the hip centre (y %g)", what.c_str(), L.ankle0.y(),
             L.hip0.y());
     return false;
   }
-  L.sole0 = Vector3d(d->sole[side][0], d->sole[side][1], d->sole[side][2]);
   L.tx = rk.x() - L.hip0.x();
   L.tz = rk.z() - L.hip0.z();
   L.sx = L.ankle0.x() - rk.x();
@@ -203,7 +247,7 @@ bool setup_leg(kin_model *m, const kin_desc *d, int side, char *err, size_t errl
   L.ls2 = L.sx * L.sx + L.sz * L.sz;
   L.lts = std::sqrt(L.lt2 * L.ls2);
   if (L.lts < 1e-6) {
-    set_err(err, errlen, "%s: thigh or tibia has no length", what);
+    set_err(err, errlen, "%s: thigh or tibia has no length", what.c_str());
     return false;
   }
   // t . Ry(d) s = P cos d + Q sin d = |t||s| cos(d - phi)
@@ -212,11 +256,32 @@ bool setup_leg(kin_model *m, const kin_desc *d, int side, char *err, size_t errl
   return true;
 }
 
+bool setup_head(kin_model *m, const kin_desc *d, const kin_chain &c, char *err, size_t errlen) {
+  const std::string what = chain_label(c);
+  const Chain &H = m->head;
+  if (!is_axis(m->joints[H.idx[0]].axis, 2, &m->head_sign[0])) {
+    set_err(err, errlen, "%s: pan joint %s: axis must be along z for look-at", what.c_str(),
+            joint_label(d, H.idx[0]).c_str());
+    return false;
+  }
+  if (!is_axis(m->joints[H.idx[1]].axis, 1, &m->head_sign[1])) {
+    set_err(err, errlen, "%s: tilt joint %s: axis must be along y for look-at", what.c_str(),
+            joint_label(d, H.idx[1]).c_str());
+    return false;
+  }
+  if (std::fabs(H.tip_rot(1, 0)) > 1e-9) {
+    set_err(err, errlen, "%s: the camera's optical axis (the tip frame's x) must be perpendicular to the tilt axis",
+            what.c_str());
+    return false;
+  }
+  return true;
+}
+
 // One pass of the analytic solution for a given hip yaw (canonical) `a` used to place the hip
-// centre when the yaw axis misses it. Writes canonical angles c[6]; returns flags.
-int leg_solve(const Leg &L, const Matrix3d &R, const Vector3d &F, double a, double *c) {
+// centre when the yaw axis misses it. R: orientation of the last link, A: ankle centre (both
+// reference frame, the leg's base at its zero pose). Writes canonical angles c[6]; returns flags.
+int leg_solve(const Leg &L, const Matrix3d &R, const Vector3d &A, double a, double *c) {
   int flags = 0;
-  Vector3d A = F - R * (L.sole0 - L.ankle0);
   Vector3d H = L.hip0;
   if (L.yaw_offset) {
     Vector3d off(L.hip0.x() - L.yaw_pt.x(), L.hip0.y() - L.yaw_pt.y(), 0.0);
@@ -267,6 +332,32 @@ bool finite_all(const double *v, int n) {
   return true;
 }
 
+// Parents-first order of the joints; false (with the joint named) if the parents form a cycle.
+bool sort_joints(kin_model *m, const kin_desc *d, char *err, size_t errlen) {
+  const int n = (int)m->joints.size();
+  std::vector<int> depth(n, 0);
+  for (int j = 0; j < n; j++) {
+    int k = 0;
+    for (int p = m->joints[j].parent; p >= 0; p = m->joints[p].parent) {
+      if (++k > n) {
+        set_err(err, errlen, "joint %s: its parents form a cycle", joint_label(d, j).c_str());
+        return false;
+      }
+    }
+    depth[j] = k;
+  }
+  m->order.resize(n);
+  for (int j = 0; j < n; j++) m->order[j] = j;
+  std::stable_sort(m->order.begin(), m->order.end(), [&](int a, int b) { return depth[a] < depth[b]; });
+  return true;
+}
+
+const Chain *find_chain(const kin_model *m, int kind, int side) {
+  if (side != KIN_LEFT && side != KIN_RIGHT) return nullptr;
+  const Chain *c = kind == KIN_LEG ? &m->leg[side] : kind == KIN_ARM ? &m->arm[side] : kind == KIN_HEAD ? &m->head : nullptr;
+  return c && c->present ? c : nullptr;
+}
+
 }  // namespace
 
 extern "C" {
@@ -277,8 +368,9 @@ int kin_model_create(const kin_desc *d, kin_model **out, char *err, size_t errle
     return KIN_EINVAL;
   }
   *out = nullptr;
-  if (d->njoint <= 0 || d->njoint > 64 || !d->parent || !d->axis || !d->anchor || !d->mass || !d->com) {
-    set_err(err, errlen, "kin_model_create: need 1..64 joints with parent, axis, anchor, mass, com");
+  if (d->njoint <= 0 || d->njoint > KIN_MAXJ || !d->parent || !d->axis || !d->anchor || !d->mass || !d->com ||
+      d->nchain < 0 || (d->nchain > 0 && !d->chains)) {
+    set_err(err, errlen, "kin_model_create: need 1..%d joints with parent, axis, anchor, mass, com", KIN_MAXJ);
     return KIN_EINVAL;
   }
   kin_model *m = new (std::nothrow) kin_model();
@@ -286,6 +378,10 @@ int kin_model_create(const kin_desc *d, kin_model **out, char *err, size_t errle
     set_err(err, errlen, "kin_model_create: out of memory");
     return KIN_EMODEL;
   }
+  auto fail = [&]() {
+    delete m;
+    return KIN_EMODEL;
+  };
   m->joints.resize(d->njoint);
   m->total_mass = d->torso_mass;
   for (int j = 0; j < d->njoint; j++) {
@@ -298,46 +394,43 @@ int kin_model_create(const kin_desc *d, kin_model **out, char *err, size_t errle
     J.qmin = d->qmin ? d->qmin[j] : -INFINITY;
     J.qmax = d->qmax ? d->qmax[j] : INFINITY;
     const char *bad = nullptr;
-    if (J.parent < -1 || J.parent >= j) bad = "parent must be -1 (torso) or an earlier joint";
+    if (J.parent < -1 || J.parent >= d->njoint || J.parent == j) bad = "parent must be -1 (torso) or another joint";
     else if (!finite3(J.axis) || J.axis.norm() < 1e-9) bad = "axis is not a finite non-zero vector";
     else if (!finite3(J.anchor) || !finite3(J.com)) bad = "anchor or com not finite";
     else if (!std::isfinite(J.mass) || J.mass < 0) bad = "mass must be finite and >= 0";
     else if (std::isnan(J.qmin) || std::isnan(J.qmax) || J.qmin > J.qmax) bad = "limits: need min <= max";
     if (bad) {
-      set_err(err, errlen, "joint %d: %s", j, bad);
-      delete m;
-      return KIN_EMODEL;
+      set_err(err, errlen, "joint %s: %s", joint_label(d, j).c_str(), bad);
+      return fail();
     }
     J.axis.normalize();
     m->total_mass += J.mass;
   }
+  if (!sort_joints(m, d, err, errlen)) return fail();
   m->torso_mass = d->torso_mass;
   m->torso_com = Vector3d(d->torso_com[0], d->torso_com[1], d->torso_com[2]);
   m->origin = Vector3d(d->origin[0], d->origin[1], d->origin[2]);
-  m->camera = Vector3d(d->camera[0], d->camera[1], d->camera[2]);
   if (!std::isfinite(d->torso_mass) || d->torso_mass < 0 || !finite3(m->torso_com) || !finite3(m->origin) ||
-      !finite3(m->camera) || !(m->total_mass > 0)) {
-    set_err(err, errlen, "torso mass/com, origin or camera not finite, or total mass not positive");
-    delete m;
-    return KIN_EMODEL;
+      !(m->total_mass > 0)) {
+    set_err(err, errlen, "torso mass/com or origin not finite, or total mass not positive");
+    return fail();
   }
-  for (int s = 0; s < 2; s++) {
-    if (!setup_leg(m, d, s, err, errlen) ||
-        !check_chain(d, d->arm[s], 3, err, errlen, s == 0 ? "left arm" : "right arm")) {
-      delete m;
-      return KIN_EMODEL;
+  for (int i = 0; i < d->nchain; i++) {
+    const kin_chain &c = d->chains[i];
+    const bool sided = c.kind == KIN_LEG || c.kind == KIN_ARM;
+    if ((!sided && c.kind != KIN_HEAD) || (sided && c.side != KIN_LEFT && c.side != KIN_RIGHT)) {
+      set_err(err, errlen, "%s: unknown kind %d or side %d", chain_label(c).c_str(), c.kind, c.side);
+      return fail();
     }
-    for (int k = 0; k < 3; k++) m->arm[s][k] = d->arm[s][k];
-    m->hand[s] = Vector3d(d->hand[s][0], d->hand[s][1], d->hand[s][2]);
+    Chain *C = c.kind == KIN_LEG ? &m->leg[c.side] : c.kind == KIN_ARM ? &m->arm[c.side] : &m->head;
+    if (C->present) {
+      set_err(err, errlen, "%s: a second chain of this kind", chain_label(c).c_str());
+      return fail();
+    }
+    if (!setup_chain(m, d, c, C, err, errlen)) return fail();
+    if (c.kind == KIN_LEG && !setup_leg(m, d, c, err, errlen)) return fail();
+    if (c.kind == KIN_HEAD && !setup_head(m, d, c, err, errlen)) return fail();
   }
-  if (!check_chain(d, d->head, 2, err, errlen, "head")) {
-    delete m;
-    return KIN_EMODEL;
-  }
-  m->head[0] = d->head[0];
-  m->head[1] = d->head[1];
-  m->head_ok = is_axis(m->joints[d->head[0]].axis, 2, &m->head_sign[0]) &&
-               is_axis(m->joints[d->head[1]].axis, 1, &m->head_sign[1]);
   *out = m;
   return 0;
 }
@@ -347,6 +440,24 @@ void kin_model_destroy(kin_model *m) { delete m; }
 int kin_njoint(const kin_model *m) { return m ? (int)m->joints.size() : KIN_EINVAL; }
 
 double kin_total_mass(const kin_model *m) { return m ? m->total_mass : 0.0; }
+
+int kin_joint_info(const kin_model *m, int j, double *axis, double *qmin, double *qmax) {
+  if (!m || !axis || j < 0 || j >= (int)m->joints.size()) return KIN_EINVAL;
+  const Joint &J = m->joints[j];
+  for (int k = 0; k < 3; k++) axis[k] = J.axis[k];
+  if (qmin) *qmin = J.qmin;
+  if (qmax) *qmax = J.qmax;
+  return 0;
+}
+
+int kin_chain_joints(const kin_model *m, int kind, int side, int *idx) {
+  if (!m) return KIN_EINVAL;
+  const Chain *c = find_chain(m, kind, kind == KIN_HEAD ? 0 : side);
+  if (!c) return KIN_ENOCHAIN;
+  if (idx)
+    for (size_t k = 0; k < c->idx.size(); k++) idx[k] = c->idx[k];
+  return (int)c->idx.size();
+}
 
 int kin_link_poses(const kin_model *m, const double *q, double *out) {
   if (!m || !q || !out) return KIN_EINVAL;
@@ -361,57 +472,66 @@ int kin_link_poses(const kin_model *m, const double *q, double *out) {
   return flags;
 }
 
-int kin_leg_fk(const kin_model *m, int side, const double *q6, double *pose, double *rot) {
-  if (!m || !q6 || !pose || (side != 0 && side != 1)) return KIN_EINVAL;
+int kin_leg_fk(const kin_model *m, int side, const double *q6, const double *qbase, double *pose, double *rot) {
+  if (!m || !q6 || !pose) return KIN_EINVAL;
+  const Chain *c = find_chain(m, KIN_LEG, side);
+  if (!c) return side == 0 || side == 1 ? KIN_ENOCHAIN : KIN_EINVAL;
   int flags = 0;
-  const Leg &L = m->leg[side];
-  Pose T = limb_pose(m, L.idx, 6, q6, &flags);
-  Vector3d F = T.R * L.sole0 + T.p - m->origin;
-  for (int k = 0; k < 3; k++) pose[k] = F[k];
-  rot_to_rpy(T.R, pose + 3);
-  if (rot) put_rot(T.R, rot);
+  double qfull[KIN_MAXJ];
+  fill_full(m, *c, q6, qbase, qfull);
+  Pose F = tip_pose(m, *c, qfull, &flags);
+  for (int k = 0; k < 3; k++) pose[k] = F.p[k];
+  rot_to_rpy(F.R, pose + 3);
+  if (rot) put_rot(F.R, rot);
   return flags;
 }
 
-int kin_arm_fk(const kin_model *m, int side, const double *q3, double *pos, double *rot) {
-  if (!m || !q3 || !pos || (side != 0 && side != 1)) return KIN_EINVAL;
+int kin_arm_fk(const kin_model *m, int side, const double *qn, const double *qbase, double *pos, double *rot) {
+  if (!m || !qn || !pos) return KIN_EINVAL;
+  const Chain *c = find_chain(m, KIN_ARM, side);
+  if (!c) return side == 0 || side == 1 ? KIN_ENOCHAIN : KIN_EINVAL;
   int flags = 0;
-  Pose T = limb_pose(m, m->arm[side], 3, q3, &flags);
-  Vector3d h = T.R * m->hand[side] + T.p - m->origin;
-  for (int k = 0; k < 3; k++) pos[k] = h[k];
-  if (rot) put_rot(T.R, rot);
+  double qfull[KIN_MAXJ];
+  fill_full(m, *c, qn, qbase, qfull);
+  Pose H = tip_pose(m, *c, qfull, &flags);
+  for (int k = 0; k < 3; k++) pos[k] = H.p[k];
+  if (rot) put_rot(H.R, rot);
   return flags;
 }
 
-int kin_head_fk(const kin_model *m, const double *q2, double *pos, double *rot) {
+int kin_head_fk(const kin_model *m, const double *q2, const double *qbase, double *pos, double *rot) {
   if (!m || !q2 || !pos) return KIN_EINVAL;
+  const Chain *c = find_chain(m, KIN_HEAD, 0);
+  if (!c) return KIN_ENOCHAIN;
   int flags = 0;
-  Pose T = limb_pose(m, m->head, 2, q2, &flags);
-  Vector3d c = T.R * m->camera + T.p - m->origin;
-  for (int k = 0; k < 3; k++) pos[k] = c[k];
-  if (rot) put_rot(T.R, rot);
+  double qfull[KIN_MAXJ];
+  fill_full(m, *c, q2, qbase, qfull);
+  Pose C = tip_pose(m, *c, qfull, &flags);
+  for (int k = 0; k < 3; k++) pos[k] = C.p[k];
+  if (rot) put_rot(C.R, rot);
   return flags;
 }
 
 int kin_camera_pose(const kin_model *m, const double *q, const double *rpy, double *pos, double *rot,
                     double *height) {
   if (!m || !q || !rpy || !pos || !rot) return KIN_EINVAL;
+  const Chain *c = find_chain(m, KIN_HEAD, 0);
+  if (!c) return KIN_ENOCHAIN;
   int flags = 0;
   double roll = clean(rpy[0], &flags), pitch = clean(rpy[1], &flags);
   Matrix3d Rl = ry(pitch) * rx(roll);
-  Pose T = chain_pose(m, m->head[1], q, &flags);
-  Vector3d c = Rl * (T.R * m->camera + T.p - m->origin);
-  for (int k = 0; k < 3; k++) pos[k] = c[k];
-  put_rot(Rl * T.R, rot);
+  Pose C = tip_pose(m, *c, q, &flags);
+  Vector3d p = Rl * C.p;
+  for (int k = 0; k < 3; k++) pos[k] = p[k];
+  put_rot(Rl * C.R, rot);
   if (height) {
     double low = INFINITY;
     for (int s = 0; s < 2; s++) {
-      const Leg &L = m->leg[s];
-      Pose F = chain_pose(m, L.idx[5], q, &flags);
-      double z = (Rl * (F.R * L.sole0 + F.p - m->origin)).z();
+      if (!m->leg[s].present) continue;
+      double z = (Rl * tip_pose(m, m->leg[s], q, &flags).p).z();
       if (z < low) low = z;
     }
-    *height = c.z() - low;
+    *height = std::isfinite(low) ? p.z() - low : p.z();
   }
   return flags;
 }
@@ -428,32 +548,41 @@ int kin_com(const kin_model *m, const double *q, double *com) {
   return flags;
 }
 
-int kin_leg_ik(const kin_model *m, int side, const double *pose, double *q6) {
-  if (!m || !pose || !q6 || (side != 0 && side != 1)) return KIN_EINVAL;
-  const Leg &L = m->leg[side];
+int kin_leg_ik(const kin_model *m, int side, const double *pose, const double *qbase, double *q6) {
+  if (!m || !pose || !q6) return KIN_EINVAL;
+  const Chain *ch = find_chain(m, KIN_LEG, side);
+  if (!ch) return side == 0 || side == 1 ? KIN_ENOCHAIN : KIN_EINVAL;
+  const Leg &L = m->legs[side];
   int flags = 0;
+  // The leg's base (a waist may move it), from qbase.
+  Pose B = kIdentity;
+  if (ch->base >= 0 && qbase) B = chain_pose(m, ch->base, qbase, &flags);
   // Non-finite components fall back to the zero-pose foot pose.
   double p[6];
-  Vector3d zero = L.sole0 - m->origin;
+  const Vector3d zero = B.R * ch->tip + B.p - m->origin;
+  double zrpy[3];
+  rot_to_rpy(B.R * ch->tip_rot, zrpy);
   for (int k = 0; k < 6; k++) {
-    double z0 = k < 3 ? zero[k] : 0.0;
+    double z0 = k < 3 ? zero[k] : zrpy[k - 3];
     p[k] = std::isfinite(pose[k]) ? pose[k] : (flags |= KIN_BAD_INPUT, z0);
   }
-  Matrix3d R = rpy_to_rot(p[3], p[4], p[5]);
-  Vector3d F = Vector3d(p[0], p[1], p[2]) + m->origin;
+  // The last link's displacement relative to the base: R, and the sole point F on it.
+  Matrix3d R = B.R.transpose() * rpy_to_rot(p[3], p[4], p[5]) * ch->tip_rot.transpose();
+  Vector3d F = B.R.transpose() * (Vector3d(p[0], p[1], p[2]) + m->origin - B.p);
+  Vector3d A = F - R * (ch->tip - L.ankle0);
   double c[6];
-  int f = leg_solve(L, R, F, 0.0, c);
+  int f = leg_solve(L, R, A, 0.0, c);
   if (L.yaw_offset) {
     // The hip centre moves with the yaw: a fixed point, contracting by |offset| / leg length.
     for (int it = 0; it < 20; it++) {
       double prev = c[0];
-      f = leg_solve(L, R, F, c[0], c);
+      f = leg_solve(L, R, A, c[0], c);
       if (std::fabs(c[0] - prev) < 1e-15) break;
     }
   }
   flags |= f;
   for (int k = 0; k < 6; k++) {
-    const Joint &J = m->joints[L.idx[k]];
+    const Joint &J = m->joints[ch->idx[k]];
     double q = L.sign[k] * std::remainder(c[k], 2.0 * M_PI);
     if (!std::isfinite(q)) {
       q = 0.0;
@@ -468,86 +597,114 @@ int kin_leg_ik(const kin_model *m, int side, const double *pose, double *q6) {
   return flags;
 }
 
-int kin_arm_ik(const kin_model *m, int side, const double *pos, double *q3) {
-  if (!m || !pos || !q3 || (side != 0 && side != 1)) return KIN_EINVAL;
+int kin_arm_ik(const kin_model *m, int side, const double *pos, const double *qbase, double *qn) {
+  if (!m || !pos || !qn) return KIN_EINVAL;
+  const Chain *ch = find_chain(m, KIN_ARM, side);
+  if (!ch) return side == 0 || side == 1 ? KIN_ENOCHAIN : KIN_EINVAL;
   int flags = 0;
-  const int *idx = m->arm[side];
-  double q[3];
-  for (int k = 0; k < 3; k++) q[k] = clean(q3[k], &flags);
+  const int n = (int)ch->idx.size();
+  double q[KIN_MAXARM];
+  for (int k = 0; k < n; k++) q[k] = clean(qn[k], &flags);
+  Pose B = kIdentity;
+  if (ch->base >= 0 && qbase) B = chain_pose(m, ch->base, qbase, &flags);
+  // target in the base's zero-pose frame (reference coordinates)
   Vector3d target;
-  double zero[3] = {0, 0, 0}, h0[3];
-  kin_arm_fk(m, side, zero, h0, nullptr);
+  const Vector3d h0 = B.R * ch->tip + B.p - m->origin;  // hand at the arm's zero pose
   for (int k = 0; k < 3; k++) target[k] = std::isfinite(pos[k]) ? pos[k] : (flags |= KIN_BAD_INPUT, h0[k]);
-  target += m->origin;
-  double lambda = 1e-4;
+  target = B.R.transpose() * (target + m->origin - B.p);
+  const double lambda = 1e-4;
   double err_norm = INFINITY;
+  Eigen::MatrixXd Jac(3, n), A(n, n);
+  Eigen::VectorXd dq(n);
   for (int it = 0; it < 100; it++) {
-    // Current pose of each arm joint: its axis and anchor in the torso frame, and the hand.
-    Pose T{Matrix3d::Identity(), Vector3d::Zero()};
-    Eigen::Matrix3d Jac;
-    Vector3d w[3], r[3];
-    for (int k = 0; k < 3; k++) {
-      const Joint &J = m->joints[idx[k]];
+    // Current pose of each arm joint: its axis and anchor, and the hand.
+    Pose T = kIdentity;
+    Vector3d w[KIN_MAXARM], r[KIN_MAXARM];
+    for (int k = 0; k < n; k++) {
+      const Joint &J = m->joints[ch->idx[k]];
       w[k] = T.R * J.axis;
       r[k] = T.R * J.anchor + T.p;
       Matrix3d E = rot_axis(J.axis, q[k]);
       T.p = T.R * (J.anchor - E * J.anchor) + T.p;
       T.R = T.R * E;
     }
-    Vector3d h = T.R * m->hand[side] + T.p;  // the arm hangs from the torso (checked at create)
-    for (int k = 0; k < 3; k++) Jac.col(k) = w[k].cross(h - r[k]);
+    Vector3d h = T.R * ch->tip + T.p;
+    for (int k = 0; k < n; k++) Jac.col(k) = w[k].cross(h - r[k]);
     Vector3d e = target - h;
     err_norm = e.norm();
     if (err_norm < 1e-10) break;
-    Matrix3d A = Jac.transpose() * Jac + lambda * Matrix3d::Identity();
-    Vector3d dq = A.ldlt().solve(Jac.transpose() * e);
-    if (!finite3(dq)) break;
+    A = Jac.transpose() * Jac + lambda * Eigen::MatrixXd::Identity(n, n);
+    dq = A.ldlt().solve(Jac.transpose() * e);
+    if (!dq.allFinite()) break;
     double step = dq.norm();
     if (step > 0.3) dq *= 0.3 / step;
-    for (int k = 0; k < 3; k++) {
-      const Joint &J = m->joints[idx[k]];
+    for (int k = 0; k < n; k++) {
+      const Joint &J = m->joints[ch->idx[k]];
       q[k] = clamp(std::remainder(q[k] + dq[k], 2.0 * M_PI), J.qmin, J.qmax);
     }
     if (step < 1e-13) break;
   }
   if (err_norm > 1e-4) flags |= KIN_UNREACHABLE;
-  for (int k = 0; k < 3; k++) q3[k] = std::isfinite(q[k]) ? q[k] : 0.0;
+  for (int k = 0; k < n; k++) qn[k] = std::isfinite(q[k]) ? q[k] : 0.0;
   return flags;
 }
 
-int kin_head_look_at(const kin_model *m, const double *target, double *q2) {
+int kin_head_look_at(const kin_model *m, const double *target, const double *qbase, double *q2) {
   if (!m || !target || !q2) return KIN_EINVAL;
-  if (!m->head_ok) return KIN_EMODEL;
+  const Chain *ch = find_chain(m, KIN_HEAD, 0);
+  if (!ch) return KIN_ENOCHAIN;
   int flags = 0;
   if (!finite_all(target, 3)) {
     q2[0] = q2[1] = 0.0;
     return KIN_BAD_INPUT;
   }
-  const Joint &P = m->joints[m->head[0]], &Tl = m->joints[m->head[1]];
-  Vector3d p = Vector3d(target[0], target[1], target[2]) + m->origin;
-  // Pan: the optical axis (lateral offset e from the pan axis) must pass over the target.
+  Pose B = kIdentity;
+  if (ch->base >= 0 && qbase) B = chain_pose(m, ch->base, qbase, &flags);
+  const Joint &P = m->joints[ch->idx[0]], &Tl = m->joints[ch->idx[1]];
+  // the target in the head base's zero-pose frame
+  Vector3d p = B.R.transpose() * (Vector3d(target[0], target[1], target[2]) + m->origin - B.p);
+  // Pan: the optical axis (in a plane at lateral offset e from the pan axis: the tilt turns about
+  // y, and the optical axis has no y part) must pass over the target.
   double dx = p.x() - P.anchor.x(), dy = p.y() - P.anchor.y();
   double rho = std::hypot(dx, dy);
-  double e = m->camera.y() - P.anchor.y();
+  double e = ch->tip.y() - P.anchor.y();
   double ratio = rho > 1e-12 ? e / rho : 0.0;
   if (std::fabs(ratio) > 1.0) flags |= KIN_UNREACHABLE;
   double a = std::atan2(dy, dx) - std::asin(clamp(ratio, -1.0, 1.0));
-  // Tilt: in the panned frame, the target relative to the tilt axis must sit on the optical axis.
-  Vector3d pl = rz(-a) * (p - Vector3d(P.anchor.x(), P.anchor.y(), 0)) + Vector3d(P.anchor.x(), P.anchor.y(), 0);
+  // Tilt: in the panned frame, xz plane about the tilt axis, find th with the target on the ray
+  // from the camera centre c along d (both turned by Ry(th)): Ry(-th) t - c parallel to d, i.e.
+  // A cos th - B sin th = k with A = X dz - Z dx, B = X dx + Z dz, k = cx dz - cz dx.
+  Vector3d pa(P.anchor.x(), P.anchor.y(), 0);
+  Vector3d pl = rz(-a) * (p - pa) + pa;
   double X = pl.x() - Tl.anchor.x(), Z = pl.z() - Tl.anchor.z();
-  double cz = m->camera.z() - Tl.anchor.z();
-  double R = std::hypot(X, Z);
-  double cr = R > 1e-12 ? cz / R : 2.0;
+  double cx = ch->tip.x() - Tl.anchor.x(), cz = ch->tip.z() - Tl.anchor.z();
+  double ddx = ch->tip_rot(0, 0), ddz = ch->tip_rot(2, 0);
+  const double dn = std::hypot(ddx, ddz);
+  ddx /= dn;
+  ddz /= dn;
+  double Ac = X * ddz - Z * ddx, Bc = X * ddx + Z * ddz, k = cx * ddz - cz * ddx;
+  double Rn = std::hypot(Ac, Bc);
+  double cr = Rn > 1e-12 ? k / Rn : 2.0;
   if (std::fabs(cr) > 1.0) flags |= KIN_UNREACHABLE;
-  double th = std::atan2(X, Z) - std::acos(clamp(cr, -1.0, 1.0));
+  double phi = std::atan2(Bc, Ac), ac = std::acos(clamp(cr, -1.0, 1.0));
+  double th = 0.0, best = -INFINITY;
+  for (double cand : {-phi + ac, -phi - ac}) {
+    // distance along the optical axis to the target: (Ry(-th) t - c) . d, the larger one wins
+    double ux = X * std::cos(cand) - Z * std::sin(cand) - cx, uz = X * std::sin(cand) + Z * std::cos(cand) - cz;
+    double t = ux * ddx + uz * ddz;
+    if (t > best) {
+      best = t;
+      th = cand;
+    }
+  }
   double q[2] = {m->head_sign[0] * std::remainder(a, 2 * M_PI), m->head_sign[1] * std::remainder(th, 2 * M_PI)};
   const Joint *J[2] = {&P, &Tl};
-  for (int k = 0; k < 2; k++) {
-    if (q[k] < J[k]->qmin || q[k] > J[k]->qmax) {
-      q[k] = clamp(q[k], J[k]->qmin, J[k]->qmax);
+  for (int i = 0; i < 2; i++) {
+    if (q[i] < J[i]->qmin || q[i] > J[i]->qmax) {
+      q[i] = clamp(q[i], J[i]->qmin, J[i]->qmax);
       flags |= KIN_UNREACHABLE | KIN_JOINT_LIMIT;
     }
-    q2[k] = std::isfinite(q[k]) ? q[k] : 0.0;
+    q2[i] = std::isfinite(q[i]) ? q[i] : 0.0;
   }
   return flags;
 }

@@ -56,15 +56,13 @@ void set_yuv(Solid *s, int y, int u, int v) {
 }  // namespace
 
 void params_load(const std::string &robot, Params *p) {
-  Config s("sim", robot), r("robot", robot), c("camera", robot);
+  Config s("sim", robot), r("robot", robot), c("camera", robot), act("actuators", robot);
   const std::string &sim_lua = s.file(), &robot_lua = r.file();
   p->timestep = s.num("physics.timestep");
   p->iterations = (int)s.num("physics.iterations");
   p->gravity = s.num("physics.gravity");
   p->rotor_inertia = s.num("physics.link_rotor_inertia");
   p->linear_damping = s.num("physics.linear_damping", 0);
-  p->servo_gain = s.num("servo.p_gain");
-  p->servo_resolution = s.num("servo.resolution");
   p->temperature = s.num("servo.temperature");
   p->mu = s.num("contact.mu");
   p->kp = s.num("contact.kp");
@@ -119,6 +117,23 @@ void params_load(const std::string &robot, Params *p) {
   p->battery = s.num("battery");
   p->name = r.str("name");
   p->joints = r.strs("joints");
+  // each joint's servo: the actuator model robot.lua names for it
+  p->servos.clear();
+  for (const std::string &j : p->joints) {
+    if (!r.has("actuator." + j)) throw std::runtime_error(robot_lua + ": missing string 'actuator." + j + "' (its model)");
+    Servo sv;
+    sv.model = r.str("actuator." + j);
+    if (!act.has(sv.model + ".gain")) {
+      throw std::runtime_error(robot_lua + ": actuator." + j + " is '" + sv.model + "', not a model of " + act.file());
+    }
+    sv.gain = act.num(sv.model + ".gain");
+    sv.resolution = act.num(sv.model + ".resolution");
+    sv.speed_unit = act.num(sv.model + ".speed_unit");
+    if (!(sv.gain > 0) || !(sv.resolution >= 2) || !(sv.speed_unit > 0)) {
+      throw std::runtime_error(act.file() + ": model '" + sv.model + "' needs gain, speed_unit > 0, resolution >= 2");
+    }
+    p->servos.push_back(sv);
+  }
   p->period = r.num("period");
   p->urdf = r.str("description");
   if (!p->urdf.empty() && p->urdf[0] != '/') p->urdf = robot_dir(r.str("name")) + "/" + p->urdf;
@@ -134,7 +149,7 @@ void params_load(const std::string &robot, Params *p) {
 // ---------------------------------------------------------------- construction
 
 World::World(const Params &p, const Model &m, int nrobots, uint64_t seed)
-    : World(p, std::vector<Body>(std::max(nrobots, 0), Body{m, p.joints}), seed) {}
+    : World(p, std::vector<Body>(std::max(nrobots, 0), Body{m, p.joints, p.servos}), seed) {}
 
 World::World(const Params &p, std::vector<Body> bodies, uint64_t seed)
     : p_(p), bodies_(std::move(bodies)), seed_(seed), rng_(seed) {
@@ -143,6 +158,7 @@ World::World(const Params &p, std::vector<Body> bodies, uint64_t seed)
     if (b.model.frame_index(p_.camera_frame) < 0 && b.model.link_index(p_.camera_frame) < 0) {
       throw std::runtime_error(b.model.file + ": no link or frame '" + p_.camera_frame + "' for the camera");
     }
+    if (b.servos.size() != b.joints.size()) throw std::runtime_error(b.model.file + ": no servo model for every joint");
   }
   substeps_ = (int)std::lround(p_.period / p_.timestep);
   dInitODE2(0);
@@ -248,6 +264,7 @@ void World::build_env() {
 void World::build_robot(int r, const Body &body) {
   Robot &rb = robots_[r];
   rb.m = &body.model;
+  rb.servo = &body.servos;
   const Model &m = body.model;
   const int nl = (int)m.links.size();
   rb.space = dSimpleSpaceCreate(top_);
@@ -484,7 +501,7 @@ void World::servo_update(Robot &rb) {
         rb.mode[j] = 1;
       }
       const double target = std::min(std::max(rb.cmd[j], l.lower), l.upper);
-      double v = p_.servo_gain * (target - dJointGetHingeAngle(h));
+      double v = (*rb.servo)[j].gain * (target - dJointGetHingeAngle(h));
       v = std::min(std::max(v, -l.velocity), l.velocity);
       dJointSetHingeParam(h, dParamVel, v);
       dJointSetHingeParam(h, dParamFMax, rb.hard[j] * l.effort);
@@ -650,9 +667,9 @@ void World::sense(int r, Sensors *s) {
   s->position.resize(nj);
   s->velocity.resize(nj);
   s->load.resize(nj);
-  const double qstep = 2 * M_PI / p_.servo_resolution;
-  const double vstep = 0.229 * 2 * M_PI / 60;   // XM430 velocity unit: 0.229 rpm
   for (size_t j = 0; j < nj; j++) {
+    const Servo &sv = (*rb.servo)[j];
+    const double qstep = 2 * M_PI / sv.resolution, vstep = sv.speed_unit;
     const int li = rb.jlink[j];
     dJointID h = rb.hinge[li];
     s->position[j] = std::round(dJointGetHingeAngle(h) / qstep) * qstep;
@@ -773,10 +790,20 @@ std::string hrp_root() {
 
 std::string robot_dir(const std::string &robot) { return hrp_root() + "/Config/robots/" + robot; }
 
+// Every joint of a description is driven: each must be in the robot's joint list.
+static void check_joints(const Params &p, const Model &m) {
+  for (const Link &l : m.links) {
+    if (!l.joint.empty() && std::find(p.joints.begin(), p.joints.end(), l.joint) == p.joints.end()) {
+      throw std::runtime_error(p.urdf + ": joint '" + l.joint + "' is not in the robot config's joints");
+    }
+  }
+}
+
 void load_all(Params *p, Model *m) {
   params_load("", p);
   std::string err;
   if (model_load(p->urdf, m, &err) < 0) throw std::runtime_error(err);
+  check_joints(*p, *m);
 }
 
 void load_bodies(const std::vector<std::string> &robots, std::vector<Params> *params, std::vector<Body> *bodies) {
@@ -795,7 +822,9 @@ void load_bodies(const std::vector<std::string> &robots, std::vector<Params> *pa
     Body b;
     std::string err;
     if (model_load(p.urdf, &b.model, &err) < 0) throw std::runtime_error(err);
+    check_joints(p, b.model);
     b.joints = p.joints;
+    b.servos = p.servos;
     // one world steps every robot with one control period
     if (r > 0 && std::fabs(p.period - (*params)[0].period) > 1e-12) {
       throw std::runtime_error("robot '" + robots[r] + "' has a control period of " + std::to_string(p.period) +

@@ -18,12 +18,21 @@
 
 namespace sim {
 
-// Every number the world needs, from the sim, robot and camera configs (Lib/Config.lua layers).
+// A joint's servo: the numbers of its actuator model (Config/common/actuators.lua) that the URDF
+// cannot carry (its torque, speed, damping and friction are the URDF joint's).
+struct Servo {
+  std::string model;            // e.g. "MX-28"
+  double gain = 30;             // 1/s, velocity-motor gain: target speed = gain * position error
+  double resolution = 4096;     // encoder counts per turn (positions are quantised to it)
+  double speed_unit = 0.0240;   // rad/s per count of the present speed (speeds are quantised to it)
+};
+
+// Every number the world needs, from the sim, robot, camera and actuators configs (Lib/Config.lua layers).
 struct Params {
   double timestep = 0.001, period = 0.008, gravity = 9.81;
   int iterations = 20;
   double rotor_inertia = 5e-4, linear_damping = 0;
-  double servo_gain = 30, servo_resolution = 4096, temperature = 40;
+  double temperature = 40;
   double mu = 1, kp = 5e4, kd = 300, robot_mu = 0.5;
   int max_contacts = 8;
   double gyro_noise = 0, accel_noise = 0;
@@ -43,6 +52,7 @@ struct Params {
   double safe_hardness = 0.3, start_hardness = 1;   // the DCM's safe state; a fresh actuator block
   std::string name;                   // the body (robot.lua's name)
   std::vector<std::string> joints;    // shm joint order (robot.lua)
+  std::vector<Servo> servos;          // per shm joint: its actuator model (robot.lua `actuator`)
   std::string urdf;                   // path of the robot file
 };
 // Reads the sim, robot and camera configs of a body ("" = $ROBOT) into p; throws
@@ -79,15 +89,17 @@ struct Scene {
   Vec3 ball = Vec3::Zero();
 };
 
-// One robot's body: its description and the shm order of its joints (robot.lua's joints).
+// One robot's body: its description, the shm order of its joints (robot.lua's joints) and each
+// joint's servo (its actuator model).
 struct Body {
   Model model;
   std::vector<std::string> joints;
+  std::vector<Servo> servos;   // per shm joint
 };
 
 class World {
  public:
-  // nrobots robots of one body (joints: p.joints).
+  // nrobots robots of one body (joints: p.joints, servos: p.servos).
   World(const Params &p, const Model &m, int nrobots, uint64_t seed);
   // Robot r has bodies[r]: different bodies in one world. The world's own numbers come from p.
   World(const Params &p, std::vector<Body> bodies, uint64_t seed);
@@ -138,6 +150,7 @@ class World {
   struct GeomInfo { int kind; int robot; int link; int sole; };   // kind: 0 ground/env, 1 ball, 2 robot
   struct Robot {
     const Model *m = nullptr;              // its body (in bodies_)
+    const std::vector<Servo> *servo = nullptr;   // its body's servos, per shm joint
     dSpaceID space = nullptr;
     std::vector<dBodyID> body;             // per model link
     std::vector<dJointID> hinge;           // per model link (null for the root)

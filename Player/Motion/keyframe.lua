@@ -95,10 +95,17 @@ function M.check(kf, file, body)
   return out
 end
 
--- Loads (cached per body) Config/robots/<robot>/keyframes/<name>.lua for a body (see check).
+-- Loads (cached per body) Config/robots/<robot>/keyframes/<name>.lua for a body (see check); a
+-- body without that file takes its base body's (robot.lua `base`).
 function M.load(name, body, robot)
   robot = robot or Config.robot()
-  local file = 'Config/robots/' .. robot .. '/keyframes/' .. name .. '.lua'
+  local chain = Config.robot_chain(robot)
+  local file
+  for _, r in ipairs(chain) do
+    file = 'Config/robots/' .. r .. '/keyframes/' .. name .. '.lua'
+    local f = io.open(native.root() .. '/' .. file, 'r')
+    if f then f:close() break end
+  end
   local per_body = cache[body] or {}
   cache[body] = per_body
   if per_body[file] then return per_body[file] end

@@ -353,11 +353,11 @@ function Walk:leg_angles(q)
   return self.model:legs_ik(self.lpose, self.rpose, q)
 end
 
--- The axis of joint `name` (a unit vector in the torso frame at the zero pose): the one place the
--- walk reads it, so that feedback and mirrored poses are stated as rotations about the torso's axes.
--- (Reads robot.lua's kinematics table; the URDF model's model:axis(name) takes its place here.)
+-- The axis of joint `name` (a unit vector in the torso frame at the zero pose, from the body's
+-- description): the one place the walk reads it, so that feedback and mirrored poses are stated as
+-- rotations about the torso's axes.
 function M.joint_axis(robot, model, name) -- luacheck: no unused args
-  return robot.kinematics.joints[name].axis
+  return model:axis(name)
 end
 
 local LEG = { 'hip_yaw', 'hip_roll', 'hip_pitch', 'knee', 'ank_pitch', 'ank_roll' }

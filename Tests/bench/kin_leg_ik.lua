@@ -1,7 +1,7 @@
 -- Benchmark: time of leg IK from LuaJIT (one leg, and both legs into a whole-body array as the
 -- walk does once per motion tick), plus leg FK and the whole-body COM. Prints median, p99 and max
 -- per call in microseconds (wall clock, CLOCK_MONOTONIC); never fails on time.
---   luajit Tests/bench/kin_leg_ik.lua [samples] [platform]
+--   luajit Tests/bench/kin_leg_ik.lua [samples] [robot]
 local ffi = require('ffi')
 local kin = require('kinematics')
 
@@ -16,8 +16,8 @@ local function now_ns()
 end
 
 local N = tonumber(arg[1]) or 100000
-local platform = arg[2] or 'Sim'
-local m = kin.load(platform)
+local robot = arg[2] or require('Config').robot()
+local m = kin.load({ robot = robot })
 local p0l, p0r = m:leg_fk('l', { 0, 0, 0, 0, 0, 0 }), m:leg_fk('r', { 0, 0, 0, 0, 0, 0 })
 local q = {}
 for i = 1, m.n do q[i] = 0 end
@@ -49,7 +49,7 @@ local function report(name, f)
     t[math.floor(N / 2) + 1], t[math.floor(N * 0.99) + 1], t[N], N))
 end
 
-print(string.format('kinematics benchmark, platform %s, %d samples each', platform, N))
+print(string.format('kinematics benchmark, robot %s, %d samples each', robot, N))
 report('timer overhead (empty call)', function() end)
 report('leg_ik, one leg', function() m:leg_ik('l', lp, out) end)
 report('legs_ik, both legs (one tick)', function() m:legs_ik(lp, rp, q) end)

@@ -21,8 +21,14 @@ struct Geometry {
   // joint order: 0 head_pan 1 head_tilt | 2..4 left arm | 5..10 left leg | 11..16 right leg | 17..19 right arm
   int parent[20];
   double axis[60], anchor[60], mass[20], com[60], qmin[20], qmax[20];
+  int leg[2][6], arm[2][3], head[2];
+  kin_chain chains[5];   // left leg, right leg, left arm, right arm, head
   kin_desc d;
 };
+
+void identity(double *R) {
+  for (int k = 0; k < 9; k++) R[k] = k % 4 == 0 ? 1.0 : 0.0;
+}
 
 void set3(double *a, int j, double x, double y, double z) {
   a[3 * j] = x;
@@ -72,12 +78,18 @@ Geometry make_geometry(double thigh, double tibia, double yaw_dx, double yaw_dy,
     set3(g.anchor, l0 + 3, knee_x, hy + sy * 0.02, fh + tibia);
     set3(g.anchor, l0 + 4, 0.0, hy + sy * 0.02, fh);
     set3(g.anchor, l0 + 5, -0.02, hy, fh);
-    g.d.sole[s][0] = sole_x;
-    g.d.sole[s][1] = hy + sy * sole_y;
-    g.d.sole[s][2] = 0.0;
-    set3(g.d.hand[s], 0, 0.0, sy * 0.26, hip_z + 0.11);
-    for (int k = 0; k < 6; k++) g.d.leg[s][k] = l0 + k;
-    for (int k = 0; k < 3; k++) g.d.arm[s][k] = a0 + k;
+    kin_chain &L = g.chains[s], &A = g.chains[2 + s];
+    L.kind = KIN_LEG;
+    A.kind = KIN_ARM;
+    L.side = A.side = s;
+    L.n = 6;
+    A.n = 3;
+    set3(L.tip, 0, sole_x, hy + sy * sole_y, 0.0);
+    set3(A.tip, 0, 0.0, sy * 0.26, hip_z + 0.11);
+    identity(L.tip_rot);
+    identity(A.tip_rot);
+    for (int k = 0; k < 6; k++) g.leg[s][k] = l0 + k;
+    for (int k = 0; k < 3; k++) g.arm[s][k] = a0 + k;
   }
   for (int j = 0; j < 20; j++) {
     g.mass[j] = 0.05 + 0.01 * j;
@@ -96,9 +108,15 @@ Geometry make_geometry(double thigh, double tibia, double yaw_dx, double yaw_dy,
   g.d.torso_mass = 1.0;
   set3(g.d.torso_com, 0, -0.01, 0.0, hip_z + 0.08);
   set3(g.d.origin, 0, 0.0, 0.0, hip_z);
-  g.d.head[0] = 0;
-  g.d.head[1] = 1;
-  set3(g.d.camera, 0, 0.04, 0.0, hip_z + 0.22);
+  g.head[0] = 0;
+  g.head[1] = 1;
+  kin_chain &H = g.chains[4];
+  H.kind = KIN_HEAD;
+  H.side = 0;
+  H.n = 2;
+  set3(H.tip, 0, 0.04, 0.0, hip_z + 0.22);
+  identity(H.tip_rot);
+  g.d.nchain = 5;
   return g;
 }
 
@@ -111,6 +129,12 @@ const kin_desc *bind(Geometry &g) {
   g.d.com = g.com;
   g.d.qmin = g.qmin;
   g.d.qmax = g.qmax;
+  for (int s = 0; s < 2; s++) {
+    g.chains[s].joints = g.leg[s];
+    g.chains[2 + s].joints = g.arm[s];
+  }
+  g.chains[4].joints = g.head;
+  g.d.chains = g.chains;
   return &g.d;
 }
 
@@ -162,12 +186,12 @@ void test_roundtrip(const char *name, Geometry &g, std::mt19937 &rng, int sample
       double q[6], pose[6], R[9], qs[6], pose2[6], R2[9];
       const Geometry *gg = &g;
       for (int k = 0; k < 6; k++) q[k] = 0.6 * U(rng);
-      double knee_sign = gg->axis[3 * gg->d.leg[side][3] + 1] > 0 ? 1.0 : -1.0;  // canonical +y bend
+      double knee_sign = gg->axis[3 * gg->leg[side][3] + 1] > 0 ? 1.0 : -1.0;  // canonical +y bend
       q[3] = knee_sign * (0.05 + 1.6 * (0.5 + 0.5 * U(rng)));
-      kin_leg_fk(m, side, q, pose, R);
-      int f = kin_leg_ik(m, side, pose, qs);
+      kin_leg_fk(m, side, q, nullptr, pose, R);
+      int f = kin_leg_ik(m, side, pose, nullptr, qs);
       if (f != 0) bad_flags++;
-      kin_leg_fk(m, side, qs, pose2, R2);
+      kin_leg_fk(m, side, qs, nullptr, pose2, R2);
       double dp = std::sqrt((pose[0] - pose2[0]) * (pose[0] - pose2[0]) + (pose[1] - pose2[1]) * (pose[1] - pose2[1]) +
                             (pose[2] - pose2[2]) * (pose[2] - pose2[2]));
       double dr = rot_angle_between(R, R2);
@@ -212,45 +236,45 @@ int main() {
   char err[256] = "";
   kin_model_create(bind(plain), &m, err, sizeof err);
   double q0[6] = {0, 0, 0, 0, 0, 0}, pose[6], q[6];
-  kin_leg_fk(m, KIN_LEFT, q0, pose, nullptr);
+  kin_leg_fk(m, KIN_LEFT, q0, nullptr, pose, nullptr);
   ok(std::fabs(pose[0]) < 1e-12 && std::fabs(pose[1] - 0.04) < 1e-12 && std::fabs(pose[2] + 0.23) < 1e-12 &&
          std::fabs(pose[3]) + std::fabs(pose[4]) + std::fabs(pose[5]) < 1e-12,
      "zero pose: left foot 0.23 m below the torso origin, under the hip");
   // Bent knee by hand: hip pitch -45 deg (thigh forward), knee 90 deg, ankle -45 deg: the ankle
   // comes back under the hip at sqrt(2) * 0.1 below it, the foot flat.
   double qb[6] = {0, 0, -M_PI / 4, M_PI / 2, M_PI / 4, 0};  // left ankle pitch axis is -y
-  kin_leg_fk(m, KIN_LEFT, qb, pose, nullptr);
+  kin_leg_fk(m, KIN_LEFT, qb, nullptr, pose, nullptr);
   double want_z = -(std::sqrt(2.0) * 0.1 + 0.03);
   char det[160];
   std::snprintf(det, sizeof det, "got %.9f %.9f %.9f pitch %.3g", pose[0], pose[1], pose[2], pose[4]);
   ok(std::fabs(pose[0]) < 1e-12 && std::fabs(pose[1] - 0.04) < 1e-12 && std::fabs(pose[2] - want_z) < 1e-12 &&
          std::fabs(pose[4]) < 1e-12,
      "bent knee: FK matches the hand computation", det);
-  int f = kin_leg_ik(m, KIN_LEFT, pose, q);
+  int f = kin_leg_ik(m, KIN_LEFT, pose, nullptr, q);
   std::snprintf(det, sizeof det, "got %.6f %.6f %.6f %.6f %.6f %.6f flags %d", q[0], q[1], q[2], q[3], q[4], q[5], f);
   ok(f == 0 && std::fabs(q[2] + M_PI / 4) < 1e-9 && std::fabs(q[3] - M_PI / 2) < 1e-9 &&
          std::fabs(q[4] - M_PI / 4) < 1e-9 && std::fabs(q[0]) + std::fabs(q[1]) + std::fabs(q[5]) < 1e-9,
      "bent knee: IK gives back the hand-made angles", det);
   // Right leg mirrored: hip pitch axis -y, so the same motion has opposite signs.
   double pr[6] = {pose[0], -pose[1], pose[2], 0, 0, 0};
-  f = kin_leg_ik(m, KIN_RIGHT, pr, q);
+  f = kin_leg_ik(m, KIN_RIGHT, pr, nullptr, q);
   ok(f == 0 && std::fabs(q[2] - M_PI / 4) < 1e-9 && std::fabs(q[3] + M_PI / 2) < 1e-9 && std::fabs(q[4] + M_PI / 4) < 1e-9,
      "bent knee, right leg: mirrored signs");
   // Hip yaw alone turns the foot about the hip yaw axis (-z): yaw +0.3 turns the foot by -0.3.
   double qy[6] = {0.3, 0, 0, 0, 0, 0};
-  kin_leg_fk(m, KIN_LEFT, qy, pose, nullptr);
+  kin_leg_fk(m, KIN_LEFT, qy, nullptr, pose, nullptr);
   ok(std::fabs(pose[5] + 0.3) < 1e-12, "hip yaw axis -z: foot yaw = -q");
 
   // 3. Unreachable targets: nearest reachable solution, flagged, never NaN.
   double far[6] = {0.0, 0.04, -0.5, 0, 0, 0};
-  f = kin_leg_ik(m, KIN_LEFT, far, q);
-  kin_leg_fk(m, KIN_LEFT, q, pose, nullptr);
+  f = kin_leg_ik(m, KIN_LEFT, far, nullptr, q);
+  kin_leg_fk(m, KIN_LEFT, q, nullptr, pose, nullptr);
   std::snprintf(det, sizeof det, "flags %d, foot z %.6f", f, pose[2]);
   ok((f & KIN_UNREACHABLE) && all_finite(q, 6) && std::fabs(pose[2] + 0.23) < 1e-6 && std::fabs(pose[1] - 0.04) < 1e-9,
      "too far below: straight leg toward the target, flagged", det);
   double far2[6] = {0.3, 0.2, -0.2, 0, 0.2, 0};
-  f = kin_leg_ik(m, KIN_LEFT, far2, q);
-  kin_leg_fk(m, KIN_LEFT, q, pose, nullptr);
+  f = kin_leg_ik(m, KIN_LEFT, far2, nullptr, q);
+  kin_leg_fk(m, KIN_LEFT, q, nullptr, pose, nullptr);
   // nearest point: on the line from the hip centre to the requested ankle, at full leg length
   double hip[3] = {0, 0.04, 0};
   double sp = std::sin(0.2), cp = std::cos(0.2);
@@ -271,34 +295,34 @@ int main() {
          std::fabs(pose[4] - 0.2) < 1e-9,
      "too far sideways: orientation kept, ankle at full reach toward the target", det);
   double close[6] = {0.0, 0.04, -0.035, 0, 0, 0};  // thigh = tibia: fully folded is reachable
-  f = kin_leg_ik(m, KIN_LEFT, close, q);
+  f = kin_leg_ik(m, KIN_LEFT, close, nullptr, q);
   ok(all_finite(q, 6), "target at the hip: finite answer");
   const double nan = NAN, inf = INFINITY;
   double bad[][6] = {{nan, 0.04, -0.2, 0, 0, 0}, {0, inf, -0.2, 0, 0, 0}, {0, 0.04, -inf, 0, 0, 0},
                      {0, 0.04, -0.2, nan, nan, nan}, {nan, nan, nan, nan, nan, nan}, {1e300, -1e300, 1e300, 1e300, 0, 0}};
   bool all_ok = true;
   for (auto &b : bad) {
-    f = kin_leg_ik(m, KIN_LEFT, b, q);
+    f = kin_leg_ik(m, KIN_LEFT, b, nullptr, q);
     bool fin = all_finite(q, 6);
     bool flagged = (f & (KIN_BAD_INPUT | KIN_UNREACHABLE)) != 0;
     all_ok = all_ok && fin && flagged;
   }
   ok(all_ok, "NaN / inf / huge targets: finite angles and a flag");
-  f = kin_leg_ik(m, KIN_LEFT, bad[0], q);
-  kin_leg_fk(m, KIN_LEFT, q, pose, nullptr);
+  f = kin_leg_ik(m, KIN_LEFT, bad[0], nullptr, q);
+  kin_leg_fk(m, KIN_LEFT, q, nullptr, pose, nullptr);
   ok((f & KIN_BAD_INPUT) && std::fabs(pose[2] + 0.2) < 1e-9 && std::fabs(pose[0]) < 1e-9,
      "NaN x: replaced by the zero-pose x, the rest honoured");
   double qnan[6] = {nan, 0, 0, 0, 0, 0};
-  f = kin_leg_fk(m, KIN_LEFT, qnan, pose, nullptr);
+  f = kin_leg_fk(m, KIN_LEFT, qnan, nullptr, pose, nullptr);
   ok((f & KIN_BAD_INPUT) && all_finite(pose, 6), "FK with a NaN angle: finite and flagged");
-  ok(kin_leg_ik(m, 2, far, q) == KIN_EINVAL && kin_leg_ik(nullptr, 0, far, q) == KIN_EINVAL, "bad side / NULL model");
+  ok(kin_leg_ik(m, 2, far, nullptr, q) == KIN_EINVAL && kin_leg_ik(nullptr, 0, far, nullptr, q) == KIN_EINVAL, "bad side / NULL model");
   kin_model_destroy(m);
 
   // 4. Joint limits: a pose beyond them is clamped and flagged.
   Geometry lim = make_geometry(0.1, 0.1, 0, 0, 0, 0, 0, 0.03, none, true);
   kin_model_create(bind(lim), &m, err, sizeof err);
   double twist[6] = {0, 0.04, -0.2, 0, 0, 2.9};
-  f = kin_leg_ik(m, KIN_LEFT, twist, q);
+  f = kin_leg_ik(m, KIN_LEFT, twist, nullptr, q);
   ok((f & KIN_JOINT_LIMIT) && std::fabs(q[0]) <= 2.5, "beyond the hip yaw limit: clamped, flagged");
 
   // 5. Centre of mass by hand: torso 1 kg + links 0.05 + 0.01 j kg at anchor + (0.001, 0.002, 0.003).
@@ -330,25 +354,25 @@ int main() {
 
   // 6. Arm FK/IK and head look-at.
   double qa[3] = {0.3, -0.5, 0.7}, hand[3], qi[3] = {0, 0, 0};
-  kin_arm_fk(m, KIN_LEFT, qa, hand, nullptr);
-  f = kin_arm_ik(m, KIN_LEFT, hand, qi);
+  kin_arm_fk(m, KIN_LEFT, qa, nullptr, hand, nullptr);
+  f = kin_arm_ik(m, KIN_LEFT, hand, nullptr, qi);
   double hand2[3];
-  kin_arm_fk(m, KIN_LEFT, qi, hand2, nullptr);
+  kin_arm_fk(m, KIN_LEFT, qi, nullptr, hand2, nullptr);
   double dh = std::sqrt((hand[0] - hand2[0]) * (hand[0] - hand2[0]) + (hand[1] - hand2[1]) * (hand[1] - hand2[1]) +
                         (hand[2] - hand2[2]) * (hand[2] - hand2[2]));
   std::snprintf(det, sizeof det, "error %.3g m, flags %d", dh, f);
   ok(f == 0 && dh < 1e-8, "arm IK reaches a hand position made by FK", det);
   double hfar[3] = {1.0, 1.0, 1.0};
   qi[0] = qi[1] = qi[2] = 0;
-  f = kin_arm_ik(m, KIN_LEFT, hfar, qi);
+  f = kin_arm_ik(m, KIN_LEFT, hfar, nullptr, qi);
   ok((f & KIN_UNREACHABLE) && all_finite(qi, 3), "arm IK out of reach: flagged, finite");
   bool look_ok = true;
   double worst_look = 0;
   for (int i = 0; i < 200; i++) {
     double t[3] = {0.3 + 2.0 * (U(rng) + 1), 1.5 * U(rng), -0.2 - 0.5 * (U(rng) + 1)};
     double qh[2], cpos[3], crot[9];
-    f = kin_head_look_at(m, t, qh);
-    kin_head_fk(m, qh, cpos, crot);
+    f = kin_head_look_at(m, t, nullptr, qh);
+    kin_head_fk(m, qh, nullptr, cpos, crot);
     // the optical axis is the camera frame's x: column 0 of R
     double d[3] = {t[0] - cpos[0], t[1] - cpos[1], t[2] - cpos[2]};
     double nd = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);

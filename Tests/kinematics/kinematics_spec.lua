@@ -1,11 +1,17 @@
 -- luacheck: std +busted
--- Kinematics of the real bodies (Config/robots/op3, Config/robots/darwin) through the Lua API:
--- FK(IK(x)) = x over the workspace, known poses,
--- unreachable and NaN targets, the OP3's COM against the reference, agreement with the URDF.
+-- Kinematics of every body (Config/robots: op3, darwin, the waistbot test body), built from its URDF
+-- and robot.lua's chains, through the Lua API: FK(IK(x)) = x over the workspace, known poses,
+-- unreachable and NaN targets, limits, look-at (the DARwIn-OP's camera is pitched 45 deg down at
+-- the zero pose), arms of any length, a waist, agreement with an independent reading of the URDF,
+-- and the OP3's and DARwIn-OP's mass models against their reference data.
 local kin = require('kinematics')
-local native = require('native')
+local Config = require('Config')
+local U = require('Tests.kinematics.urdf_read')
 
-local sin, cos, abs, sqrt = math.sin, math.cos, math.abs, math.sqrt
+local sin, cos, abs, sqrt, atan2, pi = math.sin, math.cos, math.abs, math.sqrt, math.atan2, math.pi
+local matmul, rpy_rot = U.matmul, U.rpy_rot
+
+local BODIES = { 'op3', 'darwin', 'waistbot' }
 
 -- Deterministic pseudo-random numbers (LCG) so a failure can be replayed.
 local function rng(seed)
@@ -16,43 +22,52 @@ local function rng(seed)
   end
 end
 
-local function matmul(A, B)
-  local C = {}
-  for i = 0, 2 do
-    for j = 0, 2 do
-      local v = 0
-      for k = 0, 2 do v = v + A[3 * i + k + 1] * B[3 * k + j + 1] end
-      C[3 * i + j + 1] = v
-    end
-  end
-  return C
-end
-
-local function rpy_rot(r, p, y)
-  local Rx = { 1, 0, 0, 0, cos(r), -sin(r), 0, sin(r), cos(r) }
-  local Ry = { cos(p), 0, sin(p), 0, 1, 0, -sin(p), 0, cos(p) }
-  local Rz = { cos(y), -sin(y), 0, sin(y), cos(y), 0, 0, 0, 1 }
-  return matmul(Rz, matmul(Ry, Rx))
-end
+local function transpose(A) return { A[1], A[4], A[7], A[2], A[5], A[8], A[3], A[6], A[9] } end
 
 -- Angle between two rotations (row-major 3x3), robust near zero.
 local function rot_dist(A, B)
-  local M = matmul({ A[1], A[4], A[7], A[2], A[5], A[8], A[3], A[6], A[9] }, B)
+  local M = matmul(transpose(A), B)
   local s = sqrt((M[8] - M[6]) ^ 2 + (M[3] - M[7]) ^ 2 + (M[4] - M[2]) ^ 2) / 2
   local c = (M[1] + M[5] + M[9] - 1) / 2
-  return math.atan2(s, c)
+  return atan2(s, c)
 end
 
 local function finite(v) return v == v and v ~= math.huge and v ~= -math.huge end
 
+local function dist3(a, b) return sqrt((a[1] - b[1]) ^ 2 + (a[2] - b[2]) ^ 2 + (a[3] - b[3]) ^ 2) end
+
 local function pose_error(p1, p2)
-  local dp = sqrt((p1[1] - p2[1]) ^ 2 + (p1[2] - p2[2]) ^ 2 + (p1[3] - p2[3]) ^ 2)
-  return dp, rot_dist(rpy_rot(p1[4], p1[5], p1[6]), rpy_rot(p2[4], p2[5], p2[6]))
+  return dist3(p1, p2), rot_dist(rpy_rot(p1[4], p1[5], p1[6]), rpy_rot(p2[4], p2[5], p2[6]))
 end
 
-for _, robot in ipairs({ 'op3', 'darwin' }) do
-  describe('kinematics of ' .. robot, function()
-    local m = kin.load({ robot = robot })
+-- Angle between the camera's optical axis (column 0 of R) and the direction to t.
+local function look_error(t, c)
+  local d = { t[1] - c[1], t[2] - c[2], t[3] - c[3] }
+  local x = { c.R[1], c.R[4], c.R[7] }
+  local cr = { d[2] * x[3] - d[3] * x[2], d[3] * x[1] - d[1] * x[3], d[1] * x[2] - d[2] * x[1] }
+  return atan2(sqrt(cr[1] ^ 2 + cr[2] ^ 2 + cr[3] ^ 2), d[1] * x[1] + d[2] * x[2] + d[3] * x[3])
+end
+
+local function zeros(m)
+  local q = {}
+  for i = 1, m.n do q[i] = 0 end
+  return q
+end
+
+-- The sign of a joint's axis along the torso's x, y or z (k = 1, 2, 3).
+local function sign(m, joint, k) return m:axis(joint)[k] > 0 and 1 or -1 end
+
+-- Leg angles from canonical ones (about +z, +x, +y, +y, +y, +x of the torso) through the axes.
+local function leg_q(m, side, c)
+  local q, idx = {}, m.leg_index[side == 'l' and 0 or 1]
+  local k_of = { 3, 1, 2, 2, 2, 1 }
+  for k = 1, 6 do q[k] = c[k] * sign(m, m.joints[idx[k]], k_of[k]) end
+  return q
+end
+
+for _, body in ipairs(BODIES) do
+  describe('kinematics of ' .. body, function()
+    local m = kin.load({ robot = body })
     local leg_len = -m:leg_fk('l', { 0, 0, 0, 0, 0, 0 })[3] -- torso origin to sole, zero pose
 
     it('FK(IK(x)) = x over sampled foot poses of the walking workspace', function()
@@ -76,30 +91,37 @@ for _, robot in ipairs({ 'op3', 'darwin' }) do
         end
       end
       print(string.format('# %s: %d poses solved exactly (%d flagged), worst %.3g m, %.3g rad',
-        robot, n, flagged, worst_p, worst_r))
+        body, n, flagged, worst_p, worst_r))
       assert.is_true(n > 5400) -- nearly all of this box is reachable within the limits
       assert.is_true(worst_p < 1e-6)
       assert.is_true(worst_r < 1e-6)
     end)
 
-    it('FK(IK(FK(q))) = FK(q) for random joint angles', function()
+    it('FK(IK(FK(q))) = FK(q) for random joint angles, whatever the axes\' senses', function()
       local R = rng(7)
-      local q, qs, p1, p2 = {}, {}, {}, {}
+      local qs, p1, p2 = {}, {}, {}
       local worst_p, worst_r = 0, 0
       for _, side in ipairs({ 'l', 'r' }) do
-        local ks = side == 'l' and 1 or -1 -- knee bend sign from the axes (OP3 and DARwIn: l +y, r -y)
         for _ = 1, 2000 do
           -- the solver's branch: knee bent backward, |ankle roll| < pi/2, foot pitched less than 90 deg
+          local c
           repeat
-            q[1], q[2], q[3] = R(-0.5, 0.5), R(-0.4, 0.4), R(-1.0, 0.6)
-            q[4], q[5], q[6] = ks * R(0.02, 2.0), R(-1.0, 1.0), R(-0.4, 0.4)
-          until abs(q[3] + q[4] - q[5]) < 1.4
-          m:leg_fk(side, q, p1)
-          local _, flags = m:leg_ik(side, p1, qs)
-          assert.are.equal(0, flags)
-          m:leg_fk(side, qs, p2)
-          local dp, dr = pose_error(p1, p2)
-          worst_p, worst_r = math.max(worst_p, dp), math.max(worst_r, dr)
+            c = { R(-0.5, 0.5), R(-0.4, 0.4), R(-1.0, 0.6), R(0.02, 2.0), R(-1.0, 1.0), R(-0.4, 0.4) }
+          until abs(c[3] + c[4] + c[5]) < 1.4
+          local q = leg_q(m, side, c)
+          local inside = true
+          for k = 1, 6 do
+            local lo, hi = m:limits(m.joints[m.leg_index[side == 'l' and 0 or 1][k]])
+            inside = inside and q[k] >= lo and q[k] <= hi
+          end
+          if inside then
+            m:leg_fk(side, q, p1)
+            local _, flags = m:leg_ik(side, p1, qs)
+            assert.are.equal(0, flags)
+            m:leg_fk(side, qs, p2)
+            local dp, dr = pose_error(p1, p2)
+            worst_p, worst_r = math.max(worst_p, dp), math.max(worst_r, dr)
+          end
         end
       end
       assert.is_true(worst_p < 1e-6 and worst_r < 1e-6, string.format('%.3g m %.3g rad', worst_p, worst_r))
@@ -110,13 +132,14 @@ for _, robot in ipairs({ 'op3', 'darwin' }) do
         local p = m:leg_fk(side, { 0, 0, 0, 0, 0, 0 })
         -- soles on z = 0 of the reference frame: the foot is origin.z below the torso origin
         assert.is_true(abs(p[3] + m.origin[3]) < 1e-12)
+        for k = 4, 6 do assert.is_true(abs(p[k]) < 1e-12) end -- the foot frame is torso-aligned
         local q, flags = m:leg_ik(side, p)
         assert.are.equal(0, flags)
         for k = 1, 6 do assert.is_true(abs(q[k]) < 1e-6, 'joint ' .. k .. ': ' .. q[k]) end
       end
     end)
 
-    it('stays exact while the knee nears straight and fully folded', function()
+    it('stays exact while the knee nears straight', function()
       for _, dz in ipairs({ 1e-9, 1e-6, 1e-3 }) do
         local p = m:leg_fk('l', { 0, 0, 0, 0, 0, 0 })
         p[3] = p[3] + dz
@@ -149,30 +172,32 @@ for _, robot in ipairs({ 'op3', 'darwin' }) do
 
     it('joint limits: a target beyond them is clamped and flagged', function()
       local y0 = m:leg_fk('l', { 0, 0, 0, 0, 0, 0 })[2]
-      local q, flags = m:leg_ik('l', 0, y0, -leg_len + 0.05, 0, 0, 2.0) -- hip yaw 2 rad, limit 1.2
-      -- both bodies limit hip yaw to +-1.2 rad (Config/robots/<robot>/robot.lua)
+      local lo, hi = m:limits('l_hip_yaw')
+      assert.is_true(lo < 0 and hi > 0)
+      local want = math.min(hi + 0.5, 3.0)   -- hip yaw beyond its upper limit: the foot's yaw
+      local q, flags = m:leg_ik('l', 0, y0, -leg_len + 0.05, 0, 0, sign(m, 'l_hip_yaw', 3) * want)
       assert.are.equal(kin.JOINT_LIMIT, flags)
-      assert.is_true(abs(q[1]) <= 1.2 + 1e-12)
+      assert.is_true(abs(q[1] - hi) < 1e-12)
     end)
 
     it('look_at points the optical axis at the target', function()
       local R = rng(3)
-      for _ = 1, 200 do
+      local worst, solved = 0, 0
+      for _ = 1, 300 do
         local t = { R(0.3, 4), R(-1.5, 1.5), R(-0.5, -0.1) - m.origin[3] }
         local qh, flags = m:look_at(t)
         if flags == 0 then
-          local c = m:head_fk(qh)
-          local d = { t[1] - c[1], t[2] - c[2], t[3] - c[3] }
-          local nd = sqrt(d[1] ^ 2 + d[2] ^ 2 + d[3] ^ 2)
-          local cosang = (d[1] * c.R[1] + d[2] * c.R[4] + d[3] * c.R[7]) / nd
-          assert.is_true(cosang > 1 - 1e-10)
+          worst, solved = math.max(worst, look_error(t, m:head_fk(qh))), solved + 1
         end
       end
+      print(string.format('# %s: look_at %d of 300 ground points within the limits, worst %.3g rad', body,
+        solved, worst))
+      assert.is_true(solved > 200)
+      assert.is_true(worst < 1e-9)
     end)
 
     it('camera pose: height above the sole, tilts with the torso', function()
-      local q = {}
-      for i = 1, m.n do q[i] = 0 end
+      local q = zeros(m)
       local cam = m:camera_pose(q, { 0, 0, 0 })
       local c0 = m:head_fk({ 0, 0 })
       assert.is_true(abs(cam.height - (c0[3] + m.origin[3])) < 1e-12)
@@ -182,8 +207,7 @@ for _, robot in ipairs({ 'op3', 'darwin' }) do
     end)
 
     it('legs_ik fills both legs into a whole-body array without garbage', function()
-      local q = {}
-      for i = 1, m.n do q[i] = 0 end
+      local q = zeros(m)
       local lp = { 0.01, m:leg_fk('l', { 0, 0, 0, 0, 0, 0 })[2], -leg_len + 0.04, 0, 0, 0.1 }
       local rp = { -0.01, m:leg_fk('r', { 0, 0, 0, 0, 0, 0 })[2], -leg_len + 0.04, 0, 0, -0.1 }
       assert.are.equal(0, m:legs_ik(lp, rp, q))
@@ -208,20 +232,84 @@ for _, robot in ipairs({ 'op3', 'darwin' }) do
       assert.is_true(grown < 1, string.format('%.1f KiB allocated', grown))
     end)
 
-    it('refuses a wrong side and a wrong model', function()
+    it('arm IK of the chain\'s length reaches hand points made by FK', function()
+      local R = rng(5)
+      local worst, n = 0, 0
+      for _, side in ipairs({ 'l', 'r' }) do
+        local idx = m.chain_index[side .. 'arm']
+        for _ = 1, 100 do
+          local qa, qs = {}, {}
+          for k = 1, #idx do
+            local lo, hi = m:limits(m.joints[idx[k]])
+            qa[k], qs[k] = math.max(lo, math.min(hi, R(-1, 1))), 0
+          end
+          local h = m:arm_fk(side, qa)
+          local _, flags = m:arm_ik(side, h, qs)
+          if flags == 0 then worst, n = math.max(worst, dist3(h, m:arm_fk(side, qs))), n + 1 end
+        end
+      end
+      print(string.format('# %s: arm IK (%d joints) solved %d of 200, worst %.3g m', body, m.arm_n[0], n, worst))
+      assert.is_true(n >= 190)
+      assert.is_true(worst < 1e-4)
+    end)
+
+    it('refuses a wrong side, a wrong model and an unknown joint', function()
       assert.has_error(function() m:leg_ik('x', 0, 0, 0, 0, 0, 0) end)
       assert.has_error(function() kin.leg_ik({}, 'l', 0, 0, 0, 0, 0, 0) end)
+      assert.has_error(function() m:axis("no_such_joint") end,
+        "kinematics: " .. body .. " has no joint 'no_such_joint'")
+    end)
+
+    it('agrees with an independent reading of the URDF: axes, every link\'s FK, the COM', function()
+      local robot = Config.load('robot', nil, { robot = body })
+      local u = U.read(Config.robot_file(robot.description, body))
+      local zero = U.fk(u, function() return 0 end)
+      for _, name in ipairs(m.joints) do
+        local j = assert(u.joints[name], name)
+        local a = U.apply(zero[j.child].R, j.axis)
+        local n = sqrt(a[1] ^ 2 + a[2] ^ 2 + a[3] ^ 2) -- the file's axes are unit vectors to 6 digits
+        assert.is_true(dist3({ a[1] / n, a[2] / n, a[3] / n }, m:axis(name)) < 1e-12, name)
+      end
+      local R = rng(11)
+      local worst_p, worst_r, worst_c = 0, 0, 0
+      for trial = 1, 30 do
+        local q = {}
+        for i = 1, m.n do q[i] = trial == 1 and 0 or R(-1, 1) end
+        local mine = m:link_poses(q)
+        local theirs = U.fk(u, function(jn) return q[m.index[jn] + 1] end)
+        -- my link pose: the displacement of the link from its zero pose (R, p); the URDF's: the
+        -- link frame, so R = R_u R_u0^T and p = p_u - R p_u0
+        for i, name in ipairs(m.joints) do
+          local child = u.joints[name].child
+          local T, T0 = theirs[child], zero[child]
+          local Rd = matmul(T.R, transpose(T0.R))
+          local a = U.apply(Rd, T0.p)
+          worst_r = math.max(worst_r, rot_dist(mine[i].R, Rd))
+          worst_p = math.max(worst_p, dist3(mine[i], { T.p[1] - a[1], T.p[2] - a[2], T.p[3] - a[3] }))
+        end
+        local M, s = 0, { 0, 0, 0 }
+        for name, l in pairs(u.links) do
+          if l.mass then
+            local c = U.apply(theirs[name].R, l.com)
+            for k = 1, 3 do s[k] = s[k] + l.mass * (theirs[name].p[k] + c[k]) end
+            M = M + l.mass
+          end
+        end
+        local c = m:com(q)
+        worst_c = math.max(worst_c, dist3(c, { s[1] / M, s[2] / M, s[3] / M }))
+      end
+      print(string.format('# %s: URDF vs kinematics: worst position %.3g m, rotation %.3g rad, COM %.3g m',
+        body, worst_p, worst_r, worst_c))
+      assert.is_true(worst_p < 1e-9 and worst_r < 1e-9 and worst_c < 1e-9)
     end)
   end)
 end
 
 describe('OP3 model against the reference data', function()
   local m = kin.load({ robot = 'op3' })
-  local q0 = {}
-  for i = 1, m.n do q0[i] = 0 end
 
   it('whole-body COM at the zero pose is the reference COM', function()
-    local c = m:com(q0)
+    local c = m:com(zeros(m))
     local ref = { -0.0105675, 7.17532e-05, 0.274312 } -- op3_reference.txt, reference frame
     for k = 1, 3 do
       assert.is_true(abs(c[k] + m.origin[k] - ref[k]) < 1e-6, k .. ': ' .. (c[k] + m.origin[k]))
@@ -246,135 +334,126 @@ describe('OP3 model against the reference data', function()
     local expect = { 0, 0, -0.4, 0.8, 0.4, 0 }
     for k = 1, 6 do assert.is_true(abs(q[k] - expect[k]) < 1e-9) end
   end)
+
+  it('camera level at the zero pose, at the reference CAMERA point', function()
+    local c = m:head_fk({ 0, 0 })
+    assert.is_true(dist3(c, { 0.02325, 0, 0.4939 - m.origin[3] }) < 1e-12)
+    assert.is_true(rot_dist(c.R, { 1, 0, 0, 0, 1, 0, 0, 0, 1 }) < 1e-12)
+  end)
 end)
 
--- A tiny URDF reader: joints (parent/child link, origin, axis) and link masses/COMs.
-local function read_urdf(path)
-  local f = assert(io.open(path, 'r'))
-  local text = f:read('*a')
-  f:close()
-  local function nums(s)
-    local t = {}
-    for v in (s or ''):gmatch('[^%s]+') do t[#t + 1] = tonumber(v) end
-    return t
-  end
-  local links, joints = {}, {}
-  for name, body in text:gmatch('<link%s+name="([^"]+)"%s*>(.-)</link>') do
-    local inertial = body:match('<inertial>(.-)</inertial>')
-    if inertial then
-      links[name] = {
-        mass = tonumber(inertial:match('<mass%s+value="([^"]+)"')),
-        com = nums(inertial:match('<origin[^>]-xyz="([^"]+)"')),
-      }
-    end
-  end
-  for name, body in text:gmatch('<joint%s+name="([^"]+)"[^>]*>(.-)</joint>') do
-    local origin = body:match('<origin[^>]*>') or ''
-    joints[name] = {
-      parent = body:match('<parent%s+link="([^"]+)"'),
-      child = body:match('<child%s+link="([^"]+)"'),
-      xyz = nums(origin:match('xyz="([^"]+)"')),
-      rpy = nums(origin:match('rpy="([^"]+)"')),
-      axis = nums(body:match('<axis%s+xyz="([^"]+)"')),
-    }
-  end
-  return links, joints
-end
+describe('DARwIn-OP model against the reference data (its own joint convention)', function()
+  local m = kin.load({ robot = 'darwin' })
+  local robot = Config.load('robot', nil, { robot = 'darwin' })
+  -- torso origin (between the hip yaw anchors) in the reference frame
+  local o = { -0.005, 0, 0.248152 }
 
-local function axis_rot(a, q)
-  local n = sqrt(a[1] ^ 2 + a[2] ^ 2 + a[3] ^ 2)
-  local x, y, z = a[1] / n, a[2] / n, a[3] / n
-  local c, s, t = cos(q), sin(q), 1 - cos(q)
-  return { t * x * x + c, t * x * y - s * z, t * x * z + s * y,
-    t * x * y + s * z, t * y * y + c, t * y * z - s * x,
-    t * x * z - s * y, t * y * z + s * x, t * z * z + c }
-end
-
-local function apply(R, v)
-  return { R[1] * v[1] + R[2] * v[2] + R[3] * v[3], R[4] * v[1] + R[5] * v[2] + R[6] * v[3],
-    R[7] * v[1] + R[8] * v[2] + R[9] * v[3] }
-end
-
-describe('OP3 model against Config/robots/op3/op3.urdf', function()
-  local path = native.root() .. '/Config/robots/op3/op3.urdf'
-  local fh = io.open(path, 'r')
-  if not fh then
-    it('needs Config/robots/op3/op3.urdf (not there yet)', function() pending('no URDF') end)
-    return
-  end
-  fh:close()
-  local m = kin.load({ robot = 'op3' })
-  local links, joints = read_urdf(path)
-  local by_child = {}
-  for name, j in pairs(joints) do by_child[j.child] = name end
-
-  -- URDF forward kinematics: world pose (R, p) of every link, body_link at the identity.
-  local function urdf_fk(q)
-    local poses = {}
-    local function pose(link)
-      if poses[link] then return poses[link] end
-      local jn = by_child[link]
-      if not jn then
-        poses[link] = { R = { 1, 0, 0, 0, 1, 0, 0, 0, 1 }, p = { 0, 0, 0 } }
-        return poses[link]
-      end
-      local j = joints[jn]
-      local P = pose(j.parent)
-      local rpy = j.rpy[1] and j.rpy or { 0, 0, 0 }
-      local Rj = rpy_rot(rpy[1], rpy[2], rpy[3])
-      local idx = m.index[jn]
-      if idx and j.axis[1] then Rj = matmul(Rj, axis_rot(j.axis, q[idx + 1])) end
-      local o = apply(P.R, j.xyz)
-      poses[link] = { R = matmul(P.R, Rj), p = { P.p[1] + o[1], P.p[2] + o[2], P.p[3] + o[3] } }
-      return poses[link]
-    end
-    for name in pairs(links) do pose(name) end
-    return poses
-  end
-
-  it('has every joint of the robot, with the same axes', function()
-    for _, name in ipairs(m.joints) do assert.is_not_nil(joints[name], name) end
+  it('mass and whole-body COM at the zero pose are the reference\'s', function()
+    assert.is_true(abs(m.mass - 2.92532) < 1e-5)
+    local c = m:com(zeros(m))
+    local ref = { -0.01907, 2.0e-05, 0.21413 } -- darwin_reference.txt, reference frame (rounded there)
+    for k = 1, 3 do assert.is_true(abs(c[k] + o[k] - ref[k]) < 5e-5, k .. ': ' .. (c[k] + o[k])) end
   end)
 
-  it('FK of every link and the whole-body COM agree with the URDF chain', function()
-    local R = rng(11)
-    local worst_p, worst_r, worst_c = 0, 0, 0
-    for trial = 1, 50 do
-      local q = {}
-      for i = 1, m.n do q[i] = trial == 1 and 0 or R(-1, 1) end
-      local mine = m:link_poses(q)
-      local theirs = urdf_fk(q)
-      -- my link frame: torso-aligned at the zero pose, the torso origin carried along; the URDF's
-      -- link frame: world-aligned at the zero pose, origin at its joint. Rotations must agree.
-      for i, name in ipairs(m.joints) do
-        worst_r = math.max(worst_r, rot_dist(mine[i].R, theirs[joints[name].child].R))
-      end
-      -- anchors: URDF link origin = joint anchor; in my frame, anchor(q) = R_j anchor0 + p_j, where
-      -- p_j is the link frame origin and anchor0 the zero-pose anchor relative to the torso origin
-      local zero = urdf_fk(setmetatable({}, { __index = function() return 0 end }))
-      for i, name in ipairs(m.joints) do
-        local T, T0 = theirs[joints[name].child], zero[joints[name].child]
-        local a = apply(mine[i].R, T0.p)
-        local pm = { a[1] + mine[i][1], a[2] + mine[i][2], a[3] + mine[i][3] }
-        worst_p = math.max(worst_p, sqrt((pm[1] - T.p[1]) ^ 2 + (pm[2] - T.p[2]) ^ 2 + (pm[3] - T.p[3]) ^ 2))
-      end
-      -- COM from the URDF's masses
-      local M, s = 0, { 0, 0, 0 }
-      for name, l in pairs(links) do
-        local T = theirs[name]
-        if T and l.mass then
-          local c = apply(T.R, l.com)
-          for k = 1, 3 do s[k] = s[k] + l.mass * (T.p[k] + c[k]) end
-          M = M + l.mass
-        end
-      end
-      local c = m:com(q)
-      for k = 1, 3 do worst_c = math.max(worst_c, abs(c[k] - s[k] / M)) end
+  it('the camera looks 45 deg down at head_tilt = 0 and level at +pi/4 (count 2560)', function()
+    local c = m:head_fk({ 0, 0 })
+    local h = sqrt(0.5) -- (the URDF holds pi/4 to 9 digits)
+    assert.is_true(abs(c.R[1] - h) < 1e-8 and abs(c.R[7] + h) < 1e-8)   -- optical axis (0.7071, 0, -0.7071)
+    assert.is_true(abs(c.R[3] - h) < 1e-8 and abs(c.R[9] - h) < 1e-8)   -- image up (0.7071, 0, 0.7071)
+    local l = m:head_fk({ 0, pi / 4 })
+    assert.is_true(rot_dist(l.R, { 1, 0, 0, 0, 1, 0, 0, 0, 1 }) < 1e-9)
+    -- the reference: optical centre then at (0.03598, 0, 0.42561)
+    assert.is_true(dist3(l, { 0.03598 - o[1], 0, 0.42561 - o[3] }) < 2e-5)
+  end)
+
+  it('a squat in the DARwIn-OP\'s signs matches the hand computation', function()
+    -- left: hip pitch (-y) +0.4 swings the thigh forward, knee (-y) -0.8 bends it, ankle pitch
+    -- (+y) -0.4 keeps the foot flat; thigh and tibia 0.093, hip centre (-0.005, 0.037, 0.2195)
+    local q = { 0, 0, 0.4, -0.8, -0.4, 0 }
+    local p = m:leg_fk('l', q)
+    local want = { 0, 0.037, 0.2195 - 0.186 * cos(0.4) - 0.0335 - o[3] }
+    for k = 1, 3 do assert.is_true(abs(p[k] - want[k]) < 1e-12, k .. ': ' .. p[k] .. ' vs ' .. want[k]) end
+    for k = 4, 6 do assert.is_true(abs(p[k]) < 1e-12) end
+    local pr = m:leg_fk('r', { 0, 0, -0.4, 0.8, 0.4, 0 })   -- the right leg: mirrored signs
+    assert.is_true(abs(pr[1] - want[1]) < 1e-12 and abs(pr[2] + want[2]) < 1e-12)
+    assert.is_true(abs(pr[3] - want[3]) < 1e-12)
+    local qi = m:leg_ik('l', p)
+    for k = 1, 6 do assert.is_true(abs(qi[k] - q[k]) < 1e-9) end
+  end)
+
+  it('ROBOTIS\' walk-ready counts through the device table give a mirror-symmetric crouch', function()
+    -- page 9 "walkready" of motion_4096.bin (darwin_reference.txt), counts for servo ids 1..20
+    local counts = { 1498, 2518, 1845, 2248, 2381, 1712, 2048, 2048, 2052, 2044, 1637, 2459, 2653, 1443, 2389,
+      1707, 2057, 2039, 2048, 2161 }
+    local q = {}
+    for _, d in ipairs(robot.devices) do -- one row per servo: its joint, id, direction and zero
+      local j = rawget(d, 'joint')
+      if j then q[m.index[j] + 1] = d.direction * (counts[d.id] - d.zero) * 2 * pi / 4096 end
     end
-    print(string.format('# URDF vs kinematics: worst anchor %.3g m, rotation %.3g rad, COM %.3g m',
-      worst_p, worst_r, worst_c))
-    assert.is_true(worst_p < 1e-9)
-    assert.is_true(worst_r < 1e-9)
-    assert.is_true(worst_c < 1e-6)
+    local feet = {}
+    for s, side in ipairs({ 'l', 'r' }) do
+      local q6 = {}
+      for k = 1, 6 do q6[k] = q[m.leg_index[s - 1][k]] end
+      feet[s] = m:leg_fk(side, q6)
+    end
+    local l, r = feet[1], feet[2]
+    print(string.format('# walk-ready: feet at x %.4f, y +-%.4f, z %.4f below the torso origin, pitched %.3f rad',
+      l[1], l[2], -l[3], l[5]))
+    -- mirror images within a count or two, parallel, flat across (roll), the knees bent
+    assert.is_true(abs(l[1] - r[1]) < 1e-3 and abs(l[2] + r[2]) < 1e-3 and abs(l[3] - r[3]) < 1e-3)
+    assert.is_true(abs(l[5] - r[5]) < 0.01 and abs(l[4]) < 0.02 and abs(r[4]) < 0.02 and abs(l[6]) < 0.01)
+    assert.is_true(-l[3] < 0.2481 - 0.015)            -- hips lowered (straight legs: 0.2482)
+    assert.is_true(l[5] < -0.1 and l[5] > -0.4)         -- the torso leans forward over flat feet
+    assert.is_true(l[1] > 0 and l[2] > 0.030)           -- feet ahead of the torso origin, hips apart
+  end)
+end)
+
+describe('waistbot: a waist carries the arms and the head', function()
+  local m = kin.load({ robot = 'waistbot' })
+  local robot = Config.load('robot', nil, { robot = 'waistbot' })
+
+  it('has 23 joints in an order that is not the tree\'s, and arms of 4', function()
+    assert.equals(23, m.n)
+    assert.equals('waist_yaw', robot.joints[23]) -- the parent of arms and head comes last
+    assert.equals(4, m.arm_n[0])
+    assert.equals(4, m.arm_n[1])
+  end)
+
+  it('turning the waist turns the hands and the camera about its axis, not the feet', function()
+    local q = zeros(m)
+    q[m.index.waist_yaw + 1] = 0.5
+    local qa = { 0.2, -0.3, 0.4, 0.5 }
+    local h0, h1 = m:arm_fk('l', qa), m:arm_fk('l', qa, nil, q)
+    local a = { -0.001, 0, 0 }   -- the waist axis: vertical through x = -0.001, y = 0
+    local function turned(p)
+      local x, y = p[1] - a[1], p[2] - a[2]
+      return { a[1] + cos(0.5) * x - sin(0.5) * y, a[2] + sin(0.5) * x + cos(0.5) * y, p[3] }
+    end
+    assert.is_true(dist3(h1, turned(h0)) < 1e-12)
+    local c0, c1 = m:head_fk({ 0.1, 0.2 }), m:head_fk({ 0.1, 0.2 }, nil, q)
+    assert.is_true(dist3(c1, turned(c0)) < 1e-12)
+    assert.is_true(pose_error(m:leg_fk('l', { 0, 0, 0, 0, 0, 0 }, nil, q), m:leg_fk('l', { 0, 0, 0, 0, 0, 0 })) < 1e-15)
+    -- the whole-body form agrees: camera_pose with the waist turned
+    local cam = m:camera_pose(q, { 0, 0, 0 })
+    local c2 = m:head_fk({ 0, 0 }, nil, q)
+    assert.is_true(dist3(cam, c2) < 1e-12)
+  end)
+
+  it('look_at and arm IK work with the waist turned', function()
+    local q = zeros(m)
+    q[m.index.waist_yaw + 1] = -0.7
+    local R = rng(17)
+    local worst_look, worst_arm = 0, 0
+    for _ = 1, 100 do
+      local t = { R(0.5, 3), R(-1, 1), -0.25 }
+      local qh, flags = m:look_at(t, nil, q)
+      if flags == 0 then worst_look = math.max(worst_look, look_error(t, m:head_fk(qh, nil, q))) end
+      local qa = { R(-1, 1), R(-1, 1), R(-1, 1), R(-1, 1) }
+      local h = m:arm_fk('r', qa, nil, q)
+      local qs, f2 = m:arm_ik('r', h, { 0, 0, 0, 0 }, q)
+      if f2 == 0 then worst_arm = math.max(worst_arm, dist3(h, m:arm_fk('r', qs, nil, q))) end
+    end
+    assert.is_true(worst_look < 1e-9, worst_look)
+    assert.is_true(worst_arm < 1e-4, worst_arm)
   end)
 end)

@@ -1,9 +1,9 @@
 -- luacheck: std +busted
 -- Who drives which joint (Player/Motion/control.lua): every tick starts from the hold pose, each
 -- state writes only the joints it owns, a joint no state owns holds and follows outside commands,
--- a joint a caller took gets the caller's command. Run on fake bodies made from the OP3's data: an
--- extra joint no state owns (a waist yaw), an extra arm joint, another bus order, no arms in the
--- walk config.
+-- a joint a caller took gets the caller's command. Run on the waistbot test body (the OP3 with a
+-- waist yaw that carries the arms and head, a wrist per arm, the bus order legs first and the waist
+-- last) and on the OP3 with another bus order or no arms in the walk config.
 local Config = require('Config')
 local kin = require('kinematics')
 local control = require('Motion.control')
@@ -15,38 +15,24 @@ local function copy(v)
   return t
 end
 
-local BASE_ROBOT = Config.export('robot')
-local BASE_WALK = Config.export('walk')
-
--- A body from the OP3's data. opts: waist (a waist yaw, third on the bus), wrist (an extra joint
--- at the end of the left arm), reorder (another bus order), arms (the walk config's arms).
+-- A controller on a body. opts: waist (the waistbot, whose waist no state owns), wrist (the
+-- waistbot too: its wrists are extra arm joints), reorder (the body's joints in another bus order),
+-- arms (the walk config's arms).
 local function fake(opts)
-  local robot, params = copy(BASE_ROBOT), copy(BASE_WALK)
-  local kj = robot.kinematics.joints
-  if opts.waist then
-    table.insert(robot.joints, 3, 'waist_yaw')
-    robot.limits.waist_yaw = { -1, 1 }
-    robot.groups.waist = { 'waist_yaw' }
-    kj.waist_yaw = { axis = { 0, 0, 1 }, anchor = { 0, 0, 0.3 }, mass = 0.05, com = { 0, 0, 0.3 } }
-  end
-  if opts.wrist then
-    table.insert(robot.joints, 'l_wrist')
-    robot.limits.l_wrist = { -1.5, 1.5 }
-    table.insert(robot.groups.larm, 'l_wrist')
-    kj.l_wrist = { parent = 'l_el', axis = { 0, 1, 0 }, anchor = { -0.001, 0.3, 0.38 }, mass = 0.02,
-      com = { -0.001, 0.31, 0.38 } }
-  end
+  local name = (opts.waist or opts.wrist) and 'waistbot' or 'op3'
+  local robot = copy(Config.export('robot', { robot = name }))
+  local params = copy(Config.export('walk', { robot = name }))
   if opts.reorder then
-    -- group by group in another order (parents still before their children: Lib/kinematics asks it)
+    -- group by group in another order than the tree's
     local r = {}
-    for _, g in ipairs({ 'rleg', 'lleg', 'rarm', 'waist', 'larm', 'head' }) do
-      for _, name in ipairs(robot.groups[g] or {}) do r[#r + 1] = name end
+    for _, g in ipairs({ 'rleg', 'waist', 'larm', 'head', 'lleg', 'rarm' }) do
+      for _, j in ipairs(robot.groups[g] or {}) do r[#r + 1] = j end
     end
     assert(#r == #robot.joints)
     robot.joints = r
   end
   if opts.arms then params.arms = opts.arms end
-  local model = assert(kin.new(robot))
+  local model = assert(kin.new(robot, Config.robot_file(robot.description, name), name))
   local c = control.new({ robot = robot, params = params, model = model })
   return c, robot, params
 end
@@ -92,7 +78,7 @@ describe('motion on a body with a joint no state owns (a waist yaw)', function()
   it('stands, walks and kicks with the waist held where it was commanded', function()
     local c = fake({ waist = true })
     local w = c.ji.waist_yaw
-    assert.equals(3, w)
+    assert.equals(#c.robot.joints, w) -- the waistbot's bus: legs first, the waist last
     c.q[w], c.h[w] = 0.3, 1 -- the hold pose when motion starts: what the actuators hold
     local walked = exercise(c)
     assert.is_true(walked > 0.3, 'walked ' .. walked)
@@ -153,7 +139,7 @@ describe('motion on other bodies', function()
   it('walks and kicks with the joints in another bus order', function()
     local c = fake({ waist = true, reorder = true })
     assert.equals('r_hip_yaw', c.robot.joints[1])
-    assert.equals('head_tilt', c.robot.joints[c.n])
+    assert.equals('r_wrist', c.robot.joints[c.n])
     local walked = exercise(c)
     assert.is_true(walked > 0.3, 'walked ' .. walked)
   end)
@@ -165,7 +151,7 @@ describe('motion on other bodies', function()
     exercise(c)
     assert.equals(0.2, c.q[wr])
     assert.equals(0, c.owner[wr])
-    local arms = copy(BASE_WALK.arms)
+    local arms = copy(Config.export('walk', { robot = 'waistbot' }).arms)
     arms.l.posture.l_wrist = -0.5
     c = fake({ wrist = true, arms = arms })
     run(c, 1.5)

@@ -11,13 +11,11 @@ return {
     linear_damping = 0,          -- no air drag on links (a 3 kg robot is not slowed by air)
   },
 
-  -- Position servos (ROBOTIS XM430-W350 class). Each servo is an ODE hinge velocity motor:
-  -- target velocity = p_gain * (command - position), clamped to the joint's velocity limit (URDF),
-  -- with at most hardness * torque limit (URDF effort) to reach it.
+  -- Position servos: each joint is driven by its own actuator model (robot.lua `actuator`, the models
+  -- in Config/common/actuators.lua): an ODE hinge velocity motor, target velocity = gain * (command -
+  -- position), clamped to the joint's velocity limit (URDF), with at most hardness * torque limit
+  -- (URDF effort) to reach it; torque off: the URDF's damping and friction.
   servo = {
-    p_gain = 30,                 -- 1/s, position loop gain (a 33 ms first-order response unloaded)
-    resolution = 4096,           -- encoder steps per turn (positions are quantised to it)
-    -- torque-disabled joints: the gear train's back-drive damping and friction (URDF <dynamics>)
     temperature = 40,            -- deg C reported
   },
 

@@ -28,14 +28,17 @@ int main() {
     {
       sim::World w(p, m, 1, 1);
       std::vector<double> q(nj, 0.0);
-      for (int j = 0; j < nj; j++) q[j] = 0.03 * (j + 1) * (j % 2 ? -1 : 1);
+      for (int j = 0; j < nj; j++) {
+        const sim::Link &l = m.links[m.joint_link(p.joints[j])];
+        q[j] = std::min(std::max(0.03 * (j + 1) * (j % 2 ? -1 : 1), l.lower), l.upper);
+      }
       w.place_robot(0, 0, 0, 0.3, q.data());
       std::vector<double> got = w.joint_positions(0);
       double err = 0;
       for (int j = 0; j < nj; j++) err = std::max(err, std::fabs(got[j] - q[j]));
       printf("# placed vs hinge angles: max difference %.2e rad\n", err);
       check(err < 1e-9, "joint angles follow the URDF axes (right-hand rule)");
-      // head_tilt positive about -y: the camera looks up
+      // head_tilt positive about -y: the camera looks up (its optical axis rises by the tilt)
       sim::Vec3 c0, c1;
       sim::Mat3 R0, R1;
       std::vector<double> z(nj, 0.0);
@@ -46,13 +49,15 @@ int main() {
       z[tilt] = 0.4;
       w.place_robot(0, 0, 0, 0, z.data());
       w.camera_pose(0, &c1, &R1);
-      check(R0.col(0).z() < 1e-9 && R1.col(0).z() > 0.35, "head_tilt > 0 turns the camera's axis up");
+      const double rise = std::asin(R1.col(0).z()) - std::asin(R0.col(0).z());
+      const sim::Vec3 ta = m.links[m.joint_link("head_tilt")].axis;
+      check(std::fabs(rise - 0.4 * -ta.y()) < 1e-9, "head_tilt turns the camera's axis about its URDF axis");
     }
 
     // ---- standing: 60 s with the stance commanded
     {
       sim::World w(p, m, 1, 7);
-      std::vector<double> q = sim::stance_pose(p.joints);
+      std::vector<double> q = sim::stance_pose(m, p.joints);
       w.set_command(0, q.data(), nullptr, nullptr);
       w.reset();
       sim::Sensors s;

@@ -1,5 +1,5 @@
-// model: URDF -> sim::Model through liburdfdom, with errors that name the file and the element.
-#include "model.h"
+// description: URDF -> desc::Model through liburdfdom, with errors that name the file and the element.
+#include "description/description.h"
 
 #include <console_bridge/console.h>
 #include <urdf_parser/urdf_parser.h>
@@ -7,9 +7,11 @@
 #include <cmath>
 #include <fstream>
 #include <functional>
+#include <map>
+#include <set>
 #include <sstream>
 
-namespace sim {
+namespace desc {
 
 int Model::link_index(const std::string &n) const {
   for (size_t i = 0; i < links.size(); i++) if (links[i].name == n) return (int)i;
@@ -27,6 +29,16 @@ double Model::total_mass() const {
   double m = 0;
   for (const Link &l : links) m += l.mass;
   return m;
+}
+void Model::zero_pose(std::vector<Vec3> *pos, std::vector<Mat3> *rot) const {
+  pos->assign(links.size(), Vec3::Zero());
+  rot->assign(links.size(), Mat3::Identity());
+  for (size_t i = 0; i < links.size(); i++) {
+    const Link &l = links[i];
+    if (l.parent < 0) continue;
+    (*pos)[i] = (*pos)[l.parent] + (*rot)[l.parent] * l.origin;
+    (*rot)[i] = (*rot)[l.parent] * l.origin_rot;
+  }
 }
 
 namespace {
@@ -49,7 +61,7 @@ bool finite(const Vec3 &v) { return std::isfinite(v.x()) && std::isfinite(v.y())
 
 }  // namespace
 
-int model_load(const std::string &path, Model *out, std::string *err) {
+int load(const std::string &path, Model *out, std::string *err) {
   std::ifstream in(path);
   if (!in) { *err = path + ": cannot open the robot file"; return -1; }
   std::stringstream ss;
@@ -68,12 +80,27 @@ int model_load(const std::string &path, Model *out, std::string *err) {
   urdf::LinkConstSharedPtr root = u->getRoot();
   if (!root) { *err = path + ": no root link"; return -1; }
 
+  // A link that is the child of two joints makes a cycle that urdfdom does not report (it keeps
+  // the last parent): refuse it here, naming the link and both joints.
+  std::map<std::string, std::string> parent_joint;
+  for (const auto &kv : u->joints_) {
+    const std::string &child = kv.second->child_link_name;
+    auto it = parent_joint.find(child);
+    if (it != parent_joint.end()) {
+      *err = path + ": link '" + child + "' is the child of two joints ('" + it->second + "' and '" + kv.first +
+             "'): the joints form a cycle";
+      return -1;
+    }
+    parent_joint[child] = kv.first;
+  }
   std::string e;
+  std::set<std::string> seen;
   // Depth-first from the root so parents come first.
   std::function<void(const urdf::LinkConstSharedPtr &, int)> visit =
       [&](const urdf::LinkConstSharedPtr &ul, int parent) {
     if (!e.empty()) return;
     const std::string where = path + ": link '" + ul->name + "'";
+    if (!seen.insert(ul->name).second) { e = where + ": reached twice, the joints form a cycle"; return; }
     urdf::JointConstSharedPtr uj = ul->parent_joint;
     if (uj && uj->type == urdf::Joint::FIXED && !ul->inertial) {
       // massless fixed link: a frame on the parent
@@ -153,8 +180,14 @@ int model_load(const std::string &path, Model *out, std::string *err) {
   };
   visit(root, -1);
   if (!e.empty()) { *err = e; return -1; }
+  for (const auto &kv : u->links_) {
+    if (!seen.count(kv.first)) {
+      *err = path + ": link '" + kv.first + "' is not connected to the root link '" + root->name + "'";
+      return -1;
+    }
+  }
   *out = std::move(m);
   return 0;
 }
 
-}  // namespace sim
+}  // namespace desc
