@@ -8,8 +8,8 @@
 # k/n (first attempt): up with one stand-up motion per side (a back stand-up rolls onto the front
 # and then plays the front one once); eventually: up within 20 s, retries allowed.
 #   [ROBOT=name] [ROBOT_ID=N] [N=14] [WS="w1 w2 ..."] Tests/motion/standup_stats.sh [-v]
-# WS: the walking times before the push (s), tried in order until N trials fell; the default set
-# was not used to tune the stand-ups (Config/robots/darwin/keyframes: tuned on 1.9..2.8 by 0.1).
+# WS: the walking times before the push (s), tried in order until N trials fell. Tune a stand-up
+# on other moments (e.g. 1.9..2.8 by 0.1) than the default set, so that this figure is held out.
 set -u
 source "$(dirname "$0")/kick_sim.sh"
 LOGDIR=$HRP_ROOT/build/test-logs/standup
