@@ -14,6 +14,6 @@ return {
     sideways = { command = 0.12, least = 0.10 },
     backward = { command = 0.12, least = 0.10 },
     turn = { command = 1.7, least = 1.0 },
-    kick = { least = 1.0 },
+    kick = { least = 1.2 },                       -- reaches 1.30-1.38 m (seeds 1-3)
   },
 }
