@@ -131,6 +131,21 @@ function scenarios.forward(v)
   note('start to stop: %.2f m', math.sqrt((b.x - t0.x) ^ 2 + (b.y - t0.y) ^ 2))
 end
 
+-- stands still in stance for `seconds` (default 60): no fall, the torso stays put
+function scenarios.stand(seconds)
+  seconds = tonumber(seconds) or 60
+  start_clean()
+  local a = Sim.truth()
+  local falls0 = Motion.falls()
+  local fell = wait_until(function() return Sim.truth().fallen or Motion.falls() > falls0 end, seconds)
+  local b = Sim.truth()
+  local moved = math.sqrt((b.x - a.x) ^ 2 + (b.y - a.y) ^ 2)
+  note('stand: %.0f s in stance, the torso moved %.4f m, pitch %.3f rad', seconds, moved, b.pitch)
+  tap(not fell and not b.fallen and Motion.state() == 'stance',
+    string.format('stands %.0f s without a fall', seconds))
+  tap(moved < 0.01, string.format('stands still (the torso moved %.4f m)', moved))
+end
+
 -- (commands a little above the goal speeds: the feet slip a little on the carpet)
 function scenarios.sideways(v)
   local goal = targets.sideways
