@@ -263,7 +263,7 @@ end
 -- Tests/motion/kick_setup.lua); both feet unless a side is given. Figures: the toe's forward speed
 -- just before contact (joint velocities + FK + the torso's truth), the ball's speed after it and
 -- 0.3 s later (rolling by then), the distance, the robot's turn. A ball rolling at 1.6 m/s rolls
--- about 2 m on this carpet (Config/Sim/sim.lua); off the foot it slides first and keeps ~0.6 of
+-- about 2 m on this carpet (Config/platforms/Sim/sim.lua); off the foot it slides first and keeps ~0.6 of
 -- its speed unless the foot gives it topspin.
 local function kick_one(side, gap)
   local r0 = ks.setup(Sim, Motion, wait, side, gap)
