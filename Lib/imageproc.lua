@@ -1,7 +1,7 @@
 -- The colour lookup-table pipeline (Modules/imageproc, libhrpimg) from LuaJIT.
 --
 --   local imageproc = require('imageproc')
---   local lut = assert(imageproc.load_lut('Config/Sim/lut.lut'))  -- or imageproc.lut_from_colors(colors)
+--   local lut = assert(imageproc.load_lut('Config/site/venue.lut'))  -- or imageproc.lut_from_colors(colors)
 --   local p = imageproc.pipeline{ width = 640, height = 480, scale = 2, block = 4, lut = lut }
 --   p:process(frame.yuyv)           -- labels (p.labels, p.wa x p.ha), blocks (p.blocks, p.wb x p.hb)
 --   local n, regs = p:regions(1, 4)       -- regions of colour bit 1 in the label image, largest first

@@ -8,9 +8,38 @@ local shm = require('shm')
 
 local M = {}
 
--- the sole plate (shared/robots/op3_reference.txt, ank_roll_link sole_box): front edge ahead of the
--- ankle, centre outward of it, plate 8 mm thick
-M.TOE, M.SOLE_Y, M.PLATE = 0.0635, 0.0125, 0.008
+-- The left sole plate of the body (ROBOT) from its description: the URDF collision box named
+-- sole* on the link the left leg's last joint moves, the front-most if there are several, against
+-- the l_sole frame. TOE: its front face ahead of the foot frame (the sole point below the ankle);
+-- SOLE_Y: its centre outward of it; PLATE: its thickness.
+local function sole_plate()
+  local Config = require('Config')
+  local robot = Config.load('robot')
+  local f = assert(io.open(Config.robot_file(robot.description), 'r'))
+  local urdf = f:read('*a')
+  f:close()
+  local function nums(str) local t = {} for x in str:gmatch('[-%d.eE+]+') do t[#t + 1] = tonumber(x) end return t end
+  local function child_of(joint)
+    local body = urdf:match('<joint name="' .. joint .. '".-</joint>')
+    return body and body:match('<child link="([^"]+)"')
+  end
+  local leg = robot.groups.lleg
+  local link = assert(child_of(leg[#leg]), 'kick_setup: no link for ' .. leg[#leg])
+  local sole = assert(urdf:match('<joint name="[^"]*" type="fixed">%s*<parent link="' .. link ..
+    '"/>%s*<child link="l_sole"/>%s*<origin xyz="([^"]+)"'), 'kick_setup: no l_sole frame on ' .. link)
+  sole = nums(sole)
+  local body = assert(urdf:match('<link name="' .. link .. '">(.-)</link>'))
+  local best
+  for origin, size in body:gmatch('<collision name="sole[^"]*">%s*<origin xyz="([^"]+)"[^>]*>%s*' ..
+      '<geometry><box size="([^"]+)"/></geometry>') do
+    local o, sz = nums(origin), nums(size)
+    local front = o[1] + sz[1] / 2
+    if not best or front > best.front then best = { front = front, y = o[2], z = sz[3] } end
+  end
+  assert(best, 'kick_setup: no sole* collision box on ' .. link)
+  return best.front - sole[1], best.y - sole[2], best.z
+end
+M.TOE, M.SOLE_Y, M.PLATE = sole_plate()
 
 local model
 local function get_model()

@@ -1,4 +1,4 @@
--- Tunes the kick's phases (Config/<PLATFORM>/walk.lua `kick`) in the sim by the cross-entropy
+-- Tunes the kick's phases (the body's walk.lua `kick`, Config/robots/<ROBOT>) in the sim by the cross-entropy
 -- method: each generation samples parameter sets around the mean, sets them in the running motion
 -- process (Walk.set), kicks with both feet at two ball gaps and two lateral offsets
 -- (kick_measure.lua) and moves the mean towards the best. Score per set: the shortest kick plus
@@ -10,7 +10,7 @@
 -- generation, OUT_mean.lua the next generation's mean (the more robust choice). KICK_PARAMS=file.lua
 -- (such a file) starts from it; SPREAD scales the sampling spread (default 1; smaller to refine).
 -- Run by Tests/motion/kick_tune.sh. To keep a result, copy its values into the kick phases of
--- Config/<PLATFORM>/walk.lua (kick.leg.5 holds kick.leg.4's targets) and check it with kick_sweep.sh.
+-- Config/robots/<ROBOT>/walk.lua (kick.leg.5 holds kick.leg.4's targets) and check it with kick_sweep.sh.
 -- luacheck: globals Sim Motion wait arg Body
 package.path = os.getenv('HRP_ROOT') .. '/Tests/motion/?.lua;' .. package.path
 local km = require('kick_measure')

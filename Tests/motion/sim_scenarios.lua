@@ -131,6 +131,21 @@ function scenarios.forward(v)
   note('start to stop: %.2f m', math.sqrt((b.x - t0.x) ^ 2 + (b.y - t0.y) ^ 2))
 end
 
+-- stands still in stance for `seconds` (default 60): no fall, the torso stays put
+function scenarios.stand(seconds)
+  seconds = tonumber(seconds) or 60
+  start_clean()
+  local a = Sim.truth()
+  local falls0 = Motion.falls()
+  local fell = wait_until(function() return Sim.truth().fallen or Motion.falls() > falls0 end, seconds)
+  local b = Sim.truth()
+  local moved = math.sqrt((b.x - a.x) ^ 2 + (b.y - a.y) ^ 2)
+  note('stand: %.0f s in stance, the torso moved %.4f m, pitch %.3f rad', seconds, moved, b.pitch)
+  tap(not fell and not b.fallen and Motion.state() == 'stance',
+    string.format('stands %.0f s without a fall', seconds))
+  tap(moved < 0.01, string.format('stands still (the torso moved %.4f m)', moved))
+end
+
 -- (commands a little above the goal speeds: the feet slip a little on the carpet)
 function scenarios.sideways(v)
   local goal = targets.sideways
@@ -248,7 +263,7 @@ end
 -- Tests/motion/kick_setup.lua); both feet unless a side is given. Figures: the toe's forward speed
 -- just before contact (joint velocities + FK + the torso's truth), the ball's speed after it and
 -- 0.3 s later (rolling by then), the distance, the robot's turn. A ball rolling at 1.6 m/s rolls
--- about 2 m on this carpet (Config/Sim/sim.lua); off the foot it slides first and keeps ~0.6 of
+-- about 2 m on this carpet (Config/platforms/Sim/sim.lua); off the foot it slides first and keeps ~0.6 of
 -- its speed unless the foot gives it topspin.
 local function kick_one(side, gap)
   local r0 = ks.setup(Sim, Motion, wait, side, gap)

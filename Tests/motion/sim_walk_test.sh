@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Walking scenarios of the body ROBOT (default op3) in the simulator's lockstep mode (the motion
-# process alone, no behavior): forward for 30 s with heading drift < 10 deg and a clean stop into
+# process alone, no behavior): standing 60 s; forward for 30 s with heading drift < 10 deg and a clean stop into
 # stance; sideways and backwards; turning on the spot; 60 s of random commands; pushed over
 # forwards and backwards: fall detected within 0.3 s, stands up, walks again; a kick with either
 # foot sends a ball (its centre 0.1 m ahead of the toe) far and the robot stays up; the README's
@@ -16,7 +16,7 @@ LOGDIR="$HRP_ROOT/build/test-logs/motion"
 mkdir -p "$LOGDIR"
 BASE_ID=${ROBOT_ID:-9200}
 SCEN=("$@")
-[ ${#SCEN[@]} -eq 0 ] && SCEN=(forward sideways turn backward random push kick head)
+[ ${#SCEN[@]} -eq 0 ] && SCEN=(stand forward sideways turn backward random push kick head)
 
 if [ ! -x build/bin/dcm_sim ]; then
   echo "not ok 1 - walking scenarios: the simulator (build/bin/dcm_sim) is not built"

@@ -2,7 +2,7 @@
 -- lockstep). Like sim_scenes.lua: this script is a lockstep participant that holds the robot in a
 -- stance, places it (sim block requests), points the head, lets the world settle, takes a rendered
 -- frame through the sim camera driver and the vision pipeline (Player/Vision), and compares the
--- goal posts found with the sim's truth (posts of both goals from Config/Sim/sim.lua).
+-- goal posts found with the sim's truth (posts of both goals from Config/platforms/Sim/sim.lua).
 -- Two kinds of scene: a goal ahead (robot anywhere on the field facing roughly towards one of the
 -- goals, head across the range that keeps the horizon in view), and no goal in view (every post
 -- projects outside the image). Prints one line per scene and TAP results.

@@ -1,17 +1,18 @@
 -- The DARwIn-OP's sizes and speeds for the behavior (Player/BodyFSM, HeadFSM; overlaid on
 -- Config/common/behavior.lua, which holds the timing, game and field numbers). Units: m, s, rad.
--- For now the OP3's numbers (Config/robots/op3/behavior.lua): to be tuned for the smaller body
--- (shorter legs, lower camera: ground_z, scan_distances, kick_x above all).
+-- The OP3's numbers (Config/robots/op3/behavior.lua) scaled to the smaller body where they depend on
+-- its size: the torso origin 0.225 m up when walking (OP3 0.25), the camera 0.18 m above it, the toe
+-- 0.052 m ahead of the ankle and the sole's centre 0.048 m out from the middle (OP3 0.064, 0.058).
 return {
   head = {
     scan_pan = 1.4,            -- rad, half-range of the scan (the head pan's reach)
     scan_distances = { 2.5, 0.45 }, -- m: the scan's far and near rows (ground distance looked at;
-                               -- the camera's 43 deg view covers 0.2-1.0 m and 0.7 m-horizon)
+                               -- the camera's 46 deg view covers about 0.2-1.0 m and 0.7 m-horizon)
     scan_near_first = 1.0,     -- m: a ball lost nearer than this is looked for where it was first
     scan_swing = 0.4,          -- rad, the head's swing around a ball lost near the feet
     goal_look_distance = 3.0,  -- m: a goal out of the head's reach is looked for this far on its side
-    ground_z = -0.23,          -- m: the ground below the torso origin (torso frame), for look-at
-    camera_z = 0.2,            -- m, the camera above the torso origin (look-at without a kinematic model)
+    ground_z = -0.21,          -- m: the ground below the torso origin (torso frame), for look-at
+    camera_z = 0.18,           -- m, the camera above the torso origin (look-at without a kinematic model)
   },
 
   body = {
@@ -23,8 +24,8 @@ return {
     align_distance = 0.45,     -- m: from here on, align precisely ...
     approach_near = 0.1,       -- m: ... once this much nearer (approach -> align)
     align_far = 0.3,           -- m: back to approaching this much further (align -> approach)
-    kick_x = 0.17,             -- m: ball this far ahead of the torso when kicking
-    kick_y = 0.06,             -- m: ball this far to the side (towards the kicking foot)
+    kick_x = 0.15,             -- m: ball this far ahead of the torso when kicking
+    kick_y = 0.05,             -- m: ball this far to the side (towards the kicking foot)
     kick_tolerance_x = 0.05,
     kick_tolerance_y = 0.04,
     kick_side_switch = 0.05,   -- m: the ball this far on the other side: kick with the other foot

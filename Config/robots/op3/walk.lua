@@ -7,7 +7,7 @@ return {
   tZmp = 0.165,              -- s, sqrt(COM height / g) of the linear inverted pendulum
   phSingle = { 0.1, 0.9 },   -- phase of the step where single support begins and ends
   -- posture
-  bodyHeight = 0.25,         -- m, torso origin (hip yaw anchors, Config/Sim/robot.lua) above the ground
+  bodyHeight = 0.25,         -- m, torso origin (between the hip yaw joints: the URDF's body_link) above the ground
   bodyTilt = 0.08,           -- rad, torso pitch (forward positive)
   footX = 0.0,               -- m, trim of the torso origin behind the planned COM
   footY = 0.045,             -- m, half the lateral spacing of the feet (ankle points)
