@@ -22,3 +22,5 @@ bench vision_lua luajit Tests/bench/vision_lua.lua 2
 bench sim_lockstep bash Tests/bench/sim_lockstep.sh 30
 bench walk_sim Tests/bench/walk_sim.sh
 bench score_given_pose Tests/bench/score_given_pose.sh
+bench standup_op3 env ROBOT=op3 Tests/motion/standup_stats.sh
+bench standup_darwin env ROBOT=darwin Tests/motion/standup_stats.sh

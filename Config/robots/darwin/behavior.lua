@@ -13,6 +13,10 @@ return {
     goal_look_distance = 3.0,  -- m: a goal out of the head's reach is looked for this far on its side
     ground_z = -0.21,          -- m: the ground below the torso origin (torso frame), for look-at
     camera_z = 0.18,           -- m, the camera above the torso origin (look-at without a kinematic model)
+    -- looks at the goal more often than the OP3 (Config/common/behavior.lua): it walks slower, so
+    -- more odometry drift piles up between post sightings per metre
+    look_goal_every = 4.0,     -- s
+    look_goal_every_near = 2.0, -- s
   },
 
   body = {
