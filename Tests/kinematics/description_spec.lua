@@ -119,12 +119,8 @@ describe('bad robot data fails at load, naming the file and the element', functi
   local tmp = native.root() .. '/build/tmp'
   os.execute('mkdir -p "' .. tmp .. '"')
 
-  local function copy(t)
-    if type(t) ~= 'table' then return t end
-    local c = {}
-    for k, v in pairs(t) do c[k] = copy(v) end
-    return c
-  end
+  -- a fresh plain copy of the OP3's robot config to break (Config.export builds one per call)
+  local function copy() return Config.export('robot', { robot = 'op3' }) end
 
   local function fails(robot, file, ...)
     local m, err = kin.new(robot, file or urdf, 'robots/x/robot.lua')
@@ -136,48 +132,48 @@ describe('bad robot data fails at load, naming the file and the element', functi
   end
 
   it('a joint of robot.joints that the URDF does not have', function()
-    local r = copy(op3)
+    local r = copy()
     r.joints[3] = 'l_shoulder'
     fails(r, nil, 'op3.urdf', "no joint 'l_shoulder'", 'robots/x/robot.lua')
   end)
 
   it('a URDF joint missing from robot.joints', function()
-    local r = copy(op3)
+    local r = copy()
     table.remove(r.joints, 20)
     r.chains.rarm = nil
     fails(r, nil, 'op3.urdf', "joint 'r_el' is not in joints")
   end)
 
   it('an unknown joint or tip in a chain, an unknown chain', function()
-    local r = copy(op3)
+    local r = copy()
     r.chains.larm.joints = { 'l_sho_pitch', 'l_elbow' }
     fails(r, nil, 'robots/x/robot.lua', 'chains.larm', "unknown joint 'l_elbow'")
-    r = copy(op3)
+    r = copy()
     r.chains.head.tip = 'eye'
     fails(r, nil, 'chains.head', "tip 'eye'", 'op3.urdf')
-    r = copy(op3)
+    r = copy()
     r.chains.tail = { tip = 'camera_link' }
     fails(r, nil, 'chains.tail', 'unknown chain')
   end)
 
   it('a chain the IK cannot serve: out of order, short, a tip off its last link, no look-at', function()
-    local r = copy(op3)
+    local r = copy()
     r.chains.lleg.joints = { 'l_hip_yaw', 'l_hip_pitch', 'l_hip_roll', 'l_knee', 'l_ank_pitch', 'l_ank_roll' }
     fails(r, nil, "chain 'lleg'", "'l_hip_pitch' does not hang from the chain's previous joint 'l_hip_yaw'")
-    r = copy(op3)
+    r = copy()
     r.chains.rleg.joints = { 'r_hip_yaw', 'r_hip_roll', 'r_hip_pitch', 'r_knee', 'r_ank_pitch' }
     r.chains.rleg.tip = 'r_ank_pitch_link' -- a link may be a tip too
     fails(r, nil, "chain 'rleg'", 'needs 6 joints')
-    r = copy(op3)
+    r = copy()
     r.chains.lleg.tip = 'r_sole'
     fails(r, nil, 'chains.lleg', "tip 'r_sole' is on link 'r_ank_roll_link'")
-    r = copy(op3)
+    r = copy()
     r.chains.head = { joints = { 'head_tilt', 'l_sho_pitch' }, tip = 'l_sho_pitch_link' }
     fails(r, nil, "chain 'head'", 'does not hang from')
-    r = copy(op3)
+    r = copy()
     r.chains.head = { joints = { 'l_sho_pitch', 'l_sho_roll' }, tip = 'l_sho_roll_link' }
     fails(r, nil, "chain 'head'", "pan joint 'l_sho_pitch': axis must be along z")
-    r = copy(op3)
+    r = copy()
     r.chains.lleg.joints = { 'l_hip_roll', 'l_hip_yaw', 'l_hip_pitch', 'l_knee', 'l_ank_pitch', 'l_ank_roll' }
     fails(r, nil, "chain 'lleg'")
   end)
@@ -194,10 +190,10 @@ describe('bad robot data fails at load, naming the file and the element', functi
     f = assert(io.open(path, 'w'))
     f:write(text)
     f:close()
-    local r = copy(op3)
+    local r = copy()
     r.joints[#r.joints + 1] = 'loop'
     fails(r, path, 'cycle.urdf', "link 'l_hip_roll_link' is the child of two joints", 'cycle')
     os.remove(path)
-    fails(copy(op3), tmp .. '/none.urdf', 'none.urdf', 'cannot open')
+    fails(copy(), tmp .. '/none.urdf', 'none.urdf', 'cannot open')
   end)
 end)

@@ -8,20 +8,14 @@ local Config = require('Config')
 local kin = require('kinematics')
 local control = require('Motion.control')
 
-local function copy(v)
-  if type(v) ~= 'table' then return v end
-  local t = {}
-  for k, x in pairs(v) do t[k] = copy(x) end
-  return t
-end
-
 -- A controller on a body. opts: waist (the waistbot, whose waist no state owns), wrist (the
 -- waistbot too: its wrists are extra arm joints), reorder (the body's joints in another bus order),
 -- arms (the walk config's arms).
 local function fake(opts)
   local name = (opts.waist or opts.wrist) and 'waistbot' or 'op3'
-  local robot = copy(Config.export('robot', { robot = name }))
-  local params = copy(Config.export('walk', { robot = name }))
+  -- Config.export gives a fresh plain table on every call: ours to change
+  local robot = Config.export('robot', { robot = name })
+  local params = Config.export('walk', { robot = name })
   if opts.reorder then
     -- group by group in another order than the tree's
     local r = {}
@@ -151,7 +145,7 @@ describe('motion on other bodies', function()
     exercise(c)
     assert.equals(0.2, c.q[wr])
     assert.equals(0, c.owner[wr])
-    local arms = copy(Config.export('walk', { robot = 'waistbot' }).arms)
+    local arms = Config.export('walk', { robot = 'waistbot' }).arms
     arms.l.posture.l_wrist = -0.5
     c = fake({ wrist = true, arms = arms })
     run(c, 1.5)
