@@ -61,9 +61,8 @@ local function site_dir()
   return config_root() .. '/Config/site', 'Config/site'
 end
 
--- opts: nil, a table { robot =, platform = }, or (old form) a platform name.
+-- opts: nil or { robot =, platform = } (each defaults to ROBOT / PLATFORM).
 local function resolve(opts)
-  if type(opts) == 'string' then opts = { platform = opts } end
   opts = opts or {}
   local robot, platform = opts.robot or M.robot(), opts.platform or M.platform()
   if not is_dir(M.robot_dir(robot)) then

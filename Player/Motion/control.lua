@@ -77,7 +77,7 @@ function M.keyframe_body(robot, model, ji)
     if not base then return nil, "only left-side joints (l_...) are mirrored" end
     local twin = 'r_' .. base
     if not ji[twin] then return nil, "the body has no joint '" .. twin .. "' to mirror it onto" end
-    local a, b = Walk.joint_axis(robot, model, name), Walk.joint_axis(robot, model, twin)
+    local a, b = model:axis(name), model:axis(twin)
     -- the mirror image (through the x-z plane) of a rotation about a is one about (-ax, ay, -az)
     local d = -a[1] * b[1] + a[2] * b[2] - a[3] * b[3]
     if abs(abs(d) - 1) > 1e-6 then

@@ -353,13 +353,6 @@ function Walk:leg_angles(q)
   return self.model:legs_ik(self.lpose, self.rpose, q)
 end
 
--- The axis of joint `name` (a unit vector in the torso frame at the zero pose, from the body's
--- description): the one place the walk reads it, so that feedback and mirrored poses are stated as
--- rotations about the torso's axes.
-function M.joint_axis(robot, model, name) -- luacheck: no unused args
-  return model:axis(name)
-end
-
 local LEG = { 'hip_yaw', 'hip_roll', 'hip_pitch', 'knee', 'ank_pitch', 'ank_roll' }
 
 -- Joint bookkeeping from the robot config: 1-based indices by name, the leg joints the leg IK
@@ -373,7 +366,7 @@ function Walk:bind(robot, files)
   for i, name in ipairs(robot.joints) do ji[name] = i end
   self.ji, self.ax, self.ay = ji, ax, ay
   local function axis_of(i, name)
-    local a = M.joint_axis(robot, self.model, name)
+    local a = self.model:axis(name) -- the torso frame at the zero pose, from the description
     ax[i], ay[i] = a[1], a[2]
   end
   -- legs: the model's leg chains (hip yaw to ankle roll); by name without a model
