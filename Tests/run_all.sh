@@ -9,7 +9,9 @@ cd "$(dirname "$0")/.."
 TOP=$(pwd)
 export HRP_ROOT="$TOP"
 export LUA_PATH="$TOP/Lib/?.lua;$TOP/Player/?.lua;$TOP/?.lua;;"
-export ROBOT_ID="${ROBOT_ID:-$((9000 + $$ % 500))}"   # keep tests away from a running robot
+# keep tests away from a running robot and from the fixed ids of the tools (8000-9500): each test
+# takes ids up to ROBOT_ID+260, so runs sit 300 apart
+export ROBOT_ID="${ROBOT_ID:-$((20000 + ($$ % 300) * 300))}"
 FILTER="${TESTS:-.}"
 LOGDIR="$TOP/build/test-logs"
 mkdir -p "$LOGDIR"

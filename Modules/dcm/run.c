@@ -36,6 +36,13 @@ static int open_blocks(dcm *d, char *err, size_t errlen) {
         (rc = dcm_blocks_open(d->schema, R->id, DCM_BLK_dcm_stats(&R->stats), err, errlen)) < 0 ||
         (rc = dcm_blocks_open(d->schema, R->id, DCM_BLK_sync(&R->sync), err, errlen)) < 0)
       return rc;
+    /* one DCM per robot: a second one would fight the first over the bus and the blocks */
+    const int other = *R->sensor.dcm_pid;
+    if (other != 0 && other != (int)getpid() && shm_pid_alive(other)) {
+      snprintf(err, errlen, "robot '%s' (id %d): another DCM (pid %d) is running on its blocks; stop it first",
+               R->name, R->id, other);
+      return -EBUSY;
+    }
     /* every joint array must hold the robot's joints */
     const int have[] = { R->sensor.n.position, R->sensor.n.velocity, R->sensor.n.load, R->sensor.n.temperature,
                          R->actuator.n.command, R->actuator.n.hardness, R->actuator.n.torque_enable };

@@ -194,23 +194,36 @@ function scenarios.random(seconds, seed)
     s = (s * 1103515245 + 12345) % 2147483648
     return s / 2147483648
   end
-  start_clean()
+  local stood = start_clean()
+  local s0 = Sim.truth()
+  if not stood or s0.fallen then
+    note('random: the start did not stand: state %s, fallen %s, roll %.2f pitch %.2f', Motion.state(),
+      tostring(s0.fallen), s0.roll, s0.pitch)
+  end
   Motion.request('walk')
   local lim = { Walk.get('velLimitX'), Walk.get('velLimitY'), Walk.get('velLimitA') }
   local falls0 = Motion.falls()
   local t0 = Body.get_time()
   local fell, changes = false, 0
+  local last
   while Body.get_time() - t0 < seconds and not fell do
     local v = {}
     for k = 1, 3 do v[k] = lim[k][1] + rnd() * (lim[k][2] - lim[k][1]) end
     local cx, cy, ca = Walk.set_velocity(v[1], v[2], v[3])
     changes = changes + 1
-    if os.getenv('VERBOSE') then note('t=%.1f command %.3f %.3f %.3f', Body.get_time() - t0, cx, cy, ca) end
+    last = string.format('t=%.1f command %.3f %.3f %.3f', Body.get_time() - t0, cx, cy, ca)
+    if os.getenv('VERBOSE') then note('%s', last) end
     local hold = 1 + 3 * rnd()
     local t1 = Body.get_time()
     while Body.get_time() - t1 < hold do
       wait(0.1)
-      if Sim.truth().fallen or Motion.falls() > falls0 then fell = true break end
+      local now = Sim.truth()
+      if now.fallen or Motion.falls() > falls0 then
+        fell = true
+        note('random: down at t=%.1f (%s): truth fallen %s, roll %.2f pitch %.2f, falls %d -> %d, state %s',
+          Body.get_time() - t0, last, tostring(now.fallen), now.roll, now.pitch, falls0, Motion.falls(), Motion.state())
+        break
+      end
     end
   end
   note('random: %d commands in %.0f s', changes, Body.get_time() - t0)

@@ -137,6 +137,10 @@ if start_dcm realtime --quiet; then
   echo "$out" | sed 's/^/# /'
   echo "$out" | grep -Eq 'err 0\.00[0-9]+ fallen false trips [1-9]'
   check $? "real time: with its Lua side gone the robot holds the stance (watchdog trip counted)"
+  err=$(timeout 10 build/bin/dcm_sim --quiet 2>&1); rc=$?
+  echo "# second DCM: $err"
+  [ $rc -ne 0 ] && echo "$err" | grep -q "another DCM (pid $DCM_PID) is running"
+  check $? "a second DCM on the same robot id is refused, naming the running one's pid"
   stop_dcm
 else
   nok "dcm_sim starts in real time"
