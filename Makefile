@@ -29,7 +29,7 @@ deps:
 	@mkdir -p $(BUILD) && touch $(DEPS_STAMP)
 
 # Only re-checked when the dependency list changes or on a new clone.
-$(DEPS_STAMP): Run/install_deps.sh
+$(DEPS_STAMP): Run/install_deps.sh Run/requirements.txt
 	@Run/install_deps.sh
 	@mkdir -p $(BUILD) && touch $@
 

@@ -1,6 +1,7 @@
 # Sourced by the launchers: the project's root, Lua search path, platform, body and robot id defaults.
 HRP_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 export HRP_ROOT
+export PATH="$HRP_ROOT/.venv/bin:$PATH"   # the project's Python (make deps)
 export LUA_PATH="$HRP_ROOT/Lib/?.lua;$HRP_ROOT/Player/?.lua;$HRP_ROOT/?.lua;;"
 export PLATFORM="${PLATFORM:-Sim}"   # what serves the blocks: Sim, OP (Config/platforms/)
 export ROBOT="${ROBOT:-op3}"          # the body: op3, darwin, ... (Config/robots/)

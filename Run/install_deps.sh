@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs what the platform needs from Debian 12 (and two Python packages for tests).
+# Installs what the platform needs from Debian 12, and the Python packages of Run/requirements.txt
+# into the project's virtual environment (.venv).
 # Non-interactive and idempotent: prints what it installs, installs nothing when all is present.
 set -euo pipefail
 
@@ -9,7 +10,7 @@ DEBIAN_PACKAGES=(
   libode-dev libeigen3-dev libopencv-dev
   libusb-1.0-0-dev liburdfdom-dev libreadline-dev
   clang libclang-rt-14-dev
-  libpng-dev python3 python3-numpy python3-pip
+  libpng-dev python3 python3-venv
 )
 
 missing=()
@@ -31,17 +32,20 @@ else
   echo "deps: all Debian packages present"
 fi
 
-# The python3 on PATH may not be Debian's (pyenv, venv): make sure it has numpy and the
-# ROBOTIS SDK used as a protocol peer in the Dynamixel tests.
-PY=python3
-py_missing=()
-$PY -c 'import numpy' 2>/dev/null || py_missing+=(numpy)
-$PY -c 'import dynamixel_sdk' 2>/dev/null || py_missing+=(dynamixel-sdk==4.1.0)
-$PY -c 'import matplotlib' 2>/dev/null || py_missing+=(matplotlib)   # walk plots (Tests/motion)
-if [ "${#py_missing[@]}" -gt 0 ]; then
-  echo "deps: installing Python packages for $($PY -c 'import sys; print(sys.executable)'): ${py_missing[*]}"
-  $PY -m pip install -q "${py_missing[@]}" 2>/dev/null \
-    || $PY -m pip install -q --break-system-packages "${py_missing[@]}"
+# Python packages from PyPI go into the project's own virtual environment, made by Debian's Python
+# (never into Debian's site-packages): .venv at the project's root.
+ROOT="$(cd "$(dirname "$0")/.." && pwd)"
+VENV="$ROOT/.venv"
+REQ="$ROOT/Run/requirements.txt"
+if [ ! -x "$VENV/bin/python3" ]; then
+  echo "deps: creating the project's Python environment $VENV"
+  /usr/bin/python3 -m venv "$VENV"
+fi
+# pip is asked only when requirements.txt changed since the last successful install
+if ! cmp -s "$REQ" "$VENV/.installed-requirements" 2>/dev/null; then
+  echo "deps: installing Python packages into $VENV (Run/requirements.txt)"
+  "$VENV/bin/pip" install -q --disable-pip-version-check -r "$REQ"
+  cp "$REQ" "$VENV/.installed-requirements"
 else
   echo "deps: all Python packages present"
 fi

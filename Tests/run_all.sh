@@ -8,6 +8,7 @@ set -u
 cd "$(dirname "$0")/.."
 TOP=$(pwd)
 export HRP_ROOT="$TOP"
+export PATH="$TOP/.venv/bin:$PATH"   # the project's Python (make deps)
 export LUA_PATH="$TOP/Lib/?.lua;$TOP/Player/?.lua;$TOP/?.lua;;"
 # keep tests away from a running robot and from the fixed ids of the tools (8000-9500): each test
 # takes ids up to ROBOT_ID+260, so runs sit 300 apart
