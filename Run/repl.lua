@@ -54,6 +54,7 @@ function env.wait(seconds)
     end
     tick = t
   end
+  if participant then participant:settle(tick) end
 end
 
 -- p(x): prints a value, tables expanded one level deep.
@@ -107,7 +108,7 @@ if args[1] == '-e' or (args[1] and args[1] ~= '-i') then
     env.arg = { select(2, unpack(args)) }
   end
   if not chunk then io.stderr:write('repl: ', err, '\n') finish(1) end
-  participant = lockstep.join()
+  participant = lockstep.join({ observer = true })
   local ok, res = run_chunk(chunk)
   if not ok then io.stderr:write(tostring(res), '\n') finish(1) end
   finish(0)
