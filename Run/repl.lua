@@ -46,8 +46,11 @@ function env.wait(seconds)
   local tick = Body.get_tick()
   local target = tick + math.max(1, math.floor(seconds / period + 0.5))
   if participant then participant:done(tick, target) end
+  -- a lockstep clock held at tick 0 waits for every participant to join (dcm_sim --lockstep-wait):
+  -- a slow start of the others is no error
+  local patience = (tick == 0 and participant and lockstep.active()) and 60.0 or 5.0
   while tick < target do
-    local t = Body.wait_tick(tick, 5.0)
+    local t = Body.wait_tick(tick, patience)
     if not t then
       error(string.format('wait: the clock is not advancing (tick %d): is ./run_dcm running for ROBOT_ID %d?',
         tick, shm.robot_id()), 2)

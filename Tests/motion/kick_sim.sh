@@ -8,6 +8,7 @@ KICK_LOGS=$HRP_ROOT/build/test-logs/kick
 mkdir -p "$KICK_LOGS"
 kick_sim_run() {
   local id=$1 log=$2; shift 2
+  Run/shm --robot "$id" remove >/dev/null 2>&1   # stale segments of an earlier run
   ROBOT_ID=$id ./run_main --sim --quiet --no-restart --dcm-arg --lockstep-wait --dcm-arg 2 --dcm-arg --seed --dcm-arg "${SIM_SEED:-1}" \
     --dcm-arg --no-camera motion >"$log" 2>&1 &
   local pid=$!

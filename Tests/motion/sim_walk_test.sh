@@ -28,6 +28,7 @@ for s in "${SCEN[@]}"; do
   n=$((n + 1))
   id=$((BASE_ID + n))
   read -r -a parts <<<"$s"
+  Run/shm --robot "$id" remove >/dev/null 2>&1   # stale segments of an earlier run
   ROBOT_ID=$id ./run_main --sim --quiet --no-restart --dcm-arg --lockstep-wait --dcm-arg 2 --dcm-arg --seed --dcm-arg "${SIM_SEED:-1}" \
     --dcm-arg --no-camera motion \
     >"$LOGDIR/main_${parts[0]}.log" 2>&1 &
