@@ -206,7 +206,7 @@ typedef struct dcm {
   double period;                  /* s, control period */
   double watchdog;                /* s without a new tick_ack before the safe state (<= 0: none) */
   double safe_hardness;           /* 0..1 */
-  double start_hardness;          /* 0..1, given to a blank actuator block at start */
+  double start_hardness;          /* 0..1, every joint's hardness at start (present pose, torque on) */
   int simulated;                  /* 1: the robot clock is tick * period (simulation) */
   /* options (command line) */
   int lockstep;                   /* wait each tick for the sync participants */
