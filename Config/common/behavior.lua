@@ -12,6 +12,10 @@ return {
     -- with no GameController packet ever seen, start playing this long after start-up (s)
     start_delay = 2.0,
   },
+  -- a behavior process that starts within `within` s (robot clock) of its predecessor's last world
+  -- and game update (run_main restarted on a robot nobody carried) continues its game state and
+  -- pose belief (the particles spread by `spread` m / rad around it) instead of starting afresh
+  resume = { within = 3.0, spread = 0.1 },
   -- behavior steps: one every `step_ticks` DCM ticks
   step_ticks = 3,
   -- stop walking when the vision block has not been updated for this long (s, robot clock)

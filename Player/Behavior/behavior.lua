@@ -1,7 +1,8 @@
 -- The behavior: reads vision and odometry, updates the world model, follows the game state and runs
 -- the head and body machines; writes the world and game blocks.
 --
---   local b = require('Behavior.behavior').new(opts)   -- opts.port: GameController port override
+--   local b = require('Behavior.behavior').new(opts)   -- opts.port: GameController port override,
+--                                                      -- opts.fresh: ignore a predecessor's blocks
 --   b:step()          -- one step at the current robot time
 --   b:run()           -- the process's loop (lockstep-aware), until SIGTERM
 local shm = require('shm')
@@ -16,10 +17,25 @@ local act = require('Behavior.act')
 
 local M = {}
 
-local function machine(which)
+local function machine(which, initial)
   local def = require(which .. '.machine')
-  return fsm.new({ name = which, states = def.states, transitions = def.transitions, initial = def.initial,
-    load = function(n) return require(which .. '.' .. n) end })
+  return fsm.new({ name = which, states = def.states, transitions = def.transitions,
+    initial = initial or def.initial, load = function(n) return require(which .. '.' .. n) end })
+end
+
+-- What a predecessor left in the world and game blocks, if it wrote them within cfg.resume.within
+-- s of robot time `t` (a restarted process on a robot nobody carried; after a longer gap, or a
+-- DCM restart that began the clock again, the robot starts afresh).
+local function predecessor(blocks, cfg, t)
+  local g, w = blocks.game, blocks.world
+  local age = t - g.time[0]
+  if g.time[0] <= 0 or age < 0 or age > cfg.resume.within then return nil end
+  local r = { state = packet.STATES[g.state[0]], penalized = g.penalized[0] ~= 0 }
+  local wage = t - w.time[0]
+  if w.time[0] > 0 and wage >= 0 and wage <= cfg.resume.within then
+    r.pose = { w.pose[0], w.pose[1], w.pose[2] }
+  end
+  return r.state and r or nil
 end
 
 local Behavior = {}
@@ -31,7 +47,7 @@ function M.new(opts)
     team_number = 'number', player_number = 'number',
     gamecontroller = { port = 'number', start_delay = 'number' },
     step_ticks = 'number', vision_stale_after = 'number', world = 'table', head = 'table', body = 'table',
-    ready_pose = 'table',
+    ready_pose = 'table', resume = { within = 'number', spread = 'number' },
   })
   local port = opts.port or tonumber(os.getenv('HRP_GC_PORT') or '') or nil
   local gc = controller.new(cfg, { port = port })
@@ -40,13 +56,19 @@ function M.new(opts)
   end
   local wcfg = setmetatable({}, { __index = cfg.world })
   wcfg.seed = tonumber(os.getenv('HRP_SEED') or '') or cfg.world.seed
+  local blocks = { world = shm.open('world'), game = shm.open('game'), vision = shm.open('vision'),
+    motion = shm.open('motion') }
+  local prev = not opts.fresh and predecessor(blocks, cfg, Body.get_time()) or nil
   local self = setmetatable({
     cfg = cfg, gc = gc, world = World.new(wcfg),
-    body = machine('BodyFSM'), head = machine('HeadFSM'), game = machine('GameFSM'),
-    blocks = { world = shm.open('world'), game = shm.open('game'), vision = shm.open('vision'),
-      motion = shm.open('motion') },
-    vision_time = -1, vision_time_changed = nil, steps = 0,
+    body = machine('BodyFSM'), head = machine('HeadFSM'),
+    game = machine('GameFSM', prev and (prev.penalized and 'penalized' or prev.state)),
+    blocks = blocks, vision_time = -1, vision_time_changed = nil, steps = 0, resumed = prev,
   }, Behavior)
+  if prev then
+    gc:resume(prev.state, prev.penalized)
+    if prev.pose then self.world:resume(prev.pose[1], prev.pose[2], prev.pose[3], cfg.resume.spread) end
+  end
   self.ctx = { cfg = cfg, world = self.world, act = act, body = self.body, head = self.head,
     t = 0 }
   return self
@@ -103,6 +125,7 @@ function Behavior:step()
     b.bad_packets[0] = gc.bad_packets
     b.body_state[0] = self.body:index()
     b.head_state[0] = self.head:index()
+    b.time[0] = t
   end)
   self.steps = self.steps + 1
 end

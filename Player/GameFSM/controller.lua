@@ -29,6 +29,14 @@ function M.new(cfg, opts)
   return c
 end
 
+-- Continues a predecessor's game state (Player/Behavior/behavior.lua: a restarted process): the
+-- state it followed, and a manual penalty it held (a GameController's packets decide again at once).
+function Controller:resume(state, penalized)
+  self.state = packet.STATE[state] or self.state
+  self.resumed = true
+  if penalized then self.manual_penalized = true end
+end
+
 -- Takes one datagram; true if it was a valid packet for this robot's team.
 function Controller:receive(data)
   local p = packet.parse(data)

@@ -49,6 +49,13 @@ function World:reset_pose()
   self.pose.fit = nil
 end
 
+-- Continues from a belief this process's predecessor published (the world block): a restarted
+-- behavior process on a robot nobody carried. The particles start around the published pose,
+-- spread by `spread` (m, rad); the next sightings sharpen it.
+function World:resume(x, y, a, spread)
+  self.pose:set_pose(x, y, a, spread)
+end
+
 -- Odometry delta (dx, dy in the old robot frame, da) between two odometry readings {x, y, a}.
 local function odom_delta(o0, o1)
   local ddx, ddy = o1[1] - o0[1], o1[2] - o0[2]
@@ -155,6 +162,7 @@ function World:publish(block)
     w.ball_time[0] = b.seen and b.t_seen or -1
     w.pose[0], w.pose[1], w.pose[2] = p.x, p.y, p.a
     w.pose_confidence[0] = p.confidence
+    w.time[0] = self.t or 0
   end)
 end
 

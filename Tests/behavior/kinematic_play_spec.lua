@@ -134,7 +134,7 @@ describe('behavior with an idealised robot', function()
     for seed = tonumber(os.getenv('SEED') or 1), tonumber(os.getenv('SEED') or seeds) do
       -- a fresh behavior per run: it knows nothing of the previous one
       package.loaded['Behavior.behavior'] = nil
-      local behavior = require('Behavior.behavior').new({ port = 0 })
+      local behavior = require('Behavior.behavior').new({ port = 0, fresh = true })
       behavior.gc.state = 3 -- playing (no GameController in this test)
       behavior.gc.gc_seen = true
       -- the stand-in models a kick, not the feet pushing a ball along: play by kicking
