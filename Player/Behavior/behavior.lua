@@ -13,6 +13,7 @@ local lockstep = require('lockstep')
 local World = require('World.world')
 local controller = require('GameFSM.controller')
 local packet = require('GameFSM.packet')
+local setplay = require('GameFSM.setplay')
 local act = require('Behavior.act')
 
 local M = {}
@@ -45,12 +46,20 @@ function M.new(opts)
   opts = opts or {}
   local cfg = Config.load('behavior', {
     team_number = 'number', player_number = 'number',
-    gamecontroller = { port = 'number', start_delay = 'number' },
     step_ticks = 'number', vision_stale_after = 'number', world = 'table', head = 'table', body = 'table',
     ready_pose = 'table', resume = { within = 'number', spread = 'number' },
   })
+  local rules = Config.load('game', {
+    gamecontroller = { port = 'number', return_port = 'number', alive_period = 'number',
+      start_without = 'string', start_delay = 'number' },
+    kickoff = { wait = 'number', distance = 'number', ball_moved = 'number' },
+    setplay = { distance = 'table', margin = 'number', hysteresis = 'number', retreat_speed = 'number',
+      turn_gain = 'number', take_tolerance = 'number' },
+  })
   local port = opts.port or tonumber(os.getenv('HRP_GC_PORT') or '') or nil
-  local gc = controller.new(cfg, { port = port })
+  local return_port = opts.return_port or tonumber(os.getenv('HRP_GC_RETURN_PORT') or '') or nil
+  local gc = controller.new({ team_number = cfg.team_number, player_number = cfg.player_number,
+    gamecontroller = rules.gamecontroller }, { port = port, return_port = return_port })
   if gc.socket_error then
     io.stderr:write('behavior: GameController disabled: ', gc.socket_error, '\n')
   end
@@ -69,8 +78,8 @@ function M.new(opts)
     gc:resume(prev.state, prev.penalized)
     if prev.pose then self.world:resume(prev.pose[1], prev.pose[2], prev.pose[3], cfg.resume.spread) end
   end
-  self.ctx = { cfg = cfg, world = self.world, act = act, body = self.body, head = self.head,
-    t = 0 }
+  self.ctx = { cfg = cfg, rules = rules, world = self.world, act = act, body = self.body,
+    head = self.head, t = 0, game = gc:view() }
   return self
 end
 
@@ -110,6 +119,11 @@ function Behavior:step()
   self.world:publish(self.blocks.world)
 
   local state, penalized = self.gc:update(t, Body.get_button(1) ~= 0)
+  ctx.game = self.gc:view()
+  -- a kick-off: PLAYING right after SET (Player/GameFSM/playing.lua follows its progress)
+  if state == 'playing' and self.last_state == 'set' then ctx.kickoff = { t0 = t } end
+  if state ~= 'playing' then ctx.kickoff = nil end
+  self.last_state = state
   local want = penalized and 'penalized' or state
   if self.game:state() ~= want or not self.game.current then self.game:event(want, ctx) end
   self.game:update(ctx)
@@ -123,6 +137,12 @@ function Behavior:step()
     b.score[0], b.score[1] = gc.score[1], gc.score[2]
     b.packets[0] = gc.packets
     b.bad_packets[0] = gc.bad_packets
+    b.secondary_state[0] = gc.secondary_state
+    b.secondary_team[0], b.secondary_mode[0] = gc.secondary_team, gc.secondary_mode
+    b.secondary_time[0] = gc.secondary_time
+    b.goalkeeper[0] = gc.goalkeeper and 1 or 0
+    b.returns[0] = gc.returns
+    b.setplay[0] = setplay.INDEX[state == 'playing' and not penalized and ctx.setplay or 'play']
     b.body_state[0] = self.body:index()
     b.head_state[0] = self.head:index()
     b.time[0] = t

@@ -1,8 +1,29 @@
--- Playing: the body and head machines run; with no fresh vision the robot stands and waits.
+-- Playing: the body and head machines run, within what the rules allow now (GameFSM.setplay: the
+-- other team's kick-off and set plays keep us away from the ball, ours wait for the referee's
+-- execute); with no fresh vision the robot stands and waits.
+local setplay = require('GameFSM.setplay')
+local moves = require('GameFSM.moves')
+
 local M = {}
 
 function M.entry(ctx)
   ctx.body:event('start', ctx)
+end
+
+-- The kick-off's progress: time in PLAYING since it began and whether the ball has moved from
+-- where it was first seen (its field estimate).
+local function kickoff_progress(ctx)
+  local k = ctx.kickoff
+  if not k then return nil end
+  k.since = ctx.t - k.t0
+  if not k.ball_moved and ctx.world:ball_known() then
+    local x, y = ctx.world:ball_field()
+    if not k.ball0 then k.ball0 = { x, y }
+    elseif (x - k.ball0[1]) ^ 2 + (y - k.ball0[2]) ^ 2 > ctx.rules.kickoff.ball_moved ^ 2 then
+      k.ball_moved = true
+    end
+  end
+  return k
 end
 
 function M.update(ctx)
@@ -11,8 +32,15 @@ function M.update(ctx)
     ctx.act.stop()
     return
   end
-  if ctx.body:state() == 'idle' then ctx.body:event('start', ctx) end
-  ctx.body:update(ctx)
+  local mode, distance = setplay.decide(ctx.game, ctx.rules, kickoff_progress(ctx))
+  ctx.setplay = mode
+  if mode == 'play' then
+    if ctx.body:state() == 'idle' then ctx.body:event('start', ctx) end
+    ctx.body:update(ctx)
+  else
+    if ctx.body:state() ~= 'idle' then ctx.body:event('stop', ctx) end
+    moves[mode](ctx, distance)
+  end
   ctx.head:update(ctx)
 end
 

@@ -1,0 +1,34 @@
+-- The game: the GameController, kick-off and set-play rules, team communication. Rule numbers are
+-- the RoboCup Humanoid League's (KidSize; Laws of the Game 2019 onwards: 0.75 m for the opponents
+-- at free kicks and the centre circle's radius at kick-off); a venue or a league changes them here.
+-- Units: metres, seconds.
+return {
+  gamecontroller = {
+    port = 3838,               -- UDP: the GameController's packets (RGme, HL version 12)
+    return_port = 3939,        -- UDP: our return packets (RGrt version 2), to the sender's address
+    alive_period = 1.0,        -- s (robot clock) between "alive" return packets
+    -- with no GameController packet seen: 'initial' waits there until a packet or the chest button
+    -- (a real robot beside a real field); 'playing' starts playing `start_delay` s after start-up
+    -- (the simulator's quick start: Config/platforms/Sim/game.lua)
+    start_without = 'initial',
+    start_delay = 2.0,
+  },
+  kickoff = {
+    -- the team without the kick-off stays outside the centre circle until the ball has moved or
+    -- `wait` s of PLAYING have passed
+    wait = 10.0,
+    distance = 0.75,           -- m from the ball (the centre circle's radius)
+    ball_moved = 0.3,          -- m the ball's field estimate must move (the pose is this uncertain)
+  },
+  setplay = {
+    -- m the opponents of the team taking a set play keep from the ball (Humanoid League KidSize)
+    distance = { direct_free_kick = 0.75, indirect_free_kick = 0.75, corner_kick = 0.75,
+      goal_kick = 0.75, throw_in = 0.75,
+      penalty_kick = 1.5 },    -- the penalty mark's own rule; conservative: outside the penalty area
+    margin = 0.15,             -- m kept beyond the distance (the ball estimate's error)
+    hysteresis = 0.2,          -- m: nearer than distance + margin: back off; beyond + this: stand
+    retreat_speed = 0.15,      -- m/s backing away from the ball
+    turn_gain = 0.8,           -- 1/s: turning to face the ball while keeping away
+    take_tolerance = 0.1,      -- m: standing behind the ball for our own set play, this near the spot
+  },
+}
