@@ -18,7 +18,7 @@ return {
     -- `wait` s of PLAYING have passed
     wait = 10.0,
     distance = 0.75,           -- m from the ball (the centre circle's radius)
-    ball_moved = 0.3,          -- m the ball's field estimate must move (the pose is this uncertain)
+    ball_moved = 0.3,          -- m the ball's estimate must move (its sightings' error at 1-2 m)
   },
   setplay = {
     -- m the opponents of the team taking a set play keep from the ball (Humanoid League KidSize)

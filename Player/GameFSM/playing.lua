@@ -11,13 +11,15 @@ function M.entry(ctx)
 end
 
 -- The kick-off's progress: time in PLAYING since it began and whether the ball has moved from
--- where it was first seen (its field estimate).
+-- where it was first seen (in the odometry frame: a pose belief that settles does not move it).
 local function kickoff_progress(ctx)
   local k = ctx.kickoff
   if not k then return nil end
   k.since = ctx.t - k.t0
-  if not k.ball_moved and ctx.world:ball_known() then
-    local x, y = ctx.world:ball_field()
+  -- only sightings from the kick-off on (an older estimate may be of where the ball was before
+  -- it was placed)
+  if not k.ball_moved and ctx.world.ball.t_seen >= k.t0 then
+    local x, y = ctx.world:ball_odometry()
     if not k.ball0 then k.ball0 = { x, y }
     elseif (x - k.ball0[1]) ^ 2 + (y - k.ball0[2]) ^ 2 > ctx.rules.kickoff.ball_moved ^ 2 then
       k.ball_moved = true

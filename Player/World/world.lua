@@ -141,6 +141,14 @@ function World:ball_field()
   return p.x + c * self.ball.x - s * self.ball.y, p.y + s * self.ball.x + c * self.ball.y
 end
 
+-- The ball in the walk's odometry frame (the motion block's cumulative odometry): still while the
+-- ball is, whatever the pose belief does (the kick-off's "has the ball moved").
+function World:ball_odometry()
+  local o = self.odom or { 0, 0, 0 }
+  local c, s = cos(o[3]), sin(o[3])
+  return o[1] + c * self.ball.x - s * self.ball.y, o[2] + s * self.ball.x + c * self.ball.y
+end
+
 -- A field point in the robot frame.
 function World:to_robot(fx, fy)
   local p = self.pose

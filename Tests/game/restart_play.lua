@@ -7,38 +7,14 @@
 -- luacheck: globals Sim wait arg shm Body motion game
 local ffi = require('ffi')
 local packet = require('GameFSM.packet')
-local udp = require('GameFSM.udp')
+local gc_sim = require('Tests.game.gc_sim')
 ffi.cdef [[ int kill(int pid, int sig); int usleep(unsigned int usec); ]]
 
 local port, pidfile = tonumber(arg[1]), arg[2]
 assert(port and pidfile and os.getenv('RESTART_CMD'), 'usage: RESTART_CMD=... restart_play.lua GC_PORT PIDFILE')
-local team = require('Config').load('behavior').team_number
-local tx = assert(udp.sender())
-local sync = shm.open('sync')
-
-local next_packet, number = -1, 0
-local function gc()
-  if Body.get_time() < next_packet then return end
-  next_packet = Body.get_time() + 0.5
-  number = (number + 1) % 256
-  tx:send(packet.build({ state = packet.STATE.playing, packet_number = number,
-    teams = { { number = team }, { number = 99 } } }), '127.0.0.1', port)
-end
-
--- the robot's processes and this script take part in the lockstep (the clock holds meanwhile)
-local function joined(n)
-  local deadline = os.time() + 60
-  while true do
-    local k = 0
-    for i = 0, sync:count('pid') - 1 do
-      if sync.pid[i] ~= 0 and shm.C.shm_pid_alive(sync.pid[i]) == 1 then k = k + 1 end
-    end
-    if k >= n then return end
-    assert(os.time() < deadline, 'the robot processes did not join the lockstep within 60 s')
-    ffi.C.usleep(20000)
-  end
-end
-
+local gc = gc_sim.new(port, nil, require('Config').load('behavior').team_number)
+gc.packet = { state = packet.STATE.playing }
+local joined = gc_sim.joined
 local function read_pid()
   local f = assert(io.open(pidfile))
   local pid = tonumber(f:read('*l'))
@@ -51,7 +27,7 @@ Sim.teleport_robot(-2.0, 0.0, 0.0)
 Sim.teleport_ball(-1.0, 0.3)
 -- play until the robot walks
 local t0 = Body.get_time()
-repeat gc() wait(0.1) until motion.walking[0] == 1 or Body.get_time() - t0 > 20
+repeat gc:tick() wait(0.1) until motion.walking[0] == 1 or Body.get_time() - t0 > 20
 assert(motion.walking[0] == 1, 'the robot did not walk within 20 s of PLAYING')
 wait(2.0)
 print(string.format('walking at t=%.2f; restarting run_main', Body.get_time() - t0))
@@ -66,7 +42,7 @@ local t1 = Body.get_time()
 local T1 = Sim.truth()
 local walking_after = -1
 while Body.get_time() - t1 < 10 do
-  gc()
+  gc:tick()
   wait(0.05)
   local names = require('BodyFSM.machine').states
   print(string.format('t=%.2f game=%d body=%s motion=%s walking=%d', Body.get_time() - t1, game.state[0],
@@ -77,7 +53,7 @@ while Body.get_time() - t1 < 10 do
   end
 end
 -- and it really moves (3 s more)
-for _ = 1, 60 do gc() wait(0.05) end
+for _ = 1, 60 do gc:tick() wait(0.05) end
 local T2 = Sim.truth()
 print(string.format('result walking_after=%.2f moved=%.2f', walking_after,
   math.sqrt((T2.x - T1.x) ^ 2 + (T2.y - T1.y) ^ 2)))
