@@ -39,7 +39,8 @@ else
     stamp = { 1732400000, 123456789 }, player_id = 4, team = 'blue', pose = { -2.5, 1.25, -1.5 },
     covariance = { 0.04, 0, 0, 0, 0.04, 0, 0, 0, 0.01 },
     ball = { 0.75, -0.5, 0 }, ball_velocity = { 0.5, 0.25, 0 },
-    others = { { player_id = 0, team = 'red', pose = { 1, 2, 0 } }, { player_id = 2, team = 'blue', pose = { -1, 0, 3 } } },
+    others = { { player_id = 0, team = 'red', pose = { 1, 2, 0 } },
+      { player_id = 2, team = 'blue', pose = { -1, 0, 3 } } },
     walk = { 0.2, -0.05, 0.3 }, target = { pose = { 0, 0, 0 } }, kick_target = { 4.5, 0 }, state = 'penalised',
   })
   local f = assert(io.open(file, 'wb'))
