@@ -31,4 +31,12 @@ return {
     turn_gain = 0.8,           -- 1/s: turning to face the ball while keeping away
     take_tolerance = 0.1,      -- m: standing behind the ball for our own set play, this near the spot
   },
+  team = {
+    port_base = 10000,         -- UDP: each team broadcasts on port_base + its team number
+    broadcast = '255.255.255.255',
+    period = 0.5,              -- s (robot clock) between our messages
+    lost_after = 3.0,          -- s without a message: the teammate is lost (its role is taken over)
+    max_per_step = 32,         -- datagrams read per behavior step (a flood cannot stall the behavior)
+    max_players = 11,          -- player numbers 1..11 (the GameController's; the team shm block's size)
+  },
 }

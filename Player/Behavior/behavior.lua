@@ -2,7 +2,8 @@
 -- the head and body machines; writes the world and game blocks.
 --
 --   local b = require('Behavior.behavior').new(opts)   -- opts.port: GameController port override,
---                                                      -- opts.fresh: ignore a predecessor's blocks
+--                                                      -- opts.fresh: ignore a predecessor's blocks,
+--                                                      -- opts.team_port: team communication port
 --   b:step()          -- one step at the current robot time
 --   b:run()           -- the process's loop (lockstep-aware), until SIGTERM
 local shm = require('shm')
@@ -15,6 +16,7 @@ local controller = require('GameFSM.controller')
 local packet = require('GameFSM.packet')
 local setplay = require('GameFSM.setplay')
 local act = require('Behavior.act')
+local Team = require('Team.team')
 
 local M = {}
 
@@ -55,6 +57,8 @@ function M.new(opts)
     kickoff = { wait = 'number', distance = 'number', ball_moved = 'number' },
     setplay = { distance = 'table', margin = 'number', hysteresis = 'number', retreat_speed = 'number',
       turn_gain = 'number', take_tolerance = 'number' },
+    team = { port_base = 'number', broadcast = 'string', period = 'number', lost_after = 'number',
+      max_per_step = 'number', max_players = 'number' },
   })
   local port = opts.port or tonumber(os.getenv('HRP_GC_PORT') or '') or nil
   local return_port = opts.return_port or tonumber(os.getenv('HRP_GC_RETURN_PORT') or '') or nil
@@ -63,13 +67,18 @@ function M.new(opts)
   if gc.socket_error then
     io.stderr:write('behavior: GameController disabled: ', gc.socket_error, '\n')
   end
+  local team = Team.new({ team_number = cfg.team_number, player_number = cfg.player_number, team = rules.team },
+    { port = opts.team_port or tonumber(os.getenv('HRP_TEAM_PORT') or '') or nil })
+  if team.socket_error then
+    io.stderr:write('behavior: team communication disabled: ', team.socket_error, '\n')
+  end
   local wcfg = setmetatable({}, { __index = cfg.world })
   wcfg.seed = tonumber(os.getenv('HRP_SEED') or '') or cfg.world.seed
   local blocks = { world = shm.open('world'), game = shm.open('game'), vision = shm.open('vision'),
-    motion = shm.open('motion') }
+    motion = shm.open('motion'), team = shm.open('team') }
   local prev = not opts.fresh and predecessor(blocks, cfg, Body.get_time()) or nil
   local self = setmetatable({
-    cfg = cfg, gc = gc, world = World.new(wcfg),
+    cfg = cfg, gc = gc, team = team, world = World.new(wcfg),
     body = machine('BodyFSM'), head = machine('HeadFSM'),
     game = machine('GameFSM', prev and (prev.penalized and 'penalized' or prev.state)),
     blocks = blocks, vision_time = -1, vision_time_changed = nil, steps = 0, resumed = prev,
@@ -117,6 +126,7 @@ function Behavior:step()
   ctx.vision_stale = (t - self.vision_changed) > self.cfg.vision_stale_after
   self.world:update(t, odom, vis, self.cfg.world.imu_yaw and Body.get_angle()[3] or nil)
   self.world:publish(self.blocks.world)
+  self:talk(t, m)
 
   local state, penalized = self.gc:update(t, Body.get_button(1) ~= 0)
   ctx.game = self.gc:view()
@@ -148,6 +158,29 @@ function Behavior:step()
     b.time[0] = t
   end)
   self.steps = self.steps + 1
+end
+
+-- Team communication: our estimates out, teammates' into the world model (world.mates).
+function Behavior:talk(t, m)
+  local w, gc = self.world, self.gc
+  local p = w.pose
+  local ball
+  if w:ball_known() then
+    local bx, by = w:ball_field()
+    local c, s = math.cos(p.a), math.sin(p.a)
+    ball = { bx, by, c * w.ball.vx - s * w.ball.vy, s * w.ball.vx + c * w.ball.vy }
+  end
+  self.team:update(t, { pose = { p.x, p.y, p.a }, ball = ball, penalised = gc:penalized(),
+    colour = gc.gc_seen and gc.team_colour or nil,
+    walk = { m.walk_velocity[0], m.walk_velocity[1], m.walk_velocity[2] } })
+  w.mates = self.team:mates(t)
+  self.team:publish(self.blocks.team, t)
+end
+
+-- Closes the sockets (tests; the process just ends).
+function Behavior:close()
+  self.gc:close()
+  self.team:close()
 end
 
 -- The process loop: one step per `step_ticks` ticks, reporting to the lockstep.

@@ -22,13 +22,14 @@ describe('behavior under the rules of a game', function()
     sensor, vision = shm.open('dcm.sensor'), shm.open('vision')
     motion, game = shm.open('motion'), shm.open('game')
     sensor.time[0], sensor.tick[0] = 100, 0
-    behavior = require('Behavior.behavior').new({ port = port, return_port = rport, fresh = true })
+    behavior = require('Behavior.behavior').new({ port = port, return_port = rport, team_port = port + 2,
+      fresh = true })
     tx = assert(udp.sender())
     gc_side = assert(udp.listen(rport))
   end)
 
   teardown(function()
-    behavior.gc:close()
+    behavior:close()
     tx:close()
     gc_side:close()
     if os.getenv('ROBOT_ID') then for _, name in ipairs(shm.block_names()) do shm.unlink(name) end end

@@ -13,7 +13,7 @@ ID=$(( ${ROBOT_ID:-9200} + 70 ))
 PORT=$((40000 + ID % 20000))   # this run's GameController port (ids differ per run: no collision)
 echo "1..1"
 if [ ! -x build/bin/dcm_sim ]; then echo "ok 1 # SKIP needs build/bin/dcm_sim"; exit 0; fi
-export ROBOT_ID=$ID HRP_GC_PORT=$PORT HRP_GC_RETURN_PORT=$((PORT + 1))
+export ROBOT_ID=$ID HRP_GC_PORT=$PORT HRP_GC_RETURN_PORT=$((PORT + 1)) HRP_TEAM_PORT=$((30000 + ID % 20000))
 PIDFILE="$LOGDIR/restart_main.pid"
 ./run_dcm --lockstep >"$LOGDIR/restart_dcm.log" 2>&1 &
 DCM=$!

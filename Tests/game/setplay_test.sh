@@ -12,7 +12,7 @@ mkdir -p "$LOGDIR"
 ID=$(( ${ROBOT_ID:-9200} + 75 ))
 PORT=$((40000 + ID % 20000))   # this run's GameController ports (ids differ per run: no collision)
 if [ ! -x build/bin/dcm_sim ]; then echo "1..1"; echo "ok 1 # SKIP needs build/bin/dcm_sim"; exit 0; fi
-export ROBOT_ID=$ID HRP_GC_PORT=$PORT HRP_GC_RETURN_PORT=$((PORT + 1))
+export ROBOT_ID=$ID HRP_GC_PORT=$PORT HRP_GC_RETURN_PORT=$((PORT + 1)) HRP_TEAM_PORT=$((30000 + ID % 20000))
 ./run_main --sim --quiet --dcm-arg --lockstep >"$LOGDIR/setplay_main.log" 2>&1 &
 MAIN=$!
 trap 'kill -TERM $MAIN 2>/dev/null; wait $MAIN 2>/dev/null; Run/shm --robot $ID remove >/dev/null 2>&1' EXIT
