@@ -39,4 +39,23 @@ return {
     max_per_step = 32,         -- datagrams read per behavior step (a flood cannot stall the behavior)
     max_players = 11,          -- player numbers 1..11 (the GameController's; the team shm block's size)
   },
+  -- roles from the shared estimates (Player/Team/roles.lua) and where each stands (Team/position.lua)
+  roles = {
+    enabled = true,            -- false: every robot plays the ball alone
+    goalkeeper = 0,            -- player number of the goalkeeper without a GameController (0: none;
+                               -- with one, its goalKeeper flag decides)
+    walk_speed = 0.2,          -- m/s and rad/s a robot is assumed to walk and turn at (time to the ball)
+    turn_speed = 0.5,
+    striker_margin = 1.5,      -- s: the striker keeps the ball until another is this much faster
+    keeper_depth = 0.5,        -- m out from the own goal's centre towards the ball
+    keeper_clear = 1.5,        -- m: a ball this near the own goal's centre: the goalkeeper clears it
+    defender_fraction = 0.4,   -- of the way from the own goal's centre to the ball
+    defender_max_x = -1.0,     -- m: the defender stays behind this line
+    defender_home = 1.5,       -- m in front of the own goal while no ball is known
+    supporter_back = 1.0,      -- m behind the ball ...
+    supporter_side = 1.2,      -- m ... and to the side, towards the centre line
+    supporter_home = -1.0,     -- m: x while no ball is known
+    field_margin = 0.4,        -- m kept inside the field lines
+    arrive = 0.25,             -- m: at the position (then turn to the ball and stand)
+  },
 }

@@ -17,6 +17,7 @@ local packet = require('GameFSM.packet')
 local setplay = require('GameFSM.setplay')
 local act = require('Behavior.act')
 local Team = require('Team.team')
+local roles = require('Team.roles')
 
 local M = {}
 
@@ -59,6 +60,8 @@ function M.new(opts)
       turn_gain = 'number', take_tolerance = 'number' },
     team = { port_base = 'number', broadcast = 'string', period = 'number', lost_after = 'number',
       max_per_step = 'number', max_players = 'number' },
+    roles = { enabled = 'boolean', goalkeeper = 'number', walk_speed = 'number', turn_speed = 'number',
+      striker_margin = 'number', keeper_depth = 'number', keeper_clear = 'number', arrive = 'number' },
   })
   local port = opts.port or tonumber(os.getenv('HRP_GC_PORT') or '') or nil
   local return_port = opts.return_port or tonumber(os.getenv('HRP_GC_RETURN_PORT') or '') or nil
@@ -78,7 +81,7 @@ function M.new(opts)
     motion = shm.open('motion'), team = shm.open('team') }
   local prev = not opts.fresh and predecessor(blocks, cfg, Body.get_time()) or nil
   local self = setmetatable({
-    cfg = cfg, gc = gc, team = team, world = World.new(wcfg),
+    cfg = cfg, rules = rules, gc = gc, team = team, world = World.new(wcfg),
     body = machine('BodyFSM'), head = machine('HeadFSM'),
     game = machine('GameFSM', prev and (prev.penalized and 'penalized' or prev.state)),
     blocks = blocks, vision_time = -1, vision_time_changed = nil, steps = 0, resumed = prev,
@@ -153,6 +156,7 @@ function Behavior:step()
     b.goalkeeper[0] = gc.goalkeeper and 1 or 0
     b.returns[0] = gc.returns
     b.setplay[0] = setplay.INDEX[state == 'playing' and not penalized and ctx.setplay or 'play']
+    b.role[0] = roles.INDEX[ctx.role or 'striker']
     b.body_state[0] = self.body:index()
     b.head_state[0] = self.head:index()
     b.time[0] = t
@@ -175,6 +179,21 @@ function Behavior:talk(t, m)
     walk = { m.walk_velocity[0], m.walk_velocity[1], m.walk_velocity[2] } })
   w.mates = self.team:mates(t)
   self.team:publish(self.blocks.team, t)
+  self:assign_role()
+end
+
+-- This robot's role from the shared estimates (Player/Team/roles.lua); the striker alone or
+-- without roles.
+function Behavior:assign_role()
+  local rc, ctx, w = self.rules.roles, self.ctx, self.world
+  ctx.team_ball = w:shared_ball()
+  if not rc.enabled then ctx.role = 'striker' return end
+  local keeper = self.gc.gc_seen and self.gc.goalkeeper_player or rc.goalkeeper
+  self.role_cfg = self.role_cfg or setmetatable({}, { __index = rc })
+  self.role_cfg.goalkeeper = keeper
+  local p = w.pose
+  ctx.role, ctx.roles = roles.assign({ player = self.cfg.player_number, pose = { p.x, p.y, p.a } }, w.mates,
+    self.role_cfg, ctx.team_ball, -w.cfg.field.length / 2, ctx.role)
 end
 
 -- Closes the sockets (tests; the process just ends).

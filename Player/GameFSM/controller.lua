@@ -35,7 +35,7 @@ function M.new(cfg, opts)
     packets = 0, bad_packets = 0, foreign_packets = 0, returns = 0, gc_seen = false, gc_host = nil,
     t_start = nil, last_alive = -math.huge, button_prev = false, started = false,
     score = { 0, 0 }, team_colour = 0, kickoff_team = 0, secondary_state = 0, secondary_team = 0,
-    secondary_mode = 0, secondary_time = 0, secs_remaining = 0, goalkeeper = false,
+    secondary_mode = 0, secondary_time = 0, secs_remaining = 0, goalkeeper = false, goalkeeper_player = 0,
     last_packet_number = nil,
   }, Controller)
 end
@@ -66,6 +66,7 @@ function Controller:receive(data, host)
   self.secondary_state, self.secondary_team = mine.secondary_state, mine.secondary_team
   self.secondary_mode, self.secondary_time = mine.secondary_mode, mine.secondary_time
   self.secs_remaining, self.goalkeeper = mine.secs_remaining, mine.goalkeeper
+  self.goalkeeper_player = mine.goalkeeper_player
   self.last_packet_number = p.packet_number
   return true
 end

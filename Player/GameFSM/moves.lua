@@ -2,6 +2,7 @@
 --   keep_away(ctx, d)  stay d (+ margin) from the ball facing it: back off when nearer
 --   take(ctx)          walk behind the ball towards the opponent goal and stand there (no kick)
 --   stand(ctx)         stand (the head keeps watching)
+--   go_to(ctx, x, y, arrive)  walk to the field point (x, y), then turn to the ball and stand
 local nav = require('BodyFSM.nav')
 
 local M = {}
@@ -40,6 +41,16 @@ function M.take(ctx)
   local vx, vy, va, dist = nav.go_to(ctx, tx, ty, ha)
   if dist < sp.take_tolerance and abs(ha) < ctx.cfg.body.kick_tolerance_angle then ctx.act.stop()
   else ctx.act.walk(vx, vy, va) end
+end
+
+function M.go_to(ctx, x, y, arrive)
+  local w = ctx.world
+  local tx, ty = w:to_robot(x, y)
+  local d = sqrt(tx * tx + ty * ty)
+  local bearing = w:ball_known() and atan2(w.ball.y, w.ball.x) or 0
+  if d < arrive then face(ctx, bearing, ctx.rules.setplay.turn_gain) return end
+  local vx, vy, va = nav.go_to(ctx, tx, ty, bearing)
+  ctx.act.walk(vx, vy, va)
 end
 
 function M.stand(ctx)

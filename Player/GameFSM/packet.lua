@@ -100,6 +100,8 @@ function M.for_robot(p, team_number, player_number)
       local me = p.teams[t].players[player_number]
       local penalty = me and me.penalty or 0
       local info = p.secondary_state_info
+      local keeper = 0
+      for k = M.MAX_PLAYERS, 1, -1 do if p.teams[t].players[k].goalkeeper ~= 0 then keeper = k end end
       return {
         state = p.state, penalty = penalty, penalized = penalty ~= M.PENALTY_NONE,
         team_colour = p.teams[t].colour, kickoff_team = p.kickoff_team,
@@ -107,6 +109,7 @@ function M.for_robot(p, team_number, player_number)
         secondary_state = p.secondary_state, first_half = p.first_half,
         secondary_team = info[1], secondary_mode = info[2], secondary_time = p.secondary_time,
         secs_remaining = p.secs_remaining, goalkeeper = (me and me.goalkeeper or 0) ~= 0,
+        goalkeeper_player = keeper,
       }
     end
   end

@@ -1,8 +1,10 @@
 -- Playing: the body and head machines run, within what the rules allow now (GameFSM.setplay: the
 -- other team's kick-off and set plays keep us away from the ball, ours wait for the referee's
--- execute); with no fresh vision the robot stands and waits.
+-- execute) and as the robot's role says (Team.roles: the striker plays the ball, the others keep
+-- their positions, Team.position); with no fresh vision the robot stands and waits.
 local setplay = require('GameFSM.setplay')
 local moves = require('GameFSM.moves')
+local position = require('Team.position')
 
 local M = {}
 
@@ -36,9 +38,16 @@ function M.update(ctx)
   end
   local mode, distance = setplay.decide(ctx.game, ctx.rules, kickoff_progress(ctx))
   ctx.setplay = mode
+  local x, y
   if mode == 'play' then
+    x, y = position.target(ctx.role or 'striker', ctx.team_ball, ctx.rules.roles, ctx.world.cfg.field)
+  end
+  if mode == 'play' and not x then
     if ctx.body:state() == 'idle' then ctx.body:event('start', ctx) end
     ctx.body:update(ctx)
+  elseif mode == 'play' then -- a role that keeps its position (Player/Team/position.lua)
+    if ctx.body:state() ~= 'idle' then ctx.body:event('stop', ctx) end
+    moves.go_to(ctx, x, y, ctx.rules.roles.arrive)
   else
     if ctx.body:state() ~= 'idle' then ctx.body:event('stop', ctx) end
     moves[mode](ctx, distance)

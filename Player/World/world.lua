@@ -162,6 +162,21 @@ function World:goal_in_robot_frame()
   return self:to_robot(self.cfg.field.length / 2, 0)
 end
 
+-- The ball on the field as the team knows it: our own estimate while we know it, else the
+-- youngest of the teammates' (world.mates, Player/Team/team.lua); nil when nobody knows.
+function World:shared_ball()
+  if self:ball_known() then
+    local x, y = self:ball_field()
+    return { x, y }, 'own'
+  end
+  local best
+  for _, m in ipairs(self.mates or {}) do
+    if m.ball_known and (not best or m.age < best.age) then best = m end
+  end
+  if best then return { best.ball[1], best.ball[2] }, 'team' end
+  return nil
+end
+
 -- Writes the world block (one locked write).
 function World:publish(block)
   local b, p = self.ball, self.pose
