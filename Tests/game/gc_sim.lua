@@ -58,9 +58,9 @@ function GC:returns()
 end
 
 -- Waits (wall clock, the robot's clock held) until n participants (the robot's processes and this
--- script) take part in the lockstep.
-function M.joined(n)
-  local sync = shm.open('sync')
+-- script) take part in the lockstep (of robot id `robot`, default this script's).
+function M.joined(n, robot)
+  local sync = shm.open('sync', robot and { robot = robot } or nil)
   local deadline = os.time() + 60
   while true do
     local k = 0
