@@ -13,7 +13,7 @@ ffi.cdef [[ int kill(int pid, int sig); ]]
 local pidfile = arg[1]
 assert(pidfile, 'usage: team_play.lua PIDFILE_OF_ROBOT_2')
 local rules = Config.load('game')
-local me, other = shm.robot_id(), shm.robot_id() + 1
+local other = shm.robot_id() + 1
 local game1, game2 = shm.open('game'), shm.open('game', { robot = other })
 local team1, team2 = shm.open('team'), shm.open('team', { robot = other })
 local sim2, sync = shm.open('sim', { robot = other }), shm.open('sync')
