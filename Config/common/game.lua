@@ -57,5 +57,8 @@ return {
     supporter_home = -1.0,     -- m: x while no ball is known
     field_margin = 0.4,        -- m kept inside the field lines
     arrive = 0.25,             -- m: at the position (then turn to the ball and stand)
+    -- kick-off positions in READY (field x, y, heading) of the roles other than the striker's (which is
+    -- behavior.lua's ready_pose); supporters by player number: even ones at y, odd ones at -y
+    ready = { defender = { -3.0, 0.0, 0.0 }, supporter = { -2.0, 1.5, 0.0 }, goalkeeper = { -4.2, 0.0, 0.0 } },
   },
 }

@@ -2,6 +2,7 @@
 -- (own goal at x = -length/2); nil: play the ball (the striker; a goalkeeper clearing a ball near
 -- its goal). Numbers: Config/common/game.lua roles.
 --   local x, y = position.target(role, ball, cfg, field)   -- ball: {x, y} on the field or nil
+--   local pose = position.ready(role, player, cfg, striker_pose) -- the kick-off position in READY
 local M = {}
 
 local sqrt = math.sqrt
@@ -30,6 +31,13 @@ function M.target(role, ball, cfg, field)
   local side = ball[2] > 0 and -1 or 1
   return clamp(ball[1] - cfg.supporter_back, gx + margin, field.length / 2 - margin),
     clamp(ball[2] + side * cfg.supporter_side, -field.width / 2 + margin, field.width / 2 - margin)
+end
+
+function M.ready(role, player, cfg, striker_pose)
+  if role == 'striker' then return striker_pose end
+  local p = cfg.ready[role]
+  if role == 'supporter' and player % 2 == 1 then return { p[1], -p[2], p[3] } end
+  return p
 end
 
 return M

@@ -73,6 +73,17 @@ describe('roles', function()
     assert.are.equal(3.0 - rc.supporter_back, x)
     assert.is_true(y > -2.7 and y <= field.width / 2 - rc.field_margin)
   end)
+
+  it('kick-off positions in READY by role; supporters on either side by player number', function()
+    local rc, striker = rules.roles, { -1, 0, 0 }
+    assert.are.equal(striker, position.ready('striker', 2, rc, striker))
+    assert.are.same(rc.ready.goalkeeper, position.ready('goalkeeper', 1, rc, striker))
+    assert.are.same(rc.ready.defender, position.ready('defender', 3, rc, striker))
+    local a, b = position.ready('supporter', 2, rc, striker), position.ready('supporter', 3, rc, striker)
+    assert.are.equal(a[1], b[1])
+    assert.are.equal(-a[2], b[2])
+    assert.is_true(a[2] ~= 0)
+  end)
 end)
 
 describe('roles in the behavior', function()
