@@ -3,8 +3,9 @@
 -- return packets, and waits for the robot's processes to join the lockstep.
 --   local gc = require('Tests.game.gc_sim').new(port, return_port, team)
 --   gc.packet = { state = ..., secondary_state = ..., ... }  (what to send; teams filled in)
+--   gc.penalty = 34    the robot's penalty in what is sent (gc.player: its number, default 1)
 --   gc:tick()          send when due (call before each wait())
---   gc:returns()       return packets received since the last call, parsed
+--   gc:returns()       return packets received since the last call, parsed (gc.log: all of them)
 local ffi = require('ffi')
 local shm = require('shm')
 local packet = require('GameFSM.packet')
@@ -22,7 +23,7 @@ function M.new(port, return_port, team)
   local rx
   if return_port then rx = assert(udp.listen(return_port)) end
   return setmetatable({ port = port, tx = assert(udp.sender()), rx = rx, team = team, number = 0,
-    next = -1, packet = { state = packet.STATE.initial } }, GC)
+    next = -1, packet = { state = packet.STATE.initial }, log = {} }, GC)
 end
 
 function GC:send()
@@ -30,7 +31,9 @@ function GC:send()
   local p = {}
   for k, v in pairs(self.packet) do p[k] = v end
   p.packet_number = self.number
-  p.teams = { { number = self.team }, { number = M.OTHER } }
+  local players = {}
+  players[self.player or 1] = { penalty = self.penalty or 0 }
+  p.teams = { { number = self.team, players = players }, { number = M.OTHER } }
   assert(self.tx:send(packet.build(p), '127.0.0.1', self.port))
 end
 
@@ -52,7 +55,9 @@ function GC:returns()
   while self.rx do
     local data = self.rx:receive()
     if not data then break end
-    list[#list + 1] = packet.parse_return(data) or { bad = data }
+    local p = packet.parse_return(data) or { bad = data }
+    list[#list + 1] = p
+    self.log[#self.log + 1] = p
   end
   return list
 end

@@ -2,7 +2,8 @@
 # Scenario (make test): the rules of a game in the simulator with a test GameController
 # (Tests/game/setplay_play.lua): the other team's free kick (the robot keeps the rules' distance
 # from the ball and does not touch it, also after their execute; plays on afterwards), the other
-# team's kick-off (stays outside the centre circle for the wait, then plays), return packets.
+# team's kick-off (stays outside the centre circle for the wait, then plays), the chest button
+# (reported; the packets decide), alive return packets.
 #   Tests/game/setplay_test.sh        env: ROBOT_ID (uses ROBOT_ID+75), logs in build/test-logs/game/
 set -u
 cd "$(dirname "$0")/../.."
@@ -23,12 +24,12 @@ for _ in $(seq 1 300); do
 done
 timeout 600 ./run_repl Tests/game/setplay_play.lua "$PORT" "$((PORT + 1))" >"$LOGDIR/setplay_play.log" 2>&1
 mapfile -t checks < <(grep '^check ' "$LOGDIR/setplay_play.log")
-echo "1..6"
+echo "1..7"
 n=0
 for c in "${checks[@]}"; do
   n=$((n + 1))
   set -- $c
   if [ "$3" = ok ]; then echo "ok $n - $2: ${c#check $2 ok }"; else echo "not ok $n - $2: ${c#check $2 FAIL }"; fi
 done
-for i in $(seq $((n + 1)) 6); do echo "not ok $i - missing check (see $LOGDIR/setplay_play.log)"; done
+for i in $(seq $((n + 1)) 7); do echo "not ok $i - missing check (see $LOGDIR/setplay_play.log)"; done
 tail -3 "$LOGDIR/setplay_play.log" | sed 's/^/# /'
