@@ -30,6 +30,7 @@ return {
     retreat_speed = 0.15,      -- m/s backing away from the ball
     turn_gain = 0.8,           -- 1/s: turning to face the ball while keeping away
     take_tolerance = 0.1,      -- m: standing behind the ball for our own set play, this near the spot
+    keeper_line = 0.15,        -- m in front of its goal line: our goalkeeper at their penalty kick
   },
   team = {
     port_base = 10000,         -- UDP: each team broadcasts on port_base + its team number

@@ -57,7 +57,7 @@ function M.new(opts)
       start_without = 'string', start_delay = 'number' },
     kickoff = { wait = 'number', distance = 'number', ball_moved = 'number' },
     setplay = { distance = 'table', margin = 'number', hysteresis = 'number', retreat_speed = 'number',
-      turn_gain = 'number', take_tolerance = 'number' },
+      turn_gain = 'number', take_tolerance = 'number', keeper_line = 'number' },
     team = { port_base = 'number', broadcast = 'string', period = 'number', lost_after = 'number',
       max_per_step = 'number', max_players = 'number' },
     roles = { enabled = 'boolean', goalkeeper = 'number', walk_speed = 'number', turn_speed = 'number',

@@ -3,6 +3,7 @@
 --   take(ctx)          walk behind the ball towards the opponent goal and stand there (no kick)
 --   stand(ctx)         stand (the head keeps watching)
 --   go_to(ctx, x, y, arrive)  walk to the field point (x, y), then turn to the ball and stand
+--   guard(ctx)         the goalkeeper on its goal line's centre, facing the ball
 local nav = require('BodyFSM.nav')
 
 local M = {}
@@ -51,6 +52,11 @@ function M.go_to(ctx, x, y, arrive)
   if d < arrive then face(ctx, bearing, ctx.rules.setplay.turn_gain) return end
   local vx, vy, va = nav.go_to(ctx, tx, ty, bearing)
   ctx.act.walk(vx, vy, va)
+end
+
+function M.guard(ctx)
+  local field = ctx.world.cfg.field
+  M.go_to(ctx, -field.length / 2 + ctx.rules.setplay.keeper_line, 0, ctx.rules.roles.arrive)
 end
 
 function M.stand(ctx)

@@ -36,7 +36,7 @@ function M.update(ctx)
     ctx.act.stop()
     return
   end
-  local mode, distance = setplay.decide(ctx.game, ctx.rules, kickoff_progress(ctx))
+  local mode, distance = setplay.decide(ctx.game, ctx.rules, kickoff_progress(ctx), ctx.role)
   ctx.setplay = mode
   local x, y
   if mode == 'play' then

@@ -161,6 +161,44 @@ describe('behavior under the rules of a game', function()
     assert.are_not.equal('idle', behavior.body:state())
   end)
 
+  it('decides what the rules allow for every secondary state, team, mode and role', function()
+    local setplay = require('GameFSM.setplay')
+    local function g(secondary, ours, mode, o)
+      local v = { gc = true, secondary = secondary, secondary_ours = ours, secondary_mode = mode,
+        our_kickoff = true, dropball = false }
+      for k, x in pairs(o or {}) do v[k] = x end
+      return v
+    end
+    assert.are.same({ 'play' }, { setplay.decide(g('normal'), rules) })
+    assert.are.same({ 'play' }, { setplay.decide(g('overtime'), rules) })
+    assert.are.same({ 'stand' }, { setplay.decide(g('timeout'), rules) })
+    assert.are.same({ 'play' }, { setplay.decide(g('penalty_shootout'), rules) })
+    assert.are.same({ 'stand' }, { setplay.decide(g('penalty_shootout', false, nil, { our_kickoff = false }), rules) })
+    assert.are.same({ 'guard' }, { setplay.decide(g('penalty_shootout', false, nil, { our_kickoff = false }), rules,
+      nil, 'goalkeeper') })
+    for code = 4, 9 do
+      local s = packet.SECONDARY[code]
+      assert.are.same({ 'take' }, { setplay.decide(g(s, true, 'preparation'), rules) })
+      assert.are.same({ 'stand' }, { setplay.decide(g(s, true, 'placing'), rules) })
+      assert.are.same({ 'play' }, { setplay.decide(g(s, true, 'end'), rules) })
+      for _, mode in ipairs({ 'preparation', 'placing', 'end' }) do
+        assert.are.same({ 'keep_away', rules.setplay.distance[s] }, { setplay.decide(g(s, false, mode), rules) })
+      end
+    end
+    assert.are.same({ 'guard' }, { setplay.decide(g('penalty_kick', false, 'preparation'), rules, nil, 'goalkeeper') })
+    assert.are.same({ 'keep_away', rules.setplay.distance.corner_kick },
+      { setplay.decide(g('corner_kick', false, 'preparation'), rules, nil, 'goalkeeper') })
+    -- kick-off: the other team's holds us back until the ball moved or the wait is over; a drop ball does not
+    local theirs = g('normal', nil, nil, { our_kickoff = false })
+    assert.are.same({ 'keep_away', rules.kickoff.distance },
+      { setplay.decide(theirs, rules, { since = 1, ball_moved = false }) })
+    assert.are.same({ 'play' }, { setplay.decide(theirs, rules, { since = 1, ball_moved = true }) })
+    assert.are.same({ 'play' }, { setplay.decide(theirs, rules, { since = rules.kickoff.wait, ball_moved = false }) })
+    assert.are.same({ 'play' }, { setplay.decide(g('normal', nil, nil, { our_kickoff = false, dropball = true }),
+      rules, { since = 1, ball_moved = false }) })
+    assert.are.same({ 'play' }, { setplay.decide({ gc = false }, rules, { since = 1, ball_moved = false }) })
+  end)
+
   it('a timeout: stands', function()
     send(packet.STATE.playing, { secondary = 3 })
     run(1)
