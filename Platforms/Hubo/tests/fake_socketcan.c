@@ -2,9 +2,9 @@
  * Hubo DCM and its emulator run unchanged on a kernel without AF_CAN (this machine's).
  *
  * Served: socket(PF_CAN, SOCK_RAW, CAN_RAW) (SOCK_NONBLOCK / SOCK_CLOEXEC honoured), ioctl
- * SIOCGIFINDEX, if_nametoindex, bind(struct sockaddr_can), setsockopt CAN_RAW_FILTER /
+ * SIOCGIFINDEX and FIONBIO, if_nametoindex, bind(struct sockaddr_can), setsockopt CAN_RAW_FILTER /
  * CAN_RAW_ERR_FILTER (CAN_RAW_LOOPBACK / CAN_RAW_RECV_OWN_MSGS accepted), read / recv / recvfrom /
- * write / send / sendto of struct can_frame (16 bytes; anything else is EINVAL), poll, close.
+ * write / send / sendto of struct can_frame (16 bytes; anything else is EINVAL), poll, ppoll, close.
  * Not served: recvmsg, select, epoll, CAN FD.
  *
  * The bus: each bound socket is a named pipe $FAKECAN_DIR/<ifname>/<pid>.<fd> that its owner reads
@@ -83,6 +83,7 @@ static ssize_t (*real_recvfrom)(int, void *, size_t, int, struct sockaddr *, soc
 static ssize_t (*real_send)(int, const void *, size_t, int);
 static ssize_t (*real_sendto)(int, const void *, size_t, int, const struct sockaddr *, socklen_t);
 static int (*real_poll)(struct pollfd *, nfds_t, int);
+static int (*real_ppoll)(struct pollfd *, nfds_t, const struct timespec *, const sigset_t *);
 static int (*real_close)(int);
 static unsigned (*real_if_nametoindex)(const char *);
 
@@ -100,6 +101,7 @@ static void init(void) {
   real_send = dlsym(RTLD_NEXT, "send");
   real_sendto = dlsym(RTLD_NEXT, "sendto");
   real_poll = dlsym(RTLD_NEXT, "poll");
+  real_ppoll = dlsym(RTLD_NEXT, "ppoll");
   real_close = dlsym(RTLD_NEXT, "close");
   real_if_nametoindex = dlsym(RTLD_NEXT, "if_nametoindex");
   const char *d = getenv("FAKECAN_DIR");
@@ -179,6 +181,10 @@ int ioctl(int fd, unsigned long req, ...) {
   void *arg = va_arg(ap, void *);
   va_end(ap);
   if (!get(fd)) return real_ioctl(fd, req, arg);
+  if (req == FIONBIO) {   /* Python's settimeout, and others */
+    F[fd].nonblock = *(int *)arg != 0;
+    return F[fd].bound ? real_ioctl(fd, req, arg) : 0;
+  }
   if (req != SIOCGIFINDEX) {
     errno = EINVAL;
     return -1;
@@ -422,22 +428,20 @@ static int readable(fake *f) {
   return 1;
 }
 
-int poll(struct pollfd *fds, nfds_t n, int timeout) {
-  init();
-  int any = 0;
-  for (nfds_t k = 0; k < n; k++) any |= get(fds[k].fd) != NULL;
-  if (!any) return real_poll(fds, n, timeout);
-  const double end = timeout < 0 ? -1 : now() + timeout / 1000.0;
+/* poll and ppoll on fake sockets: timeout in s (< 0: none), waits in slices of at most 20 ms */
+static int wait_fds(struct pollfd *fds, nfds_t n, double timeout, const sigset_t *mask) {
+  const double end = timeout < 0 ? -1 : now() + timeout;
   for (;;) {
     int ready = 0;   /* frames read ahead answer at once */
     for (nfds_t k = 0; k < n; k++) {
       fake *f = get(fds[k].fd);
       ready |= f && f->held && (fds[k].events & POLLIN);
     }
-    int wait_ms = timeout < 0 ? 20 : (int)((end - now()) * 1000 + 0.999);
-    if (wait_ms > 20) wait_ms = 20;   /* a taken-down interface is noticed while waiting */
-    if (wait_ms < 0 || ready) wait_ms = 0;
-    int r = real_poll(fds, n, wait_ms);
+    double w = timeout < 0 ? 0.02 : end - now();
+    if (w > 0.02) w = 0.02;   /* a taken-down interface is noticed while waiting */
+    if (w < 0 || ready) w = 0;
+    struct timespec ts = { (time_t)w, (long)((w - (double)(time_t)w) * 1e9) };
+    int r = real_ppoll(fds, n, &ts, mask);
     if (r < 0) return r;
     r = 0;
     for (nfds_t k = 0; k < n; k++) {
@@ -452,6 +456,23 @@ int poll(struct pollfd *fds, nfds_t n, int timeout) {
     }
     if (r > 0 || (timeout >= 0 && now() >= end)) return r;
   }
+}
+
+static int any_fake(const struct pollfd *fds, nfds_t n) {
+  init();
+  for (nfds_t k = 0; k < n; k++)
+    if (get(fds[k].fd)) return 1;
+  return 0;
+}
+
+int poll(struct pollfd *fds, nfds_t n, int timeout) {
+  if (!any_fake(fds, n)) return real_poll(fds, n, timeout);
+  return wait_fds(fds, n, timeout < 0 ? -1 : timeout / 1000.0, NULL);
+}
+
+int ppoll(struct pollfd *fds, nfds_t n, const struct timespec *tmo, const sigset_t *mask) {
+  if (!any_fake(fds, n)) return real_ppoll(fds, n, tmo, mask);
+  return wait_fds(fds, n, tmo ? tmo->tv_sec + tmo->tv_nsec * 1e-9 : -1, mask);
 }
 
 int close(int fd) {
