@@ -14,9 +14,9 @@
  * bit count (hcan_frame_bits: stuff bits included) at the bit rate, one frame at a time; a board
  * answers 20 us after the request's last bit, and its reply leaves when the bus is free and arrives
  * at its last bit (--no-timing: at once). Frames queue in order (no arbitration by id).
- * Faults: --drop P (no answer), --corrupt P (the answer arrives damaged: truncated, as a controller
- * error frame, or with a flipped identifier bit, in equal shares), --delay S (added before every
- * answer), --dead BOARD (never answers), --error BOARD (its status reports a big position error).
+ * Faults: --drop P (no answer), --corrupt P (an answer is damaged, in equal shares: a bit error --
+ * the CRC catches it, every node sees an error frame, the board sends it again; a wrong DLC; the
+ * number of a board that is not on the bus), --delay S (added before every answer), --dead BOARD (never answers), --error BOARD (its status reports a big position error).
  * BOARD: a name of can.lua (JMC2) or a number (0x02).
  * --stdin reads commands, one per line: dead BOARD | alive BOARD | error BOARD FAULTS LIMITS |
  *   ft BOARD MX MY FZ | imu ROLL PITCH ROLL_RATE PITCH_RATE | power V A W | stats | quit.
@@ -118,25 +118,33 @@ static double occupy(int b, const hcan_frame *f, double ready) {
   return E.busy[b];
 }
 
-static void damage(hcan_frame *f) {
-  const int kind = rand() % 3;
-  if (kind == 0 && f->dlc > 0) {
-    f->dlc = (uint8_t)(rand() % f->dlc);   /* truncated */
-  } else if (kind == 1) {
-    memset(f, 0, sizeof *f);               /* the controller saw a bit error: an error frame */
-    f->id = HCAN_ERR | CAN_ERR_PROT;
-    f->dlc = 8;
-    f->data[2] = CAN_ERR_PROT_BIT;
-  } else {
-    f->id ^= 1u << (rand() % 7);           /* a flipped identifier bit */
-  }
+/* The board numbers in use on bus b (motor boards and sensors alike). */
+static int in_use(int b, int num) {
+  for (int k = 0; k < E.w.n; k++)
+    if (E.w.b[k].def->bus == b && E.w.b[k].def->number == num) return 1;
+  return 0;
 }
 
-static void enqueue(int bus, const hcan_frame *f, double ready) {
-  if (E.p_drop > 0 && uniform() < E.p_drop) {
-    E.n_dropped++;
-    return;
+/* Damages a reply: 0 it stays as it is but costs an error frame and a retransmission (what a bit
+ * error does on CAN: the CRC catches it); 1 truncated (a wrong DLC); 2 the same reply from a board
+ * number nobody on the bus has (a misset DIP switch). Returns the kind. */
+static int damage(int b, hcan_frame *f) {
+  const int kind = rand() % 3;
+  int num;
+  hcan_classify(f, &num);
+  if (kind == 1 && f->dlc > 0) {
+    f->dlc = (uint8_t)(rand() % f->dlc);
+  } else if (kind == 2 && num >= 0) {
+    int other = num;
+    for (int t = 1; t < HCAN_SENSOR_MAX && (other == num || in_use(b, other)); t++) other = (num + t) % HCAN_SENSOR_MAX;
+    f->id = f->id - (uint32_t)num + (uint32_t)other;
+  } else {
+    return 0;
   }
+  return kind;
+}
+
+static void queue_frame(int bus, const hcan_frame *f, double due) {
   if (E.nq >= QMAX) {
     E.n_overflow++;
     return;
@@ -144,11 +152,29 @@ static void enqueue(int bus, const hcan_frame *f, double ready) {
   pending *p = &E.q[E.nq++];
   p->f = *f;
   p->bus = bus;
-  p->due = occupy(bus, f, ready + E.delay);
-  if (E.p_corrupt > 0 && uniform() < E.p_corrupt) {
-    damage(&p->f);
-    E.n_corrupted++;
+  p->due = due;
+}
+
+static void enqueue(int bus, const hcan_frame *f, double ready) {
+  if (E.p_drop > 0 && uniform() < E.p_drop) {
+    E.n_dropped++;
+    return;
   }
+  hcan_frame out = *f;
+  if (E.p_corrupt > 0 && uniform() < E.p_corrupt) {
+    E.n_corrupted++;
+    if (damage(bus, &out) == 0) {
+      /* the damaged transmission, then the error frame every node sees, then the retry */
+      const double err_end = occupy(bus, &out, ready + E.delay) + 20 / E.table.bitrate;
+      if (E.timing) E.busy[bus] = err_end;
+      hcan_frame ef = { .id = HCAN_ERR | CAN_ERR_PROT, .dlc = 8 };
+      ef.data[2] = CAN_ERR_PROT_BIT;
+      queue_frame(bus, &ef, err_end);
+      queue_frame(bus, &out, occupy(bus, &out, err_end));
+      return;
+    }
+  }
+  queue_frame(bus, &out, occupy(bus, &out, ready + E.delay));
 }
 
 static void send_due(double t) {
