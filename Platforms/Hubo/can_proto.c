@@ -327,7 +327,18 @@ int hcan_net_add(hcan_net *n, hcan_board_kind kind, int number) {
 }
 
 void hcan_net_owe(hcan_net *n, int i, uint32_t mask) {
-  if (i >= 0 && i < n->n) n->b[i].owed |= mask;
+  if (i < 0 || i >= n->n) return;
+  n->b[i].asked |= mask;
+  n->b[i].owed |= mask;
+}
+
+static int bit_index(uint32_t bit) {
+  int k = 0;
+  while (bit > 1) {
+    bit >>= 1;
+    k++;
+  }
+  return k;
 }
 
 /* The board a reply of this kind names, and the reply bit it pays; -1 when none on this bus. */
@@ -408,8 +419,8 @@ int hcan_net_rx(hcan_net *n, const hcan_frame *f) {
     n->unexpected++;
     return -1;
   }
-  const int late = !(b->owed & bit) && (b->owed_prev & bit);
-  if (!(b->owed & bit) && !late) {
+  uint8_t *carry = &b->carry[bit_index(bit)];
+  if (!(b->owed & bit) && *carry == 0) {
     n->unexpected++;   /* nobody asked, or a second answer */
     return -1;
   }
@@ -417,13 +428,14 @@ int hcan_net_rx(hcan_net *n, const hcan_frame *f) {
     n->corrupt++;
     return -1;
   }
-  if (late) {
-    b->owed_prev &= ~bit;
-    b->late++;
-  } else {
+  if (b->owed & bit) {
     b->owed &= ~bit;
-    b->fresh |= bit;
+  } else {
+    (*carry)--;
+    b->late++;
+    b->paid_late |= bit;
   }
+  b->fresh |= bit;
   b->replies++;
   if (bit == HCAN_R_STATUS && (hcan_status_fault(b->status[0]) || hcan_status_fault(b->status[1]))) b->faults++;
   return i;
@@ -433,6 +445,11 @@ int hcan_net_end_cycle(hcan_net *n, int dead_after) {
   int died = 0;
   for (int i = 0; i < n->n; i++) {
     hcan_board *b = &n->b[i];
+    for (int k = 0; k < 8; k++) {
+      const uint32_t bit = 1u << k;
+      if (b->owed & bit) b->carry[k] = (uint8_t)(b->carry[k] < 2 ? b->carry[k] + 1 : 2);
+      else if ((b->asked & bit) && !(b->paid_late & bit)) b->carry[k] = 0;
+    }
     if (b->owed) {
       b->timeouts++;
       b->missed++;
@@ -440,13 +457,11 @@ int hcan_net_end_cycle(hcan_net *n, int dead_after) {
         b->dead = 1;
         died++;
       }
-    } else if (b->fresh) {
+    } else if (b->asked) {
       b->missed = 0;
       b->dead = 0;
     }
-    b->owed_prev = b->owed;
-    b->owed = 0;
-    b->fresh = 0;
+    b->asked = b->owed = b->fresh = b->paid_late = 0;
   }
   return died;
 }

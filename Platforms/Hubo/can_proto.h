@@ -164,9 +164,13 @@ typedef struct hcan_board {
   double current[2], temp;     /* A, deg C */
   double ft[3];                /* Mx, My (N*m), Fz (N) */
   double tilt[3], imu[4], power[3];
-  /* bookkeeping */
-  uint32_t owed, owed_prev;    /* replies asked for this cycle / left unanswered by the last one */
-  uint32_t fresh;              /* replies that came this cycle */
+  /* bookkeeping: a reply pays this cycle's request, else one left unanswered by an earlier cycle
+   * (a late reply: used, counted late); with neither it is unexpected */
+  uint32_t asked;              /* replies asked for this cycle */
+  uint32_t owed;               /* of those, not answered yet */
+  uint32_t fresh;              /* replies that came this cycle (this cycle's or late ones) */
+  uint32_t paid_late;          /* reply kinds a late reply came for this cycle */
+  uint8_t carry[8];            /* per reply kind: earlier requests still unanswered (at most 2) */
   uint32_t replies, timeouts, late, faults;
   int missed;                  /* cycles in a row with an answer missing */
   int dead;                    /* missed >= dead_after */
@@ -191,8 +195,10 @@ void hcan_net_owe(hcan_net *n, int i, uint32_t mask);
  * (counted: corrupt = wrong length or error frame, misaddressed = a board not on this bus,
  * unexpected = an id or reply nobody asked for). Host frames seen on the bus are ignored (-2). */
 int hcan_net_rx(hcan_net *n, const hcan_frame *f);
-/* Ends a cycle: replies still owed count as timeouts; a board with dead_after cycles in a row
- * missing an answer is dead until it answers again. Returns the boards that died now. */
+/* Ends a cycle: a board with a reply still owed has a timeout (its request is carried: a late reply
+ * is still taken); dead_after cycles in a row with one makes it dead until it answers in time again.
+ * A kind answered in time with no late reply in the cycle drops its carry (the board is in step).
+ * Returns the boards that died now. */
 int hcan_net_end_cycle(hcan_net *n, int dead_after);
 
 #ifdef __cplusplus
