@@ -19,7 +19,8 @@
  * number of a board that is not on the bus), --delay S (added before every answer), --dead BOARD (never answers), --error BOARD (its status reports a big position error).
  * BOARD: a name of can.lua (JMC2) or a number (0x02).
  * --stdin reads commands, one per line: dead BOARD | alive BOARD | error BOARD FAULTS LIMITS |
- *   ft BOARD MX MY FZ | imu ROLL PITCH ROLL_RATE PITCH_RATE | power V A W | stats | quit.
+ *   ft BOARD MX MY FZ | imu ROLL PITCH ROLL_RATE PITCH_RATE | power V A W | move BOARD CH COUNTS (a
+ *   hand moves the joint: its encoder jumps there) | stats | quit.
  * stats prints per board "board NAME bus B number N ref R0 R1 enc E0 E1 fet F ctrl C home H dead D",
  * "sensor NAME ..." for sensor and power boards, "silent NAME ..." for boards it does not emulate (the
  * Hubo2+ neck: formats unknown), per bus "bus B frames_in N frames_out M bits BITS load_pct L", totals, then "end".
@@ -257,6 +258,8 @@ static void command(char *line) {
   else if (!strcmp(what, "error") && b && n >= 4) {
     b->faults = (uint8_t)v[0];
     b->limits = (uint8_t)v[1];
+  } else if (!strcmp(what, "move") && b && n == 4 && v[0] >= 0 && v[0] < b->def->nch) {
+    b->pos[(int)v[0]] = v[1];
   } else if (!strcmp(what, "ft") && b && n == 5) {
     memcpy(b->ft, v, sizeof b->ft);
   } else if (!strcmp(what, "imu") && sscanf(line, "%*s %lf %lf %lf %lf", &v[0], &v[1], &v[2], &v[3]) == 4) {

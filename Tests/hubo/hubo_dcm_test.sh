@@ -77,6 +77,33 @@ ok $? "the boards' encoders come back as the joint positions"
 limited=$(stats 's.ref_limited[0]')
 ok $([ "${limited:-0}" -gt 5 ]; echo $?) "the 0.5 rad step went out over several cycles at RKN's speed limit ($limited joint-cycles held back)"
 
+# ---------------------------------------------------------------- NaN and compliance
+repl 'local a = require("shm").open("dcm.actuator"); local J = {}
+  for i, name in ipairs(require("Config").load("robot").joints) do J[name] = i - 1 end
+  a:write(function(x) x.command[J.RKN] = 0/0 end)' >/dev/null
+wait_for 'require("shm").open("dcm.stats").nan_commands[0] > 0'; ok $? "a NaN command is refused and counted"
+sleep 0.3
+s=$(emu_board JMC2)
+ok $([ "${s%% *}" = 50929 ]; echo $?) "NaN never reaches the board: JMC2 keeps its reference ($s)"
+repl 'Body.set_command("RKN", 0.5)' >/dev/null
+# LSR (JMC10 channel 1) held at 0; a hand moves it to 10000 counts: stiff, the reference stays at
+# the command and the board pulls it back; compliant (hardness 0), the reference follows the joint
+echo "move JMC10 1 10000" >&3
+sleep 0.3
+s=$(emu_board JMC10)
+ok $([ "$(echo "$s" | awk '{print $2}')" = 0 ]; echo $?) "hardness 1: LSR's reference stays at the command when moved by hand ($s)"
+repl 'local a = require("shm").open("dcm.actuator"); local J = {}
+  for i, name in ipairs(require("Config").load("robot").joints) do J[name] = i - 1 end
+  a:write(function(x) x.hardness[J.LSR] = 0 end)' >/dev/null
+sleep 0.2
+echo "move JMC10 1 10000" >&3
+# the hand lets go at once, so board and reference meet between the command and 10000
+for _ in $(seq 30); do s=$(emu_board JMC10); [ "$(echo "$s" | awk '{print ($2 == $4 && $2 > 1000)}')" = 1 ] && break; sleep 0.1; done
+ok $([ "$(echo "$s" | awk '{print ($2 == $4 && $2 > 1000)}')" = 1 ]; echo $?) "hardness 0: LSR's reference follows its position where the hand moved it (compliant) ($s)"
+repl 'local a = require("shm").open("dcm.actuator"); local J = {}
+  for i, name in ipairs(require("Config").load("robot").joints) do J[name] = i - 1 end
+  a:write(function(x) x.hardness[J.LSR] = 1; x.command[J.LSR] = 0 end)' >/dev/null
+
 # ---------------------------------------------------------------- sensors
 echo "ft LFFT 1.5 -2.0 300" >&3; echo "ft RHFT 0.5 0.25 -12" >&3
 echo "imu 0.05 -0.1 0.2 -0.3" >&3; echo "power 47.5 3.2 152" >&3
@@ -149,6 +176,37 @@ wait_for 'require("shm").open("dcm.stats").bus_down[1] == 0 and require("shm").o
 ok $? "the bus is reopened and its boards answer again"
 grep -q "bus 2 (can1) reopened" "$T/dcm.log"; ok $? "the log says so"
 stop_dcm
+stop_emu
+
+# ---------------------------------------------------------------- boards that come late, homing
+rm -f /dev/shm/hrp."$ROBOT_ID".*
+: >"$T/dcm.log"
+start_dcm
+sleep 1
+start_emu
+wait_for 'require("shm").open("dcm.stats").board_dead[2] == 0'; ok $? "boards powered after the DCM started are found"
+repl 'Body.set_command("RKN", 0.3)' >/dev/null
+for _ in $(seq 50); do s=$(emu_board JMC2); [ "${s%% *}" = 30557 ] && break; sleep 0.1; done
+ok $([ "${s%% *}" = 30557 ]; echo $?) "and switched on when their status says homed: RKN 0.3 rad = 30557 counts ($s)"
+stop_dcm
+stop_emu
+rm -f /dev/shm/hrp."$ROBOT_ID".*
+: >"$T/dcm.log"
+start_emu --unhomed
+start_dcm --cycles 300
+wait "$DCM"; DCM=""
+s=$(emu_board JMC2)
+ok $([ "$(echo "$s" | awk '{print $5, $6, $7}')" = "0 0 0" ] && grep -q "board JMC2 is not homed (home state 0): left off" "$T/dcm.log"; echo $?) \
+  "unhomed boards are left off and reported ($s)"
+cp Config/platforms/Hubo/dcm.lua "$T/dcm.lua.orig"
+sed -i 's/home_at_start = false/home_at_start = true/' Config/platforms/Hubo/dcm.lua
+rm -f /dev/shm/hrp."$ROBOT_ID".*
+start_dcm --cycles 300
+wait "$DCM"; DCM=""
+s=$(emu_board JMC2)
+ok $([ "$(echo "$s" | awk '{print $5, $6, $7}')" = "1 1 6" ] && grep -q "every board homed" "$T/dcm.log"; echo $?) \
+  "home_at_start: homed, then switched on ($s)"
+cp "$T/dcm.lua.orig" Config/platforms/Hubo/dcm.lua
 stop_emu
 
 # ---------------------------------------------------------------- bad tables stop start-up
