@@ -27,6 +27,7 @@ typedef struct hubo_dcm {
   const char *iface[HT_BUS_MAX];
   double start_hardness, watchdog, safe_hardness;
   int rt_priority;
+  int prepared;                         /* the first open: priority set, the plan logged */
   /* statistics window */
   uint64_t frames0[HT_BUS_MAX], bits0[HT_BUS_MAX];
   double frames_pc[HT_BUS_MAX], bits_pc[HT_BUS_MAX], load[HT_BUS_MAX];
@@ -88,9 +89,8 @@ static int hubo_configure(void *hw, dcm *d, char *err, size_t n) {
 
 static int hubo_open_buses(void *hw, dcm *d, char *err, size_t n) {
   hubo_dcm *o = (hubo_dcm *)hw;
-  static int prepared;
-  if (!prepared) {
-    prepared = 1;
+  if (!o->prepared) {
+    o->prepared = 1;
     if (o->rt_priority > 0) {
       struct sched_param sp = { .sched_priority = o->rt_priority };
       if (sched_setscheduler(0, SCHED_FIFO, &sp) != 0)
