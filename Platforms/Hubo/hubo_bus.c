@@ -110,9 +110,11 @@ int hubo_bringup(hubo *h, dcm *d, char *err, size_t n) {
   dcm_log(d, "%d of %d motor boards answer", nans, nmotor);
   for (int k = 0; k < h->t.nboard; k++) {
     const ht_board *b = &h->t.board[k];
-    if (is_motor(h, k) && !ans[k])
+    if (is_motor(h, k) && !ans[k]) {
       dcm_log(d, "board %s (0x%02X, bus %d) does not answer: its joints are reported dead until it does", b->name,
               b->number, b->bus + 1);
+      h->to_enable[k] = h->set.enable_at_start;   /* switched on when its status comes */
+    }
     if (!b->active) dcm_log(d, "board %s (0x%02X, bus %d) is not driven (can.lua: active = false)", b->name, b->number, b->bus + 1);
   }
   if (h->set.home_at_start) {

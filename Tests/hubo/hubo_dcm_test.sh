@@ -197,7 +197,7 @@ start_dcm --cycles 300
 wait "$DCM"; DCM=""
 s=$(emu_board JMC2)
 ok $([ "$(echo "$s" | awk '{print $5, $6, $7}')" = "0 0 0" ] && grep -q "board JMC2 is not homed (home state 0): left off" "$T/dcm.log"; echo $?) \
-  "unhomed boards are left off and reported ($s)"
+  "unhomed boards are left off and reported ($s; $(grep -m2 JMC2 "$T/dcm.log" | tr '\n' ' '))"
 cp Config/platforms/Hubo/dcm.lua "$T/dcm.lua.orig"
 sed -i 's/home_at_start = false/home_at_start = true/' Config/platforms/Hubo/dcm.lua
 rm -f /dev/shm/hrp."$ROBOT_ID".*
