@@ -102,15 +102,14 @@ static void write_stats(dcm *d, const dcm_driver *drv, void *hw) {
   }
 }
 
-/* A blank actuator block (never written, all zero) gets the present pose at start_hardness, so
- * nothing moves when the DCM starts; one somebody wrote is left as it is. */
+/* The DCM owns the start state: on every start, whatever the actuator block held (a REPL command
+ * written before any DCM ran, a previous run's last pose or hardness 0), every joint is commanded
+ * to its present position at start_hardness with its torque on, so nothing moves when the DCM starts
+ * and nothing is limp. The robot's processes take over with their next commands. */
 static void seed_actuators(dcm *d) {
   for (int r = 0; r < d->nrobots; r++) {
     dcm_robot *R = &d->robot[r];
     const dcm_blk_dcm_actuator *a = &R->actuator;
-    int blank = shm_block_header(a->blk)->writes == 0;
-    for (int j = 0; j < R->nj && blank; j++) blank = a->command[j] == 0 && a->hardness[j] == 0 && a->torque_enable[j] == 0;
-    if (!blank) continue;
     shm_write_begin(a->blk);
     for (int j = 0; j < R->nj; j++) {
       a->command[j] = R->sensor.position[j];
