@@ -16,7 +16,8 @@
  * at its last bit (--no-timing: at once). Frames queue in order (no arbitration by id).
  * Faults: --drop P (no answer), --corrupt P (an answer is damaged, in equal shares: a bit error --
  * the CRC catches it, every node sees an error frame, the board sends it again; a wrong DLC; the
- * number of a board that is not on the bus), --delay S (added before every answer), --dead BOARD (never answers), --error BOARD (its status reports a big position error).
+ * number of a board that is not on the bus), --delay S (added before every answer), --dead BOARD
+ * (never answers), --error BOARD (its status reports a big position error).
  * BOARD: a name of can.lua (JMC2) or a number (0x02).
  * --stdin reads commands, one per line: dead BOARD | alive BOARD | error BOARD FAULTS LIMITS |
  *   ft BOARD MX MY FZ | imu ROLL PITCH ROLL_RATE PITCH_RATE | power V A W | move BOARD CH COUNTS (a

@@ -12,10 +12,10 @@
  * fewer than one cycle's replies; a pipe holds 4096 frames, and 16-byte writes are atomic). A frame
  * written goes to every other socket bound to that interface (as SocketCAN's loopback delivers to
  * the host's other sockets, never to the sender). A receiver whose queue is full loses the frame,
- * as a socket's overflowing receive queue does. The shim ignores SIGPIPE (a peer that died). Filters apply on receipt, as the kernel's: a frame
- * passes when (id & mask) == (filter id & mask) for some filter (inverted with CAN_INV_FILTER);
- * error frames (CAN_ERR_FLAG) pass only through the error mask. poll drops frames no filter passes,
- * so POLLIN means a frame read() will return.
+ * as a socket's overflowing receive queue does. The shim ignores SIGPIPE (a peer that died).
+ * Filters apply on receipt, as the kernel's: a frame passes when (id & mask) == (filter id & mask)
+ * for some filter (inverted with CAN_INV_FILTER); error frames (CAN_ERR_FLAG) pass only through the
+ * error mask. poll drops frames no filter passes, so POLLIN means a frame read() will return.
  *
  * Environment: FAKECAN_DIR (default /tmp/fakecan.<uid>), FAKECAN_IFACES (default
  * "can0,can1,vcan0,vcan1": the interfaces that exist, index = position + 1). A file
