@@ -17,8 +17,16 @@ local MASS = { op3 = 3.1475, darwin = 2.92532, waistbot = 3.4475 }
 
 local function bodies()
   local list = {}
-  local p = io.popen('ls "' .. native.root() .. '/Config/robots"')
-  for name in p:lines() do list[#list + 1] = name end
+  local root = native.root() .. '/Config/robots/'
+  local p = io.popen('ls "' .. root .. '"')
+  for name in p:lines() do
+    -- a folder with only some concerns (hubo2plus's can.lua) is no body yet
+    local f = io.open(root .. name .. '/robot.lua')
+    if f then
+      f:close()
+      list[#list + 1] = name
+    end
+  end
   p:close()
   return list
 end
