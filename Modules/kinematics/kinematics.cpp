@@ -326,7 +326,12 @@ int leg_solve(const Leg &L, const Matrix3d &R, const Vector3d &A, double a, doub
   double yz = std::sqrt(u.y() * u.y() + u.z() * u.z());
   double pz = std::sqrt(std::max(yz * yz - dy2, 0.0));
   double wpz = u.z() > 0 ? pz : -pz;
-  double f = yz < 1e-12 ? 0.0 : std::remainder(std::atan2(wpz, L.dy) - std::atan2(u.z(), u.y()), 2.0 * M_PI);
+  double f = 0.0;
+  if (yz >= 1e-12) {
+    // (the plain form without an offset keeps the small bodies' numbers bit for bit)
+    f = L.dy == 0.0 ? std::atan2(u.y() / wpz, u.z() / wpz)
+                    : std::remainder(std::atan2(wpz, L.dy) - std::atan2(u.z(), u.y()), 2.0 * M_PI);
+  }
   double g = std::atan2(wx, wz) - std::atan2(u.x(), wpz);  // Ry adds its angle to atan2(x, z)
   g = std::remainder(g, 2.0 * M_PI);
   double e = g - d;
