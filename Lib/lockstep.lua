@@ -17,8 +17,10 @@ local C = shm.C
 local Participant = {}
 Participant.__index = Participant
 
--- Claims a slot; errors if all are taken by live processes.
-function M.join()
+-- Claims a slot; errors if all are taken by live processes. opts.observer: a script that acts
+-- between ticks (see Participant:settle).
+function M.join(opts)
+  local observer = opts and opts.observer and 1 or 0
   local sync = shm.open('sync')
   local pid = ffi.C.getpid()
   local n = sync:count('pid')
@@ -32,6 +34,7 @@ function M.join()
         -- waits for our first done() at its first tick > 0, so it cannot run ahead of us
         sync.done_tick[i] = 0
         sync.wake_tick[i] = 0
+        sync.observer[i] = observer
         if C.shm_cas_i32(pids + i, p, pid) == 1 then return M._setup(sync, i) end
       end
     end
@@ -40,10 +43,11 @@ function M.join()
 end
 
 function M._setup(sync, slot)
-  -- A DCM held at tick 0 for its first participant steps once (done_tick 0 >= 0) and then waits
-  -- for us at tick 1: wait for that, so a script's first commands land on a defined tick.
+  -- A DCM held at tick 0 for its first participants (dcm_sim --lockstep-wait N: until N have
+  -- joined) steps once (done_tick 0 >= 0) and then waits for us at tick 1: wait for that, so that
+  -- everybody's first work lands on the same tick whoever came first.
   if sync.lockstep[0] == 1 then
-    local deadline = C.shm_now() + 2.0
+    local deadline = C.shm_now() + 60.0
     local word = ffi.cast('volatile uint32_t *', sync.tick)
     while word[0] < 1 and C.shm_now() < deadline do C.shm_futex_wait(word, word[0], 0.01) end
   end
@@ -62,6 +66,35 @@ function Participant:done(tick, wake_tick)
   s.done_tick[i] = tick
   C.shm_fetch_add_u32(s.done_count, 1)
   C.shm_futex_wake(s.done_count)
+end
+
+-- An observer (a script) at tick `tick`: waits until every other live participant that is not an
+-- observer and is due at this tick has finished it, so that what the script reads is that tick's
+-- outcome and what it writes is seen by the others on the next tick, whoever runs faster: a
+-- scenario then runs the same every time. Observers never wait for each other; gives up after
+-- `timeout` s of wall time (default 5) on a participant that stopped answering.
+function Participant:settle(tick, timeout)
+  local s, me = self.sync, self.slot
+  if s.lockstep[0] ~= 1 then return end
+  local deadline = C.shm_now() + (timeout or 5.0)
+  local word = ffi.cast('volatile uint32_t *', s.done_count)
+  local pid = ffi.cast('volatile int32_t *', s.pid)
+  local wake = ffi.cast('volatile uint32_t *', s.wake_tick)
+  local done = ffi.cast('volatile uint32_t *', s.done_tick)
+  while C.shm_now() < deadline do
+    local seen = word[0]
+    local waiting = false
+    for i = 0, s:count('pid') - 1 do
+      local p = pid[i]
+      if i ~= me and p ~= 0 and s.observer[i] == 0 and wake[i] <= tick and done[i] < tick
+         and C.shm_pid_alive(p) == 1 then
+        waiting = true
+        break
+      end
+    end
+    if not waiting then return end
+    C.shm_futex_wait(word, seen, 0.01)
+  end
 end
 
 -- Gives the slot back (the DCM stops waiting for this process).

@@ -46,14 +46,18 @@ function env.wait(seconds)
   local tick = Body.get_tick()
   local target = tick + math.max(1, math.floor(seconds / period + 0.5))
   if participant then participant:done(tick, target) end
+  -- a lockstep clock held at tick 0 waits for every participant to join (dcm_sim --lockstep-wait):
+  -- a slow start of the others is no error
+  local patience = (tick == 0 and participant and lockstep.active()) and 60.0 or 5.0
   while tick < target do
-    local t = Body.wait_tick(tick, 5.0)
+    local t = Body.wait_tick(tick, patience)
     if not t then
       error(string.format('wait: the clock is not advancing (tick %d): is ./run_dcm running for ROBOT_ID %d?',
         tick, shm.robot_id()), 2)
     end
     tick = t
   end
+  if participant then participant:settle(tick) end
 end
 
 -- p(x): prints a value, tables expanded one level deep.
@@ -107,7 +111,7 @@ if args[1] == '-e' or (args[1] and args[1] ~= '-i') then
     env.arg = { select(2, unpack(args)) }
   end
   if not chunk then io.stderr:write('repl: ', err, '\n') finish(1) end
-  participant = lockstep.join()
+  participant = lockstep.join({ observer = true })
   local ok, res = run_chunk(chunk)
   if not ok then io.stderr:write(tostring(res), '\n') finish(1) end
   finish(0)

@@ -166,6 +166,8 @@ typedef struct dcm_lockstep {
   double spin;                          /* s of polling before sleeping on the futex */
   double drop_after;                    /* s of waiting before dead participants are dropped */
   uint32_t dropped;                     /* participants dropped because they died */
+  int start_with;                       /* participants to wait for before the first tick (<= 1: one) */
+  int started;                          /* the clock has run (set by dcm_lockstep_wait) */
 } dcm_lockstep;
 
 /* Lockstep on: participants registered with an earlier DCM are consulted from `tick` on. */
@@ -173,7 +175,8 @@ void dcm_lockstep_start(dcm_lockstep *l, uint32_t tick);
 /* Tick `tick` is published (dcm.sensor written): participants may work on it. */
 void dcm_lockstep_publish(dcm_lockstep *l, uint32_t tick);
 /* Waits until every live participant whose wake_tick <= tick reports done_tick >= tick; while
- * nobody has joined at all, holds the clock. idle(ctx, alone) runs while waiting. Returns 0, or 1
+ * nobody has joined at all, holds the clock (before its first tick: until start_with have joined,
+ * so that a run whose participants start at different moments still starts on a defined tick). idle(ctx, alone) runs while waiting. Returns 0, or 1
  * when *stop was set. */
 int dcm_lockstep_wait(dcm_lockstep *l, uint32_t tick, void (*idle)(void *ctx, int alone), void *ctx,
                       volatile sig_atomic_t *stop);

@@ -29,14 +29,15 @@ void dcm_lockstep_publish(dcm_lockstep *l, uint32_t tick) {
   }
 }
 
-/* 1 if anybody (alive) has a slot on any robot. */
-static int anybody(const dcm_lockstep *l, uint32_t tick) {
+/* 1 if at least `need` participants (alive) have slots, over all robots. */
+static int joined(const dcm_lockstep *l, uint32_t tick, int need) {
+  int n = 0;
   for (int r = 0; r < l->n; r++) {
     const dcm_blk_sync *y = l->sync[r];
     for (int k = 0; k < y->n.pid; k++) {
       const int pid = LOAD32(&y->pid[k]);
       /* one that answered the last tick needs no system call to prove it is alive */
-      if (pid != 0 && (LOAD32(&y->done_tick[k]) + 1 >= tick || shm_pid_alive(pid))) return 1;
+      if (pid != 0 && (LOAD32(&y->done_tick[k]) + 1 >= tick || shm_pid_alive(pid)) && ++n >= need) return 1;
     }
   }
   return 0;
@@ -57,11 +58,13 @@ int dcm_lockstep_wait(dcm_lockstep *l, uint32_t tick, void (*idle)(void *ctx, in
                       volatile sig_atomic_t *stop) {
   /* nobody anywhere: hold the clock until one joins (a run starts on a defined tick and burns no
    * CPU meanwhile) */
-  while (!anybody(l, tick)) {
+  const int need = !l->started && l->start_with > 1 ? l->start_with : 1;
+  while (!joined(l, tick, need)) {
     if (stop && *stop) return 1;
     if (idle) idle(ctx, 1);
     shm_futex_wait(l->sync[0]->done_count, shm_load_acquire_u32(l->sync[0]->done_count), 0.02);
   }
+  l->started = 1;
   for (int r = 0; r < l->n; r++) {
     dcm_blk_sync *y = l->sync[r];
     double since = shm_now();

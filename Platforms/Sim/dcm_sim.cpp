@@ -1,7 +1,7 @@
 // dcm_sim: the simulated robots' DCM. Serves dcm.sensor / dcm.actuator / dcm.stats / sync / sim /
 // camera.image for every simulated robot (ROBOT_ID, ROBOT_ID+1, ...) from one ODE world.
 //
-//   dcm_sim [--lockstep] [--seed N] [--robots N | --robots BODY,BODY,..] [--ids A,B,..]
+//   dcm_sim [--lockstep] [--lockstep-wait N] [--seed N] [--robots N | --robots BODY,BODY,..] [--ids A,B,..]
 //           [--duration SIM_SECONDS] [--no-camera] [--report WALL_SECONDS] [--quiet] [--profile]
 //
 // Robots: --robots N puts N robots of the body $ROBOT into the world; --robots op3,darwin one robot
@@ -9,7 +9,9 @@
 // ROBOT_ID, ROBOT_ID+1, ... or those of --ids (as many as bodies).
 //
 // A driver of the DCM library (Modules/dcm): the library paces the ticks (real time: absolute
-// deadlines; --lockstep: it publishes tick N and waits for every live participant of Lib/lockstep.lua),
+// deadlines; --lockstep: it publishes tick N and waits for every live participant of Lib/lockstep.lua;
+// --lockstep-wait N: the same, and the first tick waits until N participants have joined, so that a
+// scenario run by processes that start at different moments starts on the same tick every time),
 // reads and checks the commands (watchdog in real time) and writes dcm.sensor and dcm.stats; this file
 // drives the world: commands in, one control period of physics, sensors and truth out, camera
 // frames. Sim requests (Lib/Sim.lua) are applied between ticks, also while waiting on participants.
@@ -49,7 +51,7 @@ struct Options {
 
 void usage() {
   fprintf(stderr,
-          "usage: dcm_sim [--lockstep] [--seed N] [--robots N | --robots BODY,BODY,..] [--ids A,B,..]\n"
+          "usage: dcm_sim [--lockstep] [--lockstep-wait N] [--seed N] [--robots N | --robots BODY,BODY,..] [--ids A,B,..]\n"
           "               [--duration SIM_S] [--no-camera] [--report WALL_S] [--quiet] [--profile]\n");
 }
 
@@ -394,9 +396,13 @@ int main(int argc, char **argv) {
     else if (a == "-h" || a == "--help") {
       usage();
       return 0;
-    } else if (a == "--seed" || a == "--robots" || a == "--ids" || a == "--duration" || a == "--report") {
+    } else if (a == "--seed" || a == "--robots" || a == "--ids" || a == "--duration" || a == "--report" ||
+               a == "--lockstep-wait") {
       if (!(v = next())) return 2;
-      if (a == "--seed") s.o.seed = strtoull(v, nullptr, 10);
+      if (a == "--lockstep-wait") {   // lockstep whose first tick waits for N participants
+        d.lockstep = 1;
+        d.sync.start_with = atoi(v);
+      } else if (a == "--seed") s.o.seed = strtoull(v, nullptr, 10);
       else if (a == "--robots" && std::isdigit((unsigned char)v[0])) nrobots = atoi(v);
       else if (a == "--robots") s.o.bodies = split(v);
       else if (a == "--duration") s.o.duration = atof(v);

@@ -18,7 +18,8 @@ run() {
   local label=$1 params=$2; shift 2
   n=$((n + 1))
   local id=$((BASE_ID + n))
-  ROBOT_ID=$id ./run_main --sim --quiet --no-restart --dcm-arg --lockstep --dcm-arg --no-camera motion \
+  Run/shm --robot "$id" remove >/dev/null 2>&1   # stale segments of an earlier run
+  ROBOT_ID=$id ./run_main --sim --quiet --no-restart --dcm-arg --lockstep-wait --dcm-arg 2 --dcm-arg --no-camera motion \
     >"$LOG/main_$label.log" 2>&1 &
   local pid=$!
   for _ in $(seq 200); do grep -q 'motion started' "$LOG/main_$label.log" 2>/dev/null && break; sleep 0.1; done

@@ -8,10 +8,11 @@ KICK_LOGS=$HRP_ROOT/build/test-logs/kick
 mkdir -p "$KICK_LOGS"
 kick_sim_run() {
   local id=$1 log=$2; shift 2
-  ROBOT_ID=$id ./run_main --sim --quiet --no-restart --dcm-arg --lockstep --dcm-arg --seed --dcm-arg "${SIM_SEED:-1}" \
+  Run/shm --robot "$id" remove >/dev/null 2>&1   # stale segments of an earlier run
+  ROBOT_ID=$id ./run_main --sim --quiet --no-restart --dcm-arg --lockstep-wait --dcm-arg 2 --dcm-arg --seed --dcm-arg "${SIM_SEED:-1}" \
     --dcm-arg --no-camera motion >"$log" 2>&1 &
   local pid=$!
-  # the command joins the lockstep once the DCM's clock runs and the motion process is started
+  # the DCM holds its clock until motion and the command have joined (--lockstep-wait 2): each run starts on the same tick
   for _ in $(seq 200); do
     grep -q 'motion started' "$log" 2>/dev/null && break
     sleep 0.1

@@ -28,11 +28,12 @@ for s in "${SCEN[@]}"; do
   n=$((n + 1))
   id=$((BASE_ID + n))
   read -r -a parts <<<"$s"
-  ROBOT_ID=$id ./run_main --sim --quiet --no-restart --dcm-arg --lockstep --dcm-arg --seed --dcm-arg "${SIM_SEED:-1}" \
+  Run/shm --robot "$id" remove >/dev/null 2>&1   # stale segments of an earlier run
+  ROBOT_ID=$id ./run_main --sim --quiet --no-restart --dcm-arg --lockstep-wait --dcm-arg 2 --dcm-arg --seed --dcm-arg "${SIM_SEED:-1}" \
     --dcm-arg --no-camera motion \
     >"$LOGDIR/main_${parts[0]}.log" 2>&1 &
   main_pid=$!
-  # the script joins the lockstep once the DCM's clock runs and the motion process is started
+  # the DCM holds its clock until motion and the script have joined (--lockstep-wait 2): each run starts on the same tick
   for _ in $(seq 200); do
     grep -q 'motion started' "$LOGDIR/main_${parts[0]}.log" 2>/dev/null && break
     sleep 0.1

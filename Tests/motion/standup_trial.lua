@@ -14,7 +14,8 @@ if not ks.wait_for_motion(wait) then
   os.exit(1)
 end
 Sim.reset() wait(0.2)
-Sim.teleport_robot(0, 0, 0) wait(0.2)
+-- the reset puts the ball on the centre spot: out of the way first, then the robot there
+Sim.teleport_ball(3, 2) Sim.teleport_robot(0, 0, 0) wait(0.2)
 Motion.request('stand') wait(2)
 Motion.request('walk') Walk.set_velocity(0.1, 0, 0) wait(W)
 local f0 = Motion.falls()

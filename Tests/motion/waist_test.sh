@@ -10,7 +10,8 @@ source Run/env.sh
 LOGDIR="$HRP_ROOT/build/test-logs/motion"
 mkdir -p "$LOGDIR"
 id=$(( ${ROBOT_ID:-9200} + 60 ))
-ROBOT_ID=$id ./run_main --sim --quiet --no-restart --dcm-arg --lockstep --dcm-arg --no-camera motion \
+Run/shm --robot "$id" remove >/dev/null 2>&1   # stale segments of an earlier run
+ROBOT_ID=$id ./run_main --sim --quiet --no-restart --dcm-arg --lockstep-wait --dcm-arg 2 --dcm-arg --no-camera motion \
   >"$LOGDIR/main_waist.log" 2>&1 &
 main_pid=$!
 for _ in $(seq 200); do grep -q 'motion started' "$LOGDIR/main_waist.log" 2>/dev/null && break; sleep 0.1; done

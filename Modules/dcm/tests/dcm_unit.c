@@ -186,6 +186,13 @@ static void test_guard(void) {
 
 /* ---------------------------------------------------------------- lockstep */
 
+/* idle hook of the start_with test: asks the wait to stop after a few calls */
+static void idle_count(void *ctx, int alone) {
+  struct idle_ctx { volatile sig_atomic_t *stop; int *n; } *c = ctx;
+  (void)alone;
+  if (++*c->n >= 5) *c->stop = 1;
+}
+
 static void test_lockstep(void) {
   char err[512] = "";
   dcm_blk_sync y;
@@ -269,6 +276,43 @@ static void test_lockstep(void) {
   y.pid[0] = 0;
   volatile sig_atomic_t stop = 1;
   check(dcm_lockstep_wait(&l, 8, NULL, NULL, &stop) == 1, "nobody joined: the wait holds the clock until stopped");
+
+  /* start_with: a fresh clock waits for that many participants; once it ran, one is enough */
+  dcm_lockstep f;
+  memset(&f, 0, sizeof f);
+  f.n = 1;
+  f.sync[0] = &y;
+  f.spin = 50e-6;
+  f.drop_after = 0.05;
+  f.start_with = 2;
+  y.pid[0] = (int32_t)getpid();
+  y.done_tick[0] = 0;
+  y.wake_tick[0] = 0;
+  volatile sig_atomic_t stop_after = 0;
+  int idles = 0;
+  struct idle_ctx { volatile sig_atomic_t *stop; int *n; } ic = { &stop_after, &idles };
+  rc = dcm_lockstep_wait(&f, 0, idle_count, &ic, &stop_after);
+  check(rc == 1 && idles >= 5 && !f.started, "start_with 2: one participant does not start the clock");
+  pid_t second = fork();
+  if (second == 0) {
+    struct timespec ts = { 5, 0 };
+    nanosleep(&ts, NULL);
+    _exit(0);
+  }
+  y.pid[1] = (int32_t)second;
+  y.done_tick[1] = 0;
+  y.wake_tick[1] = 0;
+  stop_after = 0;
+  idles = 0;
+  rc = dcm_lockstep_wait(&f, 0, idle_count, &ic, &stop_after);
+  check(rc == 0 && f.started, "start_with 2: the second participant starts it");
+  kill(second, SIGKILL);
+  waitpid(second, NULL, 0);
+  y.pid[1] = 0;
+  y.done_tick[0] = 1;
+  rc = dcm_lockstep_wait(&f, 1, NULL, NULL, NULL);
+  check(rc == 0, "start_with 2: once started, one participant keeps it going");
+  y.pid[0] = 0;
   dcm_lockstep_end(&l);
   check(*y.lockstep == 0, "lockstep off");
   shm_block_close(y.blk);

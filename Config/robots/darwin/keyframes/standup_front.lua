@@ -1,9 +1,9 @@
 -- Stand up from lying on the front (Player/Motion/keyframe.lua): the OP3's motion in the DARwIn-OP's
 -- joint convention, its numbers retuned in the sim (cross-entropy over the frames' angles and
--- durations on push moments 1.9..2.8 s by 0.1; arms wider apart while the chest comes up, head a
--- little up). Held out (Tests/motion/standup_stats.sh, 2 runs): front 21/28 first attempt (the
--- OP3-derived numbers: 14/28), back 19/28 (18/28). Still failing: the hips go up over the head
--- while the knees come under the body (a headstand that ends on the back).
+-- durations; arms wider apart while the chest comes up, head a little up), after a first frame that
+-- puts the arms out sideways along the ground: lying on its arms (as the roll from the back leaves
+-- it) the robot could not swing them down to lift the chest and ended in a headstand. Held out
+-- (Tests/motion/standup_stats.sh, clean trials): front 14/14 first attempt, back 14/14.
 -- Joint convention (Config/robots/darwin/robot.lua): leg pitch angles change sign, the head is
 -- level at tilt 0.785, the shoulder roll's zero is 45 deg out (0.785: arm down), the elbow is
 -- straight at 1.571. Angles by joint name; `mirror` gives the left side's, the right side mirrors
@@ -12,6 +12,11 @@
 -- (positive: flexed forward), knee (negative: bent), ankle pitch (negative: toes up), ankle roll.
 return {
   frames = {
+    -- arms out sideways along the ground (after a roll from the back they lie along the body, under
+    -- it: from there they could not swing down through the ground to lift the chest)
+    { duration = 0.3, hardness = 1, q = { head_pan = 0, head_tilt = 0.829 }, mirror = {
+      l_sho_pitch = -1.2, l_sho_roll = -0.8, l_el = 1.571,
+      l_hip_yaw = 0, l_hip_roll = 0, l_hip_pitch = 0, l_knee = 0, l_ank_pitch = 0, l_ank_roll = 0 } },
     -- arms down under the shoulders, legs straight: the chest comes up
     { duration = 0.376, hardness = 1, q = { head_pan = 0, head_tilt = 0.829 }, mirror = {
       l_sho_pitch = -1.484, l_sho_roll = 0.106, l_el = 1.571,
