@@ -315,7 +315,7 @@ local function push_policy(dir, force)
       if e > worst then worst, worst_joint = e, jn end
     end
   end
-  note('pushed %s: 6 s later state %s, falls %d, least hardness %.2f, the pose held within %.2f rad (%s)',
+  note('pushed %s: 6 s later state %s, falls %d, least hardness %.2f, the pose held within %.4f rad (%s)',
     what, Motion.state(), Motion.falls() - falls0, softest, worst, worst_joint)
   tap(Motion.state() == 'falling' and Motion.falls() - falls0 == 1,
     string.format('pushed %s: stays in falling, no stand-up tried (state %s)', what, Motion.state()))
