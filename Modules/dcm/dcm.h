@@ -141,6 +141,7 @@ typedef struct dcm_guard {
   double safe_hardness;          /* 0..1, held in the safe state */
   int safe;                      /* 1 while holding the safe pose */
   uint32_t trips, refused;       /* watchdog trips; NaN / inf values refused */
+  int dead_writer;               /* the last trip's cause: the writer's pid that died (0: the timeout) */
   /* private */
   uint32_t last_ack;
   double ack_time;
@@ -206,7 +207,7 @@ typedef struct dcm {
   double period;                  /* s, control period */
   double watchdog;                /* s without a new tick_ack before the safe state (<= 0: none) */
   double safe_hardness;           /* 0..1 */
-  double start_hardness;          /* 0..1, given to a blank actuator block at start */
+  double start_hardness;          /* 0..1, every joint's hardness at start (present pose, torque on) */
   int simulated;                  /* 1: the robot clock is tick * period (simulation) */
   /* options (command line) */
   int lockstep;                   /* wait each tick for the sync participants */

@@ -101,15 +101,14 @@ static void write_stats(dcm *d, const dcm_driver *drv, void *hw) {
   }
 }
 
-/* A blank actuator block (never written, all zero) gets the present pose at start_hardness, so
- * nothing moves when the DCM starts; one somebody wrote is left as it is. */
+/* The DCM owns the start state: on every start, whatever the actuator block held (a REPL command
+ * written before any DCM ran, a previous run's last pose or hardness 0), every joint is commanded
+ * to its present position at start_hardness with its torque on, so nothing moves when the DCM starts
+ * and nothing is limp. The robot's processes take over with their next commands. */
 static void seed_actuators(dcm *d) {
   for (int r = 0; r < d->nrobots; r++) {
     dcm_robot *R = &d->robot[r];
     const dcm_blk_dcm_actuator *a = &R->actuator;
-    int blank = shm_block_header(a->blk)->writes == 0;
-    for (int j = 0; j < R->nj && blank; j++) blank = a->command[j] == 0 && a->hardness[j] == 0 && a->torque_enable[j] == 0;
-    if (!blank) continue;
     shm_write_begin(a->blk);
     for (int j = 0; j < R->nj; j++) {
       a->command[j] = R->sensor.position[j];
@@ -222,7 +221,10 @@ int dcm_main(dcm *d, const dcm_driver *drv, void *hw, char *err, size_t errlen) 
       dcm_command_read(&R->actuator, R->nj, &R->cmd);
       const int was_safe = R->guard.safe;
       dcm_guard_apply(&R->guard, d->time, R->sensor.position, &R->cmd);
-      if (R->guard.safe && !was_safe)
+      if (R->guard.safe && !was_safe && R->guard.dead_writer)
+        dcm_log(d, "robot %d: watchdog: the writer (pid %d) died: holding the pose at hardness %.2f", R->id,
+                R->guard.dead_writer, d->safe_hardness);
+      else if (R->guard.safe && !was_safe)
         dcm_log(d, "robot %d: watchdog: no new tick_ack for %.2f s: holding the pose at hardness %.2f", R->id,
                 d->watchdog, d->safe_hardness);
       else if (was_safe && !R->guard.safe)

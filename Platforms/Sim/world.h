@@ -49,7 +49,7 @@ struct Params {
   double cam_noise = 2;
   std::vector<double> start;   // x, y, yaw per robot, flattened
   double fall_angle = 1.0, watchdog = 0.5, battery = 12;
-  double safe_hardness = 0.3, start_hardness = 1;   // the DCM's safe state; a fresh actuator block
+  double safe_hardness = 0.3, start_hardness = 1;   // the DCM's safe state; every joint at start
   std::string name;                   // the body (robot.lua's name)
   std::vector<std::string> joints;    // shm joint order (robot.lua)
   // robot.lua's groups lleg, rleg, head (empty when the body has none): the sim's stance and tests

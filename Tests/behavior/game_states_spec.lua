@@ -15,12 +15,12 @@ describe('behavior under a GameController', function()
     sensor, vision = shm.open('dcm.sensor'), shm.open('vision')
     motion, game = shm.open('motion'), shm.open('game')
     sensor.time[0], sensor.tick[0] = 100, 0
-    behavior = require('Behavior.behavior').new({ port = port })
+    behavior = require('Behavior.behavior').new({ port = port, return_port = port + 1, team_port = port + 2 })
     tx = assert(udp.sender())
   end)
 
   teardown(function()
-    behavior.gc:close()
+    behavior:close()
     tx:close()
     -- the test robot's blocks only (Tests/run_all.sh gives every run its own ROBOT_ID)
     if os.getenv('ROBOT_ID') then for _, name in ipairs(shm.block_names()) do shm.unlink(name) end end
@@ -45,8 +45,9 @@ describe('behavior under a GameController', function()
     end
   end
 
+  -- our kick-off (team 1): the other team's would hold the robot back (game_rules_spec.lua)
   local function send(state, penalty)
-    assert(tx:send(packet.build({ state = state, packet_number = 1,
+    assert(tx:send(packet.build({ state = state, packet_number = 1, kickoff_team = 1,
       teams = { { number = 9 }, { number = 1, players = { { penalty = penalty or 0 } } } } }),
       '127.0.0.1', port))
   end

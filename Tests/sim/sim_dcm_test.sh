@@ -146,6 +146,60 @@ else
   nok "dcm_sim starts in real time"
 fi
 
+# ---- real time: the motion process killed (-9) mid-stance: the DCM sees its writer die and holds
+# the pose on its next cycle, long before the tick_ack timeout
+cleanup
+if start_dcm kill_motion; then
+  ./run_main --no-restart --quiet motion >"$LOG/kill_motion_main.log" 2>&1 &
+  main_pid=$!
+  out=$(./run_repl -e '
+    local shm = require("shm")
+    local m = shm.open("motion")
+    for _ = 1, 100 do if m.tick[0] > 0 and dcm_actuator.writer_pid[0] == m.pid[0] then break end wait(0.05) end
+    wait(1.0)
+    local pid = m.pid[0]
+    local trips = dcm_stats.watchdog_trips[0]
+    local t0 = shm.C.shm_now()
+    os.execute("kill -9 " .. pid)
+    while dcm_stats.watchdog_trips[0] == trips and shm.C.shm_now() - t0 < 2 do end
+    print(string.format("motion pid %d killed: safe state after %.1f ms (writer_pid %d)", pid,
+      (shm.C.shm_now() - t0) * 1e3, dcm_actuator.writer_pid[0]))' 2>&1)
+  kill "$main_pid" 2>/dev/null; wait "$main_pid" 2>/dev/null
+  echo "$out" | sed 's/^/# /'
+  pid=$(echo "$out" | sed -n 's/^motion pid \([0-9]*\) killed.*/\1/p')
+  [ -n "$pid" ] && grep -q "watchdog: the writer (pid $pid) died" "$LOG/kill_motion.log"
+  check $? "motion killed: the DCM trips its watchdog on the writer's death (not the tick_ack timeout)"
+  stop_dcm
+else
+  nok "dcm_sim starts (kill motion)"
+fi
+
+# ---- the DCM owns its start state: a REPL command written before any DCM ran (hardness 0, torque
+# off, zero pose) does not survive its start; the robot stands either way (issue 17's reproduction)
+for order in repl_first dcm_first; do
+  cleanup
+  write_limp='for _, n in ipairs(Body.joint_names()) do Body.set_command(n, 0) end
+    dcm_actuator:write(function(a) for j = 0, #Body.joint_names() - 1 do a.hardness[j] = 0; a.torque_enable[j] = 0 end end)'
+  [ $order = repl_first ] && ./run_repl -e "$write_limp" >/dev/null 2>&1
+  if start_dcm "start_$order" --quiet; then
+    sleep 0.3
+    out=$(./run_repl -e '
+      local h, te = 1, 1
+      for j = 0, #Body.joint_names() - 1 do h = math.min(h, dcm_actuator.hardness[j]); te = math.min(te, dcm_actuator.torque_enable[j]) end
+      dcm_actuator.tick_ack[0] = Body.get_tick()
+      local z0 = Sim.truth().z
+      for _ = 1, 30 do dcm_actuator.tick_ack[0] = Body.get_tick(); wait(0.1) end
+      local t = Sim.truth()
+      print(string.format("hardness %.2f torque %d fallen %s dz %.3f", h, te, tostring(t.fallen), t.z - z0))' 2>&1)
+    echo "$out" | sed "s/^/# $order: /"
+    echo "$out" | grep -Eq 'hardness 1.00 torque 1 fallen false dz -?0\.00[0-9]'
+    check $? "the DCM's start state ($order): every joint at start_hardness, torque on; the robot stands 3 s"
+    stop_dcm
+  else
+    nok "dcm_sim starts ($order)"
+  fi
+done
+
 # ---- a bad robot file stops start-up with the file and the element named
 tmp=$(mktemp -d)
 cp -r Config "$tmp/"

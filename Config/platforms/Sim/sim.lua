@@ -79,6 +79,6 @@ return {
   fall_angle = 1.0,              -- rad of torso tilt beyond which the robot counts as fallen
   watchdog = 0.5,                -- s of robot time without tick_ack before holding the pose (real time)
   safe_hardness = 0.3,           -- the held pose's hardness after a watchdog trip (as on the OP platform)
-  start_hardness = 1.0,          -- a fresh actuator block: hold the zero pose at full hardness (a standing robot)
+  start_hardness = 1.0,          -- every start: each joint holds its present pose at this hardness, torque on
   battery = 12.0,                -- V
 }
