@@ -55,9 +55,23 @@ local function look()
   return w
 end
 
+local STATUS = 30 -- s of robot time between status lines (where the ball and the robots are)
+local next_status = t0 + STATUS
+
+local function status(t, w)
+  local parts = { string.format('%8.1f  ball %.1f %.1f;', t - t0, w.ball[1], w.ball[2]) }
+  for i, r in ipairs(w.robots) do
+    parts[#parts + 1] = string.format('%d/%d %.1f %.1f%s', team_numbers[robots[i].team], r.player, r.x, r.y,
+      r.fallen and ' fallen' or '')
+  end
+  print(table.concat(parts, ' '))
+end
+
 while true do
   local t = Body.get_time()
-  for _, a in ipairs(m:step(t, look())) do
+  local w = look()
+  if t >= next_status then next_status = t + STATUS status(t, w) end
+  for _, a in ipairs(m:step(t, w)) do
     if a[1] == 'ball' then assert(sims[1].teleport_ball(a[2], a[3]))
     else assert(sims[a[2]].teleport_robot(a[3], a[4], a[5])) end
   end
