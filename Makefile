@@ -10,7 +10,7 @@ export BUILD
 NATIVE_DIRS := $(sort $(dir $(wildcard Modules/*/Makefile Platforms/*/Makefile Run/*/Makefile)))
 DEPS_STAMP := $(BUILD)/.deps-ok
 
-.PHONY: all deps test clean bench sim $(NATIVE_DIRS)
+.PHONY: all deps test clean bench sim match match4 $(NATIVE_DIRS)
 
 all: $(DEPS_STAMP) $(NATIVE_DIRS)
 
@@ -41,6 +41,16 @@ test: all
 # One robot in the simulator, headless, a status line per second until Ctrl-C (Run/main.lua --sim).
 sim: all
 	@./run_main --sim
+
+# A whole match in the sim, refereed (Run/referee.lua): 2v2 (match4: 4v4), 2 x HALF s (default 300),
+# e.g. `make match HALF=60`; prints the result, the real-time factor and the CPU per process.
+HALF ?= 300
+SEED ?= 1
+match: all
+	@Tests/bench/match.sh 2 $(HALF) $(SEED)
+
+match4: all
+	@Tests/bench/match.sh 4 $(HALF) $(SEED)
 
 bench: all
 	@Tests/run_benchmarks.sh

@@ -5,8 +5,8 @@
 # the result (goals, own goals, falls, penalties), the real-time factor and the CPU per process kind.
 #   Tests/bench/match.sh [PER_TEAM (2)] [HALF_SECONDS (300)] [SEED (1)] [READY_SECONDS (45)]
 # (make match, make match4). The referee's rules are Config/common/game.lua's `referee`; the half and
-# READY's length given here reach it through its own site folder (build/match/site_referee/game.lua).
-# env: ROBOT_ID (robots ROBOT_ID+270 ..; UDP ports derived from it), logs in build/match/.
+# READY's length given here reach it through its own site folder (build/match/<id>/site_referee/game.lua).
+# env: ROBOT_ID (robots ROBOT_ID+270 ..; UDP ports derived from it), logs in build/match/<first id>/.
 # The robots' vision does not tell robots apart: robots of either team are not seen (only bumped into).
 set -u
 cd "$(dirname "$0")/../.." || exit 1
@@ -17,7 +17,7 @@ SEED=${3:-1}
 READY=${4:-}
 ID=$(( ${ROBOT_ID:-46000} + 270 ))
 R=$((2 * N))
-DIR="$HRP_ROOT/build/match"
+DIR="$HRP_ROOT/build/match/$ID"
 mkdir -p "$DIR"
 # ports from the id: GameController and its return port, one team-message port per team
 GC_PORT=$((50000 + (ID % 5000) * 2))
