@@ -27,7 +27,7 @@ function M.new(rules, field, teams)
   local m = setmetatable({ r = rules, L = field.length / 2, W = field.width / 2, goal_w = field.goal_width / 2,
     ball_r = field.ball_diameter / 2, penalty_mark = field.penalty_mark_distance,
     goal_area = { field.goal_area_length, field.goal_area_width / 2 },
-    teams = teams, state = S.initial, first_half = 1, since = 0, t = nil, played = 0,
+    teams = teams, state = S.initial, first_half = 1, played = 0,
     kickoff = rules.first_kickoff, side = { 1, -1 }, score = { 0, 0 }, secondary = nil,
     robots = {}, over = false, log = {},
     stats = { goals = { 0, 0 }, own_goals = { 0, 0 }, falls = { 0, 0 }, penalties = { 0, 0 },
@@ -140,10 +140,7 @@ end
 
 function Match:playing(acts, world)
   self.played = self.played + self.dt
-  local plus, minus = world.score[1], world.score[2]
-  self.goals_seen = self.goals_seen or { plus, minus }
-  local into = (plus > self.goals_seen[1] and 1) or (minus > self.goals_seen[2] and -1) or nil
-  self.goals_seen = { plus, minus }
+  local into = self.into
   if into then
     local scorer = self.side[1] == into and 1 or 2
     self.score[scorer] = self.score[scorer] + 1
@@ -182,6 +179,11 @@ function Match:step(t, world)
   self.dt = self.t and (t - self.t) or 0
   self.t = t
   self.index = world.robots
+  -- a goal (the sim's count went up: into the goal at +x or -x) counts only in PLAYING
+  local plus, minus = world.score[1], world.score[2]
+  self.goals_seen = self.goals_seen or { plus, minus }
+  self.into = (plus > self.goals_seen[1] and 1) or (minus > self.goals_seen[2] and -1) or nil
+  self.goals_seen = { plus, minus }
   local acts, r = {}, self.r
   if not self.since then -- the first look: everyone beside the touch line
     self.since = t
@@ -200,7 +202,7 @@ function Match:step(t, world)
   elseif self.state == S.finished and not self.over and dt >= r.break_time then
     -- half time: the teams change ends, the other team kicks off, everyone back beside the touch line
     self.first_half, self.side, self.played = 0, { -1, 1 }, 0
-    self.kickoff, self.last_touch, self.goals_seen = 3 - r.first_kickoff, nil, nil
+    self.kickoff, self.last_touch = 3 - r.first_kickoff, nil
     self:place_all(acts, world)
     self:enter(S.initial)
   end
