@@ -50,7 +50,7 @@ mkdir -p "$DIR/site_referee"
 printf 'return { referee = { half_time = %s%s } }\n' "$HALF" "${READY:+, ready_time = $READY}" \
   >"$DIR/site_referee/game.lua"
 START=$(date +%s.%N)
-ROBOT_ID=$ID HRP_SITE="$DIR/site_referee" ./run_repl Run/referee.lua "$N" "$GC_PORT" "$RET_PORT" \
+ROBOT_ID=$ID HRP_SITE="$DIR/site_referee" ./run_repl Run/referee.lua "$N" "$GC_PORT" "$RET_PORT" 2>&1 \
   | tee "$DIR/referee.log"
 STATUS=${PIPESTATUS[0]}
 END=$(date +%s.%N)
