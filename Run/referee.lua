@@ -47,7 +47,7 @@ local function look()
   for i, s in ipairs(sims) do
     local T = s.truth()
     if i == 1 then
-      w.ball = { T.ball.x, T.ball.y }
+      w.ball = { T.ball.x, T.ball.y, T.ball.vx, T.ball.vy }
       w.score = { s.score() }
     end
     w.robots[i] = { team = robots[i].team, player = robots[i].player, x = T.x, y = T.y, fallen = T.fallen }

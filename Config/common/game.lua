@@ -81,7 +81,8 @@ return {
     off_field = 0.6,           -- m beyond the touch line a penalized robot waits
     start_x = 0.8,             -- m from the halfway line of the first robot beside the touch line ...
     start_spacing = 0.9,       -- m ... and between robots of a team
-    touch = 0.3,               -- m: a robot's torso this near the ball touched it (truth has no contacts)
+    touch = 0.35,              -- m: the robot nearest the ball, this near, touched it when ...
+    touch_dv = 0.15,           -- m/s: ... the ball's velocity changed this much in a look (rolling: 0.06)
     setplay_prepare = 15,      -- s from a set play's call to the referee's execute
     setplay_execute = 10,      -- s after execute until normal play (or the ball moved)
     ball_moved = 0.2,          -- m the ball moves: a kick-off or set play is taken

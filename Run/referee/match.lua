@@ -9,7 +9,7 @@
 --
 --   local m = match.new(rules, field, teams)  -- rules: game.referee; field: sim.lua's field/goal/ball;
 --                                            -- teams: { { number = 1, players = { 1, 2 } }, {...} }
---   local acts = m:step(t, world)  -- world: { ball = {x, y}, score = {into +x, into -x},
+--   local acts = m:step(t, world)  -- world: { ball = {x, y, vx, vy}, score = {into +x, into -x},
 --                                  --   robots = { { team = 1|2, player = k, x, y, fallen } ... } }
 --                                  -- acts: { { 'ball', x, y } | { 'robot', i, x, y, yaw } ... }
 --   m:packet()  -- the GameController packet's fields for GameFSM/packet.lua's build()
@@ -62,11 +62,14 @@ function Match:place_all(acts, world)
   end
 end
 
--- Who touched the ball last: the robot nearest to it within `touch` m (truth has no contacts).
+-- Who touched the ball last: the truth has no contacts, so the robot nearest to the ball (within
+-- `touch` m) when the ball's velocity changed by more than rolling explains (`touch_dv` m/s per look).
 function Match:watch_touch(world)
+  local b = world.ball
+  if self.ball_dv < self.r.touch_dv then return end
   local best, bd = nil, self.r.touch
   for i, rb in ipairs(world.robots) do
-    local d = math.sqrt((rb.x - world.ball[1]) ^ 2 + (rb.y - world.ball[2]) ^ 2)
+    local d = math.sqrt((rb.x - b[1]) ^ 2 + (rb.y - b[2]) ^ 2)
     if d < bd and not (self.robots[i] and self.robots[i].penalty) then best, bd = rb.team, d end
   end
   if best then self.last_touch = best end
@@ -184,6 +187,9 @@ function Match:step(t, world)
   self.goals_seen = self.goals_seen or { plus, minus }
   self.into = (plus > self.goals_seen[1] and 1) or (minus > self.goals_seen[2] and -1) or nil
   self.goals_seen = { plus, minus }
+  local v = { world.ball[3] or 0, world.ball[4] or 0 }
+  self.ball_dv = self.ball_v and math.sqrt((v[1] - self.ball_v[1]) ^ 2 + (v[2] - self.ball_v[2]) ^ 2) or 0
+  self.ball_v = v
   local acts, r = {}, self.r
   if not self.since then -- the first look: everyone beside the touch line
     self.since = t

@@ -46,7 +46,7 @@ describe('the referee', function()
   it('gives a throw-in to the other team than the last to touch, the ball on the line', function()
     local m, t = playing()
     m:step(t + 0.1, world({ 1.05, 2.8 }))           -- team 2's robot (at 1, 0) is not near; nobody touched
-    local w = world({ 1.2, 2.9 })
+    local w = world({ 1.2, 2.9, 0.5, 0.5 })             -- kicked: the velocity changed
     w.robots[2].x, w.robots[2].y = 1.1, 2.7         -- team 2 touches it
     m:step(t + 0.2, w)
     local acts = m:step(t + 0.3, world({ 1.3, 3.2 }))
@@ -62,7 +62,7 @@ describe('the referee', function()
 
   it('gives a goal kick or a corner kick over the goal line', function()
     local m, t = playing()
-    local w = world({ 3.9, -2 })
+    local w = world({ 3.9, -2, 1, 0 })
     w.robots[1].x, w.robots[1].y = 3.8, -2.1           -- team 1 (attacking +x) touched it last
     m:step(t + 0.1, w)
     local acts = m:step(t + 0.2, world({ 4.7, -2 }))
@@ -70,7 +70,7 @@ describe('the referee', function()
     assert.are.equal(8, parsed(m).secondary_state)
     assert.are.equal(2, parsed(m).secondary_state_info[1])
     m, t = playing()
-    w = world({ 3.9, 2 })
+    w = world({ 3.9, 2, 1, 0 })
     w.robots[2].x, w.robots[2].y = 3.8, 2.1            -- the defenders touched it last
     m:step(t + 0.1, w)
     acts = m:step(t + 0.2, world({ 4.7, 2 }))
@@ -107,7 +107,7 @@ describe('the referee', function()
 
   it('after a goal: READY, the other team kicks off; counts own goals', function()
     local m, t = playing()
-    local w = world({ -3.9, 0 })
+    local w = world({ -3.9, 0, -1, 0 })
     w.robots[1].x = -3.8                               -- team 1 touches it last, into its own goal
     m:step(t + 0.1, w)
     local acts = m:step(t + 0.2, world({ -4.7, 0 }, nil, { 0, 1 }))
