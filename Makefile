@@ -20,6 +20,9 @@ $(filter Platforms/%,$(NATIVE_DIRS)): Modules/dcm/
 Platforms/OP/: Modules/dynamixel/
 # the robot description parser: linked by the kinematics and the sim
 Modules/kinematics/ Platforms/Sim/: Modules/description/
+# the recorder and the Replay DCM: MCAP files of shm blocks
+Run/recorder/: Modules/dcm/ Modules/mcap/ Modules/shmlog/
+Platforms/Replay/: Modules/mcap/ Modules/shmlog/
 
 $(NATIVE_DIRS): $(DEPS_STAMP)
 	@$(MAKE) --no-print-directory -C $@ all
