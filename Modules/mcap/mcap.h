@@ -56,6 +56,8 @@ int mcap_writer_metadata(mcap_writer *w, const char *name, const char *const *me
 int mcap_writer_flush(mcap_writer *w);
 /* Bytes in the file so far (the open chunk not counted). */
 uint64_t mcap_writer_size(const mcap_writer *w);
+/* Bytes of records in the open chunk (before compression). */
+uint64_t mcap_writer_pending(const mcap_writer *w);
 /* The last error's message. */
 const char *mcap_writer_error(const mcap_writer *w);
 /* Closes the last chunk, writes the summary and footer, closes the file and frees w. */

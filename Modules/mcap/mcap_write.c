@@ -254,6 +254,7 @@ int mcap_writer_flush(mcap_writer *w) {
 }
 
 uint64_t mcap_writer_size(const mcap_writer *w) { return w->pos; }
+uint64_t mcap_writer_pending(const mcap_writer *w) { return w->chunk.len; }
 const char *mcap_writer_error(const mcap_writer *w) { return w->err; }
 
 /* One group of the summary: its records, and a SummaryOffset for it into offsets. */

@@ -1,5 +1,5 @@
 /* hrp_record: records every shm block of ROBOT_ID into MCAP files (see record.h and README.md).
- *   hrp_record [--dir DIR] [--seconds S] [--camera jpeg|raw|off] [--quiet]
+ *   hrp_record [--dir DIR] [--seconds S] [--camera jpeg|raw|off] [--file-mb MB] [--total-mb MB] [--quiet]
  * Settings: Config/common/recorder.lua (overlaid like every concern). Stops on SIGINT / SIGTERM
  * (closing the file properly) and prints its figures. */
 #include "record.h"
@@ -73,7 +73,8 @@ done:
 
 static int usage(const char *msg) {
   if (msg) fprintf(stderr, "hrp_record: %s\n", msg);
-  fprintf(stderr, "usage: hrp_record [--dir DIR] [--seconds S] [--camera jpeg|raw|off] [--quiet]\n");
+  fprintf(stderr, "usage: hrp_record [--dir DIR] [--seconds S] [--camera jpeg|raw|off] [--file-mb MB] [--total-mb MB] "
+          "[--quiet]\n");
   return 2;
 }
 
@@ -84,11 +85,14 @@ int main(int argc, char **argv) {
   static rec_queue q;
   char err[1024];
   const char *dir = NULL, *camera = NULL;
+  double file_mb = 0, total_mb = 0;
   o.seconds = -1;
   for (int i = 1; i < argc; i++) {
     if (!strcmp(argv[i], "--dir") && i + 1 < argc) dir = argv[++i];
     else if (!strcmp(argv[i], "--seconds") && i + 1 < argc) o.seconds = atof(argv[++i]);
     else if (!strcmp(argv[i], "--camera") && i + 1 < argc) camera = argv[++i];
+    else if (!strcmp(argv[i], "--file-mb") && i + 1 < argc) file_mb = atof(argv[++i]);
+    else if (!strcmp(argv[i], "--total-mb") && i + 1 < argc) total_mb = atof(argv[++i]);
     else if (!strcmp(argv[i], "--quiet")) o.quiet = 1;
     else return usage(argv[i][0] == '-' && strcmp(argv[i], "-h") && strcmp(argv[i], "--help") ? "unknown option" : NULL);
   }
@@ -98,6 +102,9 @@ int main(int argc, char **argv) {
     return 1;
   }
   if (dir) snprintf(o.dir, sizeof o.dir, "%s", dir);
+  if (file_mb > 0) o.file_mb = file_mb;
+  if (total_mb > 0) o.total_mb = total_mb;
+  if (o.total_mb < o.file_mb) return usage("--total-mb must be at least --file-mb");
   if (camera) {
     if (strcmp(camera, "jpeg") && strcmp(camera, "raw") && strcmp(camera, "off")) return usage("--camera: jpeg, raw or off");
     snprintf(o.camera, sizeof o.camera, "%s", camera);

@@ -163,7 +163,8 @@ static void *run(void *arg) {
       if (mcap_writer_flush(w->mw) < 0) fail(w, -EIO, mcap_writer_error(w->mw));
       w->last_flush = wall_now();
     }
-    if ((double)mcap_writer_size(w->mw) > w->o.file_mb * 1e6) {
+    // the open chunk counted at its uncompressed size: a file ends at most one chunk short of file_mb
+    if ((double)(mcap_writer_size(w->mw) + mcap_writer_pending(w->mw)) > w->o.file_mb * 1e6) {
       if (end_file(w) == 0 && begin_file(w) == 0) enforce_total(w);
     }
     w->bytes = w->closed_bytes + (w->mw ? mcap_writer_size(w->mw) : 0);
