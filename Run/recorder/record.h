@@ -110,6 +110,7 @@ void rec_config_free(rec_doc *docs, int n);
 typedef struct rec_writer rec_writer;
 typedef struct rec_figures {
   uint64_t messages, bytes, frames, files;
+  double jpeg_cpu;         /* s of CPU spent compressing frames */
 } rec_figures;
 int rec_writer_start(rec_writer **out, const rec_opts *o, const rec_blocks *bs, rec_queue *q, const rec_doc *docs,
                      int ndocs, char *err, size_t errlen);

@@ -34,6 +34,7 @@ struct rec_writer {
   uint32_t seq = 0;
   uint64_t closed_bytes = 0;
   std::atomic<uint64_t> messages{0}, bytes{0}, frames{0}, files{0};
+  std::atomic<double> jpeg_cpu{0};
   double last_flush = 0;
   int rc = 0;
   char err[512] = "";
@@ -127,7 +128,14 @@ static void enforce_total(rec_writer *w) {
   }
 }
 
+static double thread_cpu() {
+  timespec ts;
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
 static int write_frame(rec_writer *w, const rec_item *it) {
+  const double c0 = thread_cpu();
   cv::Mat yuyv(it->height, it->width, CV_8UC2, const_cast<uint8_t *>(it->data));
   cv::cvtColor(yuyv, w->bgr, cv::COLOR_YUV2BGR_YUYV);
   w->jpeg.clear();
@@ -136,6 +144,7 @@ static int write_frame(rec_writer *w, const rec_item *it) {
   const size_t n = shmlog_image_encode(it->log_time, "camera", "jpeg", w->jpeg.data(), w->jpeg.size(), w->buf.data(),
                                        w->buf.size());
   w->frames++;
+  w->jpeg_cpu = w->jpeg_cpu + (thread_cpu() - c0);
   return mcap_writer_message(w->mw, w->frame_channel, w->seq++, it->log_time, it->publish_time, w->buf.data(), n);
 }
 
@@ -223,6 +232,7 @@ extern "C" void rec_writer_figures(rec_writer *w, rec_figures *f) {
   f->bytes = w->bytes;
   f->frames = w->frames;
   f->files = w->files;
+  f->jpeg_cpu = w->jpeg_cpu;
 }
 
 extern "C" int rec_writer_join(rec_writer *w, rec_figures *f, char *err, size_t errlen) {
