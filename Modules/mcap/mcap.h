@@ -99,8 +99,8 @@ void mcap_reader_rewind(mcap_reader *r);
 /* Schemas / channels seen so far, by id (NULL if none). */
 const mcap_schema_info *mcap_reader_schema(const mcap_reader *r, int id);
 const mcap_channel_info *mcap_reader_channel(const mcap_reader *r, int id);
-/* Reads every schema and channel record up to the first message (or the end) without losing the
- * position; returns the number of channels. */
+/* Reads every schema and channel record from the start up to the first message (or the end), then
+ * rewinds; returns the number of channels. */
 int mcap_reader_scan_channels(mcap_reader *r);
 /* The first attachment named `name`: data and length, or NULL. */
 const uint8_t *mcap_reader_attachment(mcap_reader *r, const char *name, size_t *len);

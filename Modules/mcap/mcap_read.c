@@ -253,25 +253,19 @@ int mcap_reader_next(mcap_reader *r, mcap_message *m) {
 }
 
 int mcap_reader_scan_channels(mcap_reader *r) {
-  const size_t pos = r->pos, chunk_pos = r->chunk_pos;
-  const int in_chunk = r->in_chunk, done = r->done;
+  mcap_reader_rewind(r);
   uint8_t op;
   const uint8_t *p, *end;
   size_t at;
-  int n = 0;
-  /* schemas and channels precede the messages; a chunk is the end of the header part */
-  while (!r->done && r->pos < r->size && r->map[r->pos] != OP_CHUNK && r->map[r->pos] != OP_MESSAGE &&
-         next_record(r, &op, &p, &end, &at) > 0) {
+  /* schemas and channels precede the messages of their channels (inside chunks too, as some writers
+   * put them): read up to the first message */
+  while (next_record(r, &op, &p, &end, &at) > 0 && op != OP_MESSAGE) {
     if (op == OP_SCHEMA && take_schema(r, p, end, at) < 0) break;
     if (op == OP_CHANNEL && take_channel(r, p, end, at) < 0) break;
   }
+  int n = 0;
   for (int i = 0; i < MAX_IDS; i++) n += r->channel[i] != NULL;
-  if (!r->err[0]) {
-    r->pos = pos;
-    r->chunk_pos = chunk_pos;
-    r->in_chunk = in_chunk;
-    r->done = done;
-  }
+  if (!r->err[0]) mcap_reader_rewind(r);
   return n;
 }
 
