@@ -59,7 +59,8 @@ do
     else usage("unknown process or option '" .. a .. "'") end
     i = i + 1
   end
-  if #opts.names == 0 then opts.names = ALL end
+  -- under Replay the body and its motion are the recording's (Config/platforms/Replay/dcm.lua)
+  if #opts.names == 0 then opts.names = os.getenv('PLATFORM') == 'Replay' and { 'vision', 'behavior' } or ALL end
 end
 
 local function log(fmt, ...)
