@@ -14,6 +14,7 @@ return {
   camera_block = 'camera.image',  -- the block and field holding the raw frame
   camera_field = 'yuyv',
   exclude = { 'bench', 'recorder' },  -- blocks not recorded (the recorder's own statistics, benchmarks)
+  history_s = 10,               -- s of every block kept in shared memory for history() in the REPL (0: none)
   -- configuration concerns attached to each file (Config.export of each; absent ones are skipped)
   concerns = { 'robot', 'actuators', 'walk', 'camera', 'vision', 'behavior', 'sim', 'dcm', 'recorder' },
 }

@@ -58,6 +58,7 @@ static int open_one(rec_block *rb, shm_block *blk, const rec_opts *o, char *err,
 
 int rec_blocks_open(rec_blocks *bs, const rec_opts *o, char *err, size_t errlen) {
   memset(bs, 0, sizeof *bs);
+  bs->sensor = -1;
   int rc = shm_schema_load(NULL, &bs->schema, err, errlen);
   if (rc < 0) return rc;
   for (int i = 0; i < shm_schema_nblocks(bs->schema); i++) {
@@ -70,6 +71,12 @@ int rec_blocks_open(rec_blocks *bs, const rec_opts *o, char *err, size_t errlen)
     shm_block *blk;
     if ((rc = shm_block_open(bs->schema, name, o->robot_id, SHM_OPEN_CREATE, &blk, err, errlen)) < 0) return rc;
     if ((rc = open_one(&bs->b[bs->n++], blk, o, err, errlen)) < 0) return rc;
+    int type, count;
+    const uint8_t *t = (const uint8_t *)shm_field_ptr(blk, "time", &type, &count);
+    if (!strcmp(name, "dcm.sensor") && t && type == SHM_F64) {
+      bs->sensor = bs->n - 1;
+      bs->time_offset = (uint64_t)(t - (const uint8_t *)shm_block_header(blk));
+    }
   }
   return 0;
 }
@@ -119,11 +126,17 @@ static rec_item *item(int kind, int channel, uint64_t log_time, uint64_t wall_ns
   return it;
 }
 
-int rec_blocks_sample(rec_blocks *bs, rec_queue *q, uint64_t log_time, uint64_t wall_ns) {
+int rec_blocks_sample(rec_blocks *bs, rec_queue *q, struct rec_history *h, uint64_t log_time, uint64_t wall_ns) {
   int queued = 0;
   for (int i = 0; i < bs->n; i++) {
     rec_block *rb = &bs->b[i];
     snap(rb, NULL);
+    if (i == bs->sensor) {
+      /* the pass is stamped with the sensor time of the copy itself (dcm.sensor comes first) */
+      double t;
+      memcpy(&t, rb->now + bs->time_offset, 8);
+      if (t > 0) log_time = (uint64_t)(t * 1e9 + 0.5);
+    }
     if (!changed(rb)) continue;
     rec_item *frame = NULL;
     if (rb->has_frame) {
@@ -146,6 +159,7 @@ int rec_blocks_sample(rec_blocks *bs, rec_queue *q, uint64_t log_time, uint64_t 
       queued += rec_queue_push(q, it) == 0;
     }
     if (frame) queued += rec_queue_push(q, frame) == 0;
+    if (h) rec_history_append(h, bs, i, (double)log_time * 1e-9);
     uint8_t *t = rb->last;
     rb->last = rb->now;
     rb->now = t;

@@ -46,6 +46,7 @@ static int read_config(rec_opts *o, char *err, size_t errlen) {
       (rc = dcm_config_num(c, "queue_mb", &o->queue_mb, err, errlen)) < 0 ||
       (rc = dcm_config_int(c, "zstd_level", &o->zstd_level, err, errlen)) < 0 ||
       (rc = dcm_config_int(c, "jpeg_quality", &o->jpeg_quality, err, errlen)) < 0 ||
+      (rc = dcm_config_num(c, "history_s", &o->history_s, err, errlen)) < 0 ||
       (rc = dcm_config_str(c, "camera", o->camera, sizeof o->camera, err, errlen)) < 0 ||
       (rc = dcm_config_str(c, "camera_block", o->camera_block, sizeof o->camera_block, err, errlen)) < 0 ||
       (rc = dcm_config_str(c, "camera_field", o->camera_field, sizeof o->camera_field, err, errlen)) < 0 ||
@@ -84,6 +85,7 @@ int main(int argc, char **argv) {
   static rec_blocks bs;
   static rec_doc docs[REC_CONCERNS_MAX];
   static rec_queue q;
+  static rec_history hist;
   char err[1024];
   const char *dir = NULL, *camera = NULL;
   double file_mb = 0, total_mb = 0;
@@ -149,6 +151,14 @@ int main(int argc, char **argv) {
     rec_blocks_close(&bs);
     return 1;
   }
+  /* the rings hold a sample per DCM period of the body */
+  double period = 0;
+  dcm_config *rcfg;
+  if (dcm_config_load("robot", NULL, NULL, &rcfg, err, sizeof err) == 0) {
+    if (dcm_config_num(rcfg, "period", &period, err, sizeof err) < 0) period = 0;
+    dcm_config_free(rcfg);
+  }
+  if (rec_history_open(&hist, &bs, &o, period, err, sizeof err) < 0) fprintf(stderr, "hrp_record: %s (no history)\n", err);
   rec_queue_init(&q, (size_t)(o.queue_mb * 1e6));
   if (rec_writer_start(&w, &o, &bs, &q, docs, ndocs, err, sizeof err) < 0) {
     fprintf(stderr, "hrp_record: %s\n", err);
@@ -172,7 +182,7 @@ int main(int argc, char **argv) {
       have_tick = 1;
     }
     const double t = *time_p;
-    rec_blocks_sample(&bs, &q, t > 0 ? (uint64_t)(t * 1e9 + 0.5) : 0, wall_ns());
+    rec_blocks_sample(&bs, &q, &hist, t > 0 ? (uint64_t)(t * 1e9 + 0.5) : 0, wall_ns());
     const double now = shm_now();
     if (now >= next_stats) {
       rec_figures f;
@@ -202,6 +212,7 @@ int main(int argc, char **argv) {
   const double cpu = cpu_seconds() - cpu0;
   *s_pid = 0;
   if (rc < 0) fprintf(stderr, "hrp_record: %s\n", err);
+  rec_history_close(&hist);
   rec_blocks_close(&bs);
   rec_config_free(docs, ndocs);
   printf("hrp_record: %.1f s: %llu messages, %llu camera frames, %llu bytes in %llu file(s) = %.0f bytes/s; "

@@ -38,6 +38,7 @@ typedef struct rec_opts {
   char concerns[REC_CONCERNS_MAX][64];      /* = DCM_NAME_MAX */
   int nconcerns;
   double seconds;                           /* stop after this long (< 0: until a signal) */
+  double history_s;                         /* s of each block kept for history() (0: none) */
   int robot_id, quiet;
   char robot[64], platform[64];
 } rec_opts;
@@ -86,6 +87,8 @@ typedef struct rec_block {
 
 typedef struct rec_blocks {
   int n;
+  int sensor;              /* index of dcm.sensor (-1: none): its own time stamps each sample */
+  uint64_t time_offset;    /* of its f64 time field */
   rec_block b[REC_BLOCKS_MAX];
   shm_schema *schema;
 } rec_blocks;
@@ -93,8 +96,24 @@ typedef struct rec_blocks {
 /* Opens every block of the schema but the excluded ones. */
 int rec_blocks_open(rec_blocks *bs, const rec_opts *o, char *err, size_t errlen);
 void rec_blocks_close(rec_blocks *bs);
-/* Samples every block once, queueing what changed at robot time `log_time`. Returns items queued. */
-int rec_blocks_sample(rec_blocks *bs, rec_queue *q, uint64_t log_time, uint64_t wall_ns);
+/* Samples every block once, queueing what changed at robot time `log_time` (and appending it to the
+ * history h, when not NULL). Returns items queued. */
+struct rec_history;
+int rec_blocks_sample(rec_blocks *bs, rec_queue *q, struct rec_history *h, uint64_t log_time, uint64_t wall_ns);
+
+/* ---- the recent past of every small block in shared memory, for history() (Lib/history.lua) */
+typedef struct rec_history {
+  uint8_t *base;
+  size_t size;
+  char name[64];
+  int entry_of[REC_BLOCKS_MAX];   /* block index -> ring entry, -1 none */
+} rec_history;
+/* Creates /hrp-history.<robot_id> with history_s seconds of rings at one sample per period. */
+int rec_history_open(rec_history *h, const rec_blocks *bs, const rec_opts *o, double period, char *err,
+                     size_t errlen);
+/* Appends block i's present copy (bs->b[i].now) at robot time t. */
+void rec_history_append(rec_history *h, const rec_blocks *bs, int i, double t);
+void rec_history_close(rec_history *h);
 
 /* ---- the configuration in force: one JSON document per concern (Run/config_dump.lua) */
 typedef struct rec_doc {
