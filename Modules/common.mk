@@ -14,9 +14,14 @@ CXX      := g++
 WARN     := -Wall -Wextra -Werror -Wshadow -Wno-unused-parameter
 CFLAGS   += -std=c11 -O2 -g -fPIC $(WARN) -D_GNU_SOURCE -I$(TOP)/Modules -I$(GENDIR) -DHRP_ROOT_DEFAULT='"$(TOP)"'
 CXXFLAGS += -std=c++17 -O2 -g -fPIC $(WARN) -D_GNU_SOURCE -I$(TOP)/Modules -I$(GENDIR) -DHRP_ROOT_DEFAULT='"$(TOP)"'
+# Header dependencies from the compiler (-MMD: a .d file beside each output): a changed header,
+# e.g. a struct in Modules/dcm/dcm.h, rebuilds everything that includes it.
+CFLAGS   += -MMD -MP
+CXXFLAGS += -MMD -MP
 # Link against the shm library by path with an rpath, so nothing needs installing.
 SHM_LIBS := -L$(LIBDIR) -lhrpshm -Wl,-rpath,$(LIBDIR) -lpthread -lrt -lm
 # The DCM library (Modules/dcm; its header dcm.h includes the generated $(GENDIR)/dcm_blocks.h).
 DCM_LIBS := -L$(LIBDIR) -lhrpdcm $(SHM_LIBS)
 
 $(shell mkdir -p $(LIBDIR) $(BINDIR) $(TESTDIR) $(GENDIR))
+-include $(wildcard $(BUILD)/obj/$(notdir $(CURDIR))/*.d $(TESTDIR)/*.d $(BINDIR)/*.d $(LIBDIR)/*.d)

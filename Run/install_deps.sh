@@ -11,6 +11,7 @@ DEBIAN_PACKAGES=(
   libusb-1.0-0-dev liburdfdom-dev libreadline-dev
   clang libclang-rt-14-dev
   libpng-dev libzstd-dev python3 python3-venv
+  protobuf-c-compiler libprotobuf-c-dev protobuf-compiler libprotobuf-dev
 )
 
 missing=()

@@ -128,6 +128,7 @@ local function try_require(name)
 end
 local body_machine = try_require('BodyFSM.machine')
 local head_machine = try_require('HeadFSM.machine')
+local roles = try_require('Team.roles')
 local Motion -- loaded lazily: it opens blocks and reads config
 local motion_loaded = false
 local function motion_api()
@@ -181,6 +182,7 @@ local function status()
   parts[#parts + 1] = string.format('t=%.1f', sensor.time[0])
   local gs = GAME_STATES[game.state[0]] or tostring(game.state[0])
   parts[#parts + 1] = string.format('game=%s%s', gs, game.penalized[0] ~= 0 and '(penalized)' or '')
+  if roles and roles.ROLES[game.role[0]] then parts[#parts + 1] = 'role=' .. roles.ROLES[game.role[0]] end
   if sim then parts[#parts + 1] = string.format('score=%d:%d', sim.score[0], sim.score[1]) end
   local m = motion_api()
   local mstate

@@ -4,14 +4,14 @@
 -- Units: metres, seconds, radians. Everything here can be changed while the robot runs (the
 -- behavior process re-reads nothing by itself; restart it, or set fields from the REPL).
 return {
-  -- the robot's team and number, as the GameController knows them (set per robot in the site folder)
+  -- the robot's team and number, as the GameController knows them (set per robot in the site folder;
+  -- the GameController's own settings and the rules: Config/common/game.lua)
   team_number = 1,
   player_number = 1,
-  gamecontroller = {
-    port = 3838,
-    -- with no GameController packet ever seen, start playing this long after start-up (s)
-    start_delay = 2.0,
-  },
+  -- a behavior process that starts within `within` s (robot clock) of its predecessor's last world
+  -- and game update (run_main restarted on a robot nobody carried) continues its game state and
+  -- pose belief (the particles spread by `spread` m / rad around it) instead of starting afresh
+  resume = { within = 3.0, spread = 0.1 },
   -- behavior steps: one every `step_ticks` DCM ticks
   step_ticks = 3,
   -- stop walking when the vision block has not been updated for this long (s, robot clock)

@@ -54,11 +54,15 @@ int dcm_guard_apply(dcm_guard *g, double now, const double *present, dcm_command
     if (c->tick_ack) g->armed = 1;
     g->safe = 0;   /* motion answers (again): its commands go through */
   }
-  if (g->timeout > 0 && g->armed && !g->safe &&
-      (now - g->ack_time > g->timeout || (c->writer_pid && !shm_pid_alive((int)c->writer_pid)))) {
-    g->safe = 1;
-    g->trips++;
-    memcpy(g->hold, present, sizeof(double) * (size_t)g->nj);
+  if (g->timeout > 0 && g->armed && !g->safe) {
+    /* a writer that died is seen on the next cycle; one that hangs after the timeout */
+    const int dead = c->writer_pid && !shm_pid_alive((int)c->writer_pid);
+    if (dead || now - g->ack_time > g->timeout) {
+      g->safe = 1;
+      g->trips++;
+      g->dead_writer = dead ? (int)c->writer_pid : 0;
+      memcpy(g->hold, present, sizeof(double) * (size_t)g->nj);
+    }
   }
   if (g->safe) {
     for (int j = 0; j < g->nj; j++) {

@@ -221,7 +221,10 @@ int dcm_main(dcm *d, const dcm_driver *drv, void *hw, char *err, size_t errlen) 
       dcm_command_read(&R->actuator, R->nj, &R->cmd);
       const int was_safe = R->guard.safe;
       dcm_guard_apply(&R->guard, d->time, R->sensor.position, &R->cmd);
-      if (R->guard.safe && !was_safe)
+      if (R->guard.safe && !was_safe && R->guard.dead_writer)
+        dcm_log(d, "robot %d: watchdog: the writer (pid %d) died: holding the pose at hardness %.2f", R->id,
+                R->guard.dead_writer, d->safe_hardness);
+      else if (R->guard.safe && !was_safe)
         dcm_log(d, "robot %d: watchdog: no new tick_ack for %.2f s: holding the pose at hardness %.2f", R->id,
                 d->watchdog, d->safe_hardness);
       else if (was_safe && !R->guard.safe)

@@ -125,6 +125,28 @@ static int create_segment(const char *segname, const shm_block_decl *d, shm_bloc
 /* Result of looking at an existing segment. */
 enum { SEG_OK = 0, SEG_STALE = 1, SEG_ERROR = 2, SEG_GONE = 3 };
 
+/* A field table read from a segment somebody else wrote: every field named (NUL inside its
+ * name), of a known type, 8-byte aligned and inside the segment. 0, or -1 with the field named. */
+static int check_fields(const shm_field *f, uint32_t n, uint64_t total, char *err, size_t errlen) {
+  for (uint32_t i = 0; i < n; i++) {
+    const size_t tsize = shm_type_size((int)f[i].type);
+    char name[SHM_NAME_MAX + 1];
+    memcpy(name, f[i].name, SHM_NAME_MAX);
+    name[SHM_NAME_MAX] = 0;
+    const char *why = NULL;
+    if (memchr(f[i].name, 0, SHM_NAME_MAX) == NULL) why = "its name has no end";
+    else if (tsize == 0) why = "unknown type";
+    else if (f[i].offset % 8 != 0) why = "offset not aligned to 8";
+    else if (f[i].offset > total || (uint64_t)f[i].count > (total - f[i].offset) / tsize)
+      why = "lies outside the segment";
+    if (why) {
+      snprintf(err, errlen, "field %u ('%.*s'): %s", i, 24, name, why);
+      return -1;
+    }
+  }
+  return 0;
+}
+
 static int attach_segment(const char *segname, const shm_block_decl *d, int writable, shm_block *b,
                           char *err, size_t errlen) {
   int fd = shm_open(segname, writable ? O_RDWR : O_RDONLY, 0);
@@ -167,7 +189,14 @@ static int attach_segment(const char *segname, const shm_block_decl *d, int writ
              sizeof(shm_header) + (uint64_t)h->nfields * sizeof(shm_field) > h->total_size) {
     snprintf(err, errlen, "shm %s: segment truncated", segname);
     verdict = SEG_STALE;
-  } else if (d) {
+  } else if (!d) {
+    /* no schema to compare with: the segment's own description must hold together */
+    char why[160];
+    if (check_fields((const shm_field *)(p + sizeof(shm_header)), h->nfields, h->total_size, why, sizeof why) < 0) {
+      snprintf(err, errlen, "shm %s: broken field table: %s", segname, why);
+      verdict = SEG_ERROR;
+    }
+  } else {
     const shm_field *seg = (const shm_field *)(p + sizeof(shm_header));
     if (h->layout_hash != d->layout_hash || h->nfields != (uint32_t)d->nfields ||
         h->total_size != d->total_size ||

@@ -23,6 +23,19 @@ local BUSY = { kick_left = true, kick_right = true, kick = true, falling = true,
 local last = { vx = 0, vy = 0, va = 0 }
 M.last = last
 M.kicks = 0
+-- the motion process (pid) our last request went to: a restarted motion process starts from its
+-- initial state and ignores what the block asked of its predecessor, so we ask it again
+M.asked_pid = nil
+
+local function ask(name)
+  Motion.request(name)
+  M.asked_pid = motion.pid[0]
+end
+
+-- Whether the motion process running now has heard our wish for `state` (a request name's state).
+local function asked(state)
+  return Motion.requested() == state and M.asked_pid == motion.pid[0]
+end
 
 function M.motion_state()
   if Motion and Motion.state then
@@ -47,8 +60,8 @@ end
 -- Walk with (vx, vy, va); starts the walk when the robot stands.
 function M.walk(vx, vy, va)
   set_velocity(vx, vy, va)
-  if Motion and not M.busy() and M.motion_state() ~= 'walk' and Motion.requested() ~= 'walk' then
-    Motion.request('walk')
+  if Motion and not M.busy() and M.motion_state() ~= 'walk' and not asked('walk') then
+    ask('walk')
   end
 end
 
@@ -57,7 +70,7 @@ function M.stop()
   set_velocity(0, 0, 0)
   if Motion and not M.busy() then
     local s = M.motion_state()
-    if s ~= 'stance' and Motion.requested() ~= 'stance' then Motion.request('stand') end
+    if s ~= 'stance' and not asked('stance') then ask('stand') end
   end
 end
 
@@ -65,7 +78,7 @@ end
 function M.kick(side)
   if not Motion or M.busy() then return false end
   set_velocity(0, 0, 0)
-  Motion.request(side == 'left' and 'kick_left' or 'kick_right')
+  ask(side == 'left' and 'kick_left' or 'kick_right')
   M.kicks = M.kicks + 1
   return true
 end

@@ -1,7 +1,9 @@
 -- The behavior: reads vision and odometry, updates the world model, follows the game state and runs
 -- the head and body machines; writes the world and game blocks.
 --
---   local b = require('Behavior.behavior').new(opts)   -- opts.port: GameController port override
+--   local b = require('Behavior.behavior').new(opts)   -- opts.port: GameController port override,
+--                                                      -- opts.fresh: ignore a predecessor's blocks,
+--                                                      -- opts.team_port: team communication port
 --   b:step()          -- one step at the current robot time
 --   b:run()           -- the process's loop (lockstep-aware), until SIGTERM
 local shm = require('shm')
@@ -12,14 +14,32 @@ local lockstep = require('lockstep')
 local World = require('World.world')
 local controller = require('GameFSM.controller')
 local packet = require('GameFSM.packet')
+local setplay = require('GameFSM.setplay')
 local act = require('Behavior.act')
+local Team = require('Team.team')
+local roles = require('Team.roles')
 
 local M = {}
 
-local function machine(which)
+local function machine(which, initial)
   local def = require(which .. '.machine')
-  return fsm.new({ name = which, states = def.states, transitions = def.transitions, initial = def.initial,
-    load = function(n) return require(which .. '.' .. n) end })
+  return fsm.new({ name = which, states = def.states, transitions = def.transitions,
+    initial = initial or def.initial, load = function(n) return require(which .. '.' .. n) end })
+end
+
+-- What a predecessor left in the world and game blocks, if it wrote them within cfg.resume.within
+-- s of robot time `t` (a restarted process on a robot nobody carried; after a longer gap, or a
+-- DCM restart that began the clock again, the robot starts afresh).
+local function predecessor(blocks, cfg, t)
+  local g, w = blocks.game, blocks.world
+  local age = t - g.time[0]
+  if g.time[0] <= 0 or age < 0 or age > cfg.resume.within then return nil end
+  local r = { state = packet.STATES[g.state[0]], penalized = g.penalized[0] ~= 0 }
+  local wage = t - w.time[0]
+  if w.time[0] > 0 and wage >= 0 and wage <= cfg.resume.within then
+    r.pose = { w.pose[0], w.pose[1], w.pose[2] }
+  end
+  return r.state and r or nil
 end
 
 local Behavior = {}
@@ -29,26 +49,49 @@ function M.new(opts)
   opts = opts or {}
   local cfg = Config.load('behavior', {
     team_number = 'number', player_number = 'number',
-    gamecontroller = { port = 'number', start_delay = 'number' },
     step_ticks = 'number', vision_stale_after = 'number', world = 'table', head = 'table', body = 'table',
-    ready_pose = 'table',
+    ready_pose = 'table', resume = { within = 'number', spread = 'number' },
+  })
+  local rules = Config.load('game', {
+    gamecontroller = { port = 'number', return_port = 'number', alive_period = 'number',
+      start_without = 'string', start_delay = 'number' },
+    kickoff = { wait = 'number', distance = 'number', ball_moved = 'number' },
+    setplay = { distance = 'table', margin = 'number', hysteresis = 'number', retreat_speed = 'number',
+      turn_gain = 'number', take_tolerance = 'number', keeper_line = 'number' },
+    team = { port_base = 'number', broadcast = 'string', period = 'number', lost_after = 'number',
+      max_per_step = 'number', max_players = 'number' },
+    roles = { enabled = 'boolean', goalkeeper = 'number', walk_speed = 'number', turn_speed = 'number',
+      striker_margin = 'number', keeper_depth = 'number', keeper_clear = 'number', arrive = 'number' },
   })
   local port = opts.port or tonumber(os.getenv('HRP_GC_PORT') or '') or nil
-  local gc = controller.new(cfg, { port = port })
+  local return_port = opts.return_port or tonumber(os.getenv('HRP_GC_RETURN_PORT') or '') or nil
+  local gc = controller.new({ team_number = cfg.team_number, player_number = cfg.player_number,
+    gamecontroller = rules.gamecontroller }, { port = port, return_port = return_port })
   if gc.socket_error then
     io.stderr:write('behavior: GameController disabled: ', gc.socket_error, '\n')
   end
+  local team = Team.new({ team_number = cfg.team_number, player_number = cfg.player_number, team = rules.team },
+    { port = opts.team_port or tonumber(os.getenv('HRP_TEAM_PORT') or '') or nil })
+  if team.socket_error then
+    io.stderr:write('behavior: team communication disabled: ', team.socket_error, '\n')
+  end
   local wcfg = setmetatable({}, { __index = cfg.world })
   wcfg.seed = tonumber(os.getenv('HRP_SEED') or '') or cfg.world.seed
+  local blocks = { world = shm.open('world'), game = shm.open('game'), vision = shm.open('vision'),
+    motion = shm.open('motion'), team = shm.open('team') }
+  local prev = not opts.fresh and predecessor(blocks, cfg, Body.get_time()) or nil
   local self = setmetatable({
-    cfg = cfg, gc = gc, world = World.new(wcfg),
-    body = machine('BodyFSM'), head = machine('HeadFSM'), game = machine('GameFSM'),
-    blocks = { world = shm.open('world'), game = shm.open('game'), vision = shm.open('vision'),
-      motion = shm.open('motion') },
-    vision_time = -1, vision_time_changed = nil, steps = 0,
+    cfg = cfg, rules = rules, gc = gc, team = team, world = World.new(wcfg),
+    body = machine('BodyFSM'), head = machine('HeadFSM'),
+    game = machine('GameFSM', prev and (prev.penalized and 'penalized' or prev.state)),
+    blocks = blocks, vision_time = -1, vision_time_changed = nil, steps = 0, resumed = prev,
   }, Behavior)
-  self.ctx = { cfg = cfg, world = self.world, act = act, body = self.body, head = self.head,
-    t = 0 }
+  if prev then
+    gc:resume(prev.state, prev.penalized)
+    if prev.pose then self.world:resume(prev.pose[1], prev.pose[2], prev.pose[3], cfg.resume.spread) end
+  end
+  self.ctx = { cfg = cfg, rules = rules, world = self.world, act = act, body = self.body,
+    head = self.head, t = 0, game = gc:view() }
   return self
 end
 
@@ -86,8 +129,14 @@ function Behavior:step()
   ctx.vision_stale = (t - self.vision_changed) > self.cfg.vision_stale_after
   self.world:update(t, odom, vis, self.cfg.world.imu_yaw and Body.get_angle()[3] or nil)
   self.world:publish(self.blocks.world)
+  self:talk(t, m)
 
   local state, penalized = self.gc:update(t, Body.get_button(1) ~= 0)
+  ctx.game = self.gc:view()
+  -- a kick-off: PLAYING right after SET (Player/GameFSM/playing.lua follows its progress)
+  if state == 'playing' and self.last_state == 'set' then ctx.kickoff = { t0 = t } end
+  if state ~= 'playing' then ctx.kickoff = nil end
+  self.last_state = state
   local want = penalized and 'penalized' or state
   if self.game:state() ~= want or not self.game.current then self.game:event(want, ctx) end
   self.game:update(ctx)
@@ -101,10 +150,56 @@ function Behavior:step()
     b.score[0], b.score[1] = gc.score[1], gc.score[2]
     b.packets[0] = gc.packets
     b.bad_packets[0] = gc.bad_packets
+    b.secondary_state[0] = gc.secondary_state
+    b.secondary_team[0], b.secondary_mode[0] = gc.secondary_team, gc.secondary_mode
+    b.secondary_time[0] = gc.secondary_time
+    b.goalkeeper[0] = gc.goalkeeper and 1 or 0
+    b.returns[0] = gc.returns
+    b.setplay[0] = setplay.INDEX[state == 'playing' and not penalized and ctx.setplay or 'play']
+    b.role[0] = roles.INDEX[ctx.role or 'striker']
     b.body_state[0] = self.body:index()
     b.head_state[0] = self.head:index()
+    b.time[0] = t
   end)
   self.steps = self.steps + 1
+end
+
+-- Team communication: our estimates out, teammates' into the world model (world.mates).
+function Behavior:talk(t, m)
+  local w, gc = self.world, self.gc
+  local p = w.pose
+  local ball
+  if w:ball_known() then
+    local bx, by = w:ball_field()
+    local c, s = math.cos(p.a), math.sin(p.a)
+    ball = { bx, by, c * w.ball.vx - s * w.ball.vy, s * w.ball.vx + c * w.ball.vy }
+  end
+  self.team:update(t, { pose = { p.x, p.y, p.a }, ball = ball, penalised = gc:penalized(),
+    colour = gc.gc_seen and gc.team_colour or nil,
+    walk = { m.walk_velocity[0], m.walk_velocity[1], m.walk_velocity[2] } })
+  w.mates = self.team:mates(t)
+  self.team:publish(self.blocks.team, t)
+  self:assign_role()
+end
+
+-- This robot's role from the shared estimates (Player/Team/roles.lua); the striker alone or
+-- without roles.
+function Behavior:assign_role()
+  local rc, ctx, w = self.rules.roles, self.ctx, self.world
+  ctx.team_ball = w:shared_ball()
+  if not rc.enabled then ctx.role = 'striker' return end
+  local keeper = self.gc.gc_seen and self.gc.goalkeeper_player or rc.goalkeeper
+  self.role_cfg = self.role_cfg or setmetatable({}, { __index = rc })
+  self.role_cfg.goalkeeper = keeper
+  local p = w.pose
+  ctx.role, ctx.roles = roles.assign({ player = self.cfg.player_number, pose = { p.x, p.y, p.a } }, w.mates,
+    self.role_cfg, ctx.team_ball, -w.cfg.field.length / 2, ctx.role)
+end
+
+-- Closes the sockets (tests; the process just ends).
+function Behavior:close()
+  self.gc:close()
+  self.team:close()
 end
 
 -- The process loop: one step per `step_ticks` ticks, reporting to the lockstep.

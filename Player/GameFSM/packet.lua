@@ -20,6 +20,12 @@
 --
 -- parse(bytes) checks length, header and version and returns a plain table, or nil and why.
 -- build(t) makes a packet from such a table (tests, a stand-in GameController).
+--
+-- The robot's answer, RoboCupGameControlReturnData of the HL (header "RGrt", version 2, to the
+-- GameController's UDP port 3939), 8 bytes: header[4], version u8, team u8, player u8, message u8
+-- (0 manual penalise, 1 manual unpenalise, 2 alive). build_return / parse_return.
+-- secondaryStateInfo: [0] the team the set play is for, [1] its mode (0 preparation, 1 placing,
+-- 2 end: the referee's "execute").
 local M = {}
 
 M.HEADER = 'RGme'
@@ -32,6 +38,15 @@ M.PORT = 3838
 M.STATES = { [0] = 'initial', 'ready', 'set', 'playing', 'finished' }
 M.STATE = { initial = 0, ready = 1, set = 2, playing = 3, finished = 4 }
 M.PENALTY_NONE = 0
+-- secondaryState (STATE2_*)
+M.SECONDARY = { [0] = 'normal', 'penalty_shootout', 'overtime', 'timeout', 'direct_free_kick',
+  'indirect_free_kick', 'penalty_kick', 'corner_kick', 'goal_kick', 'throw_in' }
+M.MODES = { [0] = 'preparation', 'placing', 'end' }
+M.RETURN_HEADER = 'RGrt'
+M.RETURN_VERSION = 2
+M.RETURN_SIZE = 8
+M.RETURN_PORT = 3939
+M.MSG = { man_penalise = 0, man_unpenalise = 1, alive = 2 }
 M.SUBSTITUTE = 14
 M.DROPBALL = 255
 
@@ -84,11 +99,17 @@ function M.for_robot(p, team_number, player_number)
       local other = p.teams[3 - t]
       local me = p.teams[t].players[player_number]
       local penalty = me and me.penalty or 0
+      local info = p.secondary_state_info
+      local keeper = 0
+      for k = M.MAX_PLAYERS, 1, -1 do if p.teams[t].players[k].goalkeeper ~= 0 then keeper = k end end
       return {
         state = p.state, penalty = penalty, penalized = penalty ~= M.PENALTY_NONE,
         team_colour = p.teams[t].colour, kickoff_team = p.kickoff_team,
         our_kickoff = p.kickoff_team == team_number, score = { p.teams[t].score, other.score },
         secondary_state = p.secondary_state, first_half = p.first_half,
+        secondary_team = info[1], secondary_mode = info[2], secondary_time = p.secondary_time,
+        secs_remaining = p.secs_remaining, goalkeeper = (me and me.goalkeeper or 0) ~= 0,
+        goalkeeper_player = keeper,
       }
     end
   end
@@ -125,6 +146,20 @@ function M.build(p)
   local s = table.concat(parts)
   assert(#s == M.SIZE, 'packet.build: size ' .. #s)
   return s
+end
+
+-- The robot's return packet (8 bytes) for `message` (M.MSG).
+function M.build_return(team, player, message)
+  return M.RETURN_HEADER .. char(M.RETURN_VERSION, team, player, message)
+end
+
+-- Parses a return packet: { version, team, player, message } or nil and why.
+function M.parse_return(s)
+  if type(s) ~= 'string' or #s ~= M.RETURN_SIZE then return nil, 'size' end
+  if s:sub(1, 4) ~= M.RETURN_HEADER then return nil, 'header' end
+  local v, team, player, message = byte(s, 5, 8)
+  if v ~= M.RETURN_VERSION then return nil, 'version' end
+  return { version = v, team = team, player = player, message = message }
 end
 
 return M

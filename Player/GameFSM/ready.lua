@@ -1,5 +1,7 @@
--- Ready: walk to the kick-off position in the own half, looking around to localize.
+-- Ready: walk to the role's kick-off position in the own half (Team.position.ready), looking around
+-- to localize.
 local nav = require('BodyFSM.nav')
+local position = require('Team.position')
 
 local M = {}
 
@@ -8,7 +10,7 @@ function M.entry(ctx)
 end
 
 function M.update(ctx)
-  local p = ctx.cfg.ready_pose
+  local p = position.ready(ctx.role or 'striker', ctx.cfg.player_number, ctx.rules.roles, ctx.cfg.ready_pose)
   local tx, ty = ctx.world:to_robot(p[1], p[2])
   local ha = nav.wrap(p[3] - ctx.world.pose.a)
   local vx, vy, va, d = nav.go_to(ctx, tx, ty, ha)

@@ -60,12 +60,17 @@ function M.sender()
   return setmetatable({ fd = fd }, Socket)
 end
 
--- Next pending datagram as a string, or nil when none is waiting.
+local src_bytes = ffi.cast('uint8_t *', src)
+
+-- Next pending datagram as a string and its sender's address (dotted quad) and port, or nil when
+-- none is waiting. A datagram longer than the buffer (4096 bytes) arrives cut to it.
 function Socket:receive()
   srclen[0] = ffi.sizeof(src)
   local n = C.recvfrom(self.fd, buf, buf_size, MSG_DONTWAIT, src, srclen)
   if n < 0 then return nil end
-  return ffi.string(buf, n)
+  local a = src_bytes + 4 -- the address, in network order
+  return ffi.string(buf, n), string.format('%d.%d.%d.%d', a[0], a[1], a[2], a[3]),
+    src_bytes[2] * 256 + src_bytes[3]
 end
 
 -- Sends `data` to host:port (host as dotted quad); true or nil and a message.

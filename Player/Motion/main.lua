@@ -49,8 +49,12 @@ motion:write(function(m)
   for i = 0, n - 1 do m.taken[i], m.owner[i] = 0, 0 end
 end)
 
-motion.pid[0] = ffi.C.getpid()
+-- requests already in the block were made to the previous motion process: this one starts from
+-- its initial state, and the behavior asks again once it sees the new pid (Player/Behavior/act.lua),
+-- so the pid is published only after the request counter is read (a request in between is repeated)
+local my_pid = ffi.C.getpid()
 local last_request = motion.request_seq[0]
+motion.pid[0] = my_pid
 local last_param = motion.param_seq[0]
 
 -- Applies a walk parameter change or a config re-read from the motion block.
@@ -134,6 +138,9 @@ while true do
         if hardness[i - 1] ~= h then Body.set_hardness(i, h) end
       end
     end
+    -- the DCM's watchdog: a new tick_ack each tick, and the writer's pid so that its death is seen
+    -- at once (Modules/dcm/guard.c), not only after the tick_ack timeout
+    actuator.writer_pid[0] = my_pid
     actuator.tick_ack[0] = tick
     local w = ctl.walk
     motion:write(function(m)

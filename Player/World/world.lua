@@ -49,6 +49,13 @@ function World:reset_pose()
   self.pose.fit = nil
 end
 
+-- Continues from a belief this process's predecessor published (the world block): a restarted
+-- behavior process on a robot nobody carried. The particles start around the published pose,
+-- spread by `spread` (m, rad); the next sightings sharpen it.
+function World:resume(x, y, a, spread)
+  self.pose:set_pose(x, y, a, spread)
+end
+
 -- Odometry delta (dx, dy in the old robot frame, da) between two odometry readings {x, y, a}.
 local function odom_delta(o0, o1)
   local ddx, ddy = o1[1] - o0[1], o1[2] - o0[2]
@@ -134,6 +141,14 @@ function World:ball_field()
   return p.x + c * self.ball.x - s * self.ball.y, p.y + s * self.ball.x + c * self.ball.y
 end
 
+-- The ball in the walk's odometry frame (the motion block's cumulative odometry): still while the
+-- ball is, whatever the pose belief does (the kick-off's "has the ball moved").
+function World:ball_odometry()
+  local o = self.odom or { 0, 0, 0 }
+  local c, s = cos(o[3]), sin(o[3])
+  return o[1] + c * self.ball.x - s * self.ball.y, o[2] + s * self.ball.x + c * self.ball.y
+end
+
 -- A field point in the robot frame.
 function World:to_robot(fx, fy)
   local p = self.pose
@@ -147,6 +162,21 @@ function World:goal_in_robot_frame()
   return self:to_robot(self.cfg.field.length / 2, 0)
 end
 
+-- The ball on the field as the team knows it: our own estimate while we know it, else the
+-- youngest of the teammates' (world.mates, Player/Team/team.lua); nil when nobody knows.
+function World:shared_ball()
+  if self:ball_known() then
+    local x, y = self:ball_field()
+    return { x, y }, 'own'
+  end
+  local best
+  for _, m in ipairs(self.mates or {}) do
+    if m.ball_known and (not best or m.age < best.age) then best = m end
+  end
+  if best then return { best.ball[1], best.ball[2] }, 'team' end
+  return nil
+end
+
 -- Writes the world block (one locked write).
 function World:publish(block)
   local b, p = self.ball, self.pose
@@ -155,6 +185,7 @@ function World:publish(block)
     w.ball_time[0] = b.seen and b.t_seen or -1
     w.pose[0], w.pose[1], w.pose[2] = p.x, p.y, p.a
     w.pose_confidence[0] = p.confidence
+    w.time[0] = self.t or 0
   end)
 end
 

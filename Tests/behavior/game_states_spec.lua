@@ -3,6 +3,7 @@
 -- initial, ready, set, playing, penalized and back. The robot's clock and vision frames are driven
 -- by the test (no simulator needed); what the behavior asks of the walk is read from the motion block.
 local shm = require('shm')
+local view = require('Tests.behavior.view')
 local packet = require('GameFSM.packet')
 local udp = require('GameFSM.udp')
 
@@ -15,12 +16,12 @@ describe('behavior under a GameController', function()
     sensor, vision = shm.open('dcm.sensor'), shm.open('vision')
     motion, game = shm.open('motion'), shm.open('game')
     sensor.time[0], sensor.tick[0] = 100, 0
-    behavior = require('Behavior.behavior').new({ port = port })
+    behavior = require('Behavior.behavior').new({ port = port, return_port = port + 1, team_port = port + 2 })
     tx = assert(udp.sender())
   end)
 
   teardown(function()
-    behavior.gc:close()
+    behavior:close()
     tx:close()
     -- the test robot's blocks only (Tests/run_all.sh gives every run its own ROBOT_ID)
     if os.getenv('ROBOT_ID') then for _, name in ipairs(shm.block_names()) do shm.unlink(name) end end
@@ -31,22 +32,14 @@ describe('behavior under a GameController', function()
   -- once it knows where it is)
   local function run(seconds)
     for _ = 1, math.floor(seconds / 0.024 + 0.5) do
-      tick = tick + 3
-      sensor.tick[0] = tick
-      sensor.time[0] = sensor.time[0] + 0.024
-      vision.frame[0] = vision.frame[0] + 1
-      vision.time[0] = sensor.time[0]
-      vision.ball_detected[0] = 1
-      vision.ball_position[0], vision.ball_position[1] = 1.0, 0.2
-      vision.goal_posts[0] = 2
-      vision.goal_position[0], vision.goal_position[1] = 6.5, 1.3
-      vision.goal_position[2], vision.goal_position[3] = 6.5, -1.3
+      tick = view.frame(sensor, vision, tick, 1.0, 0.2)
       behavior:step()
     end
   end
 
+  -- our kick-off (team 1): the other team's would hold the robot back (game_rules_spec.lua)
   local function send(state, penalty)
-    assert(tx:send(packet.build({ state = state, packet_number = 1,
+    assert(tx:send(packet.build({ state = state, packet_number = 1, kickoff_team = 1,
       teams = { { number = 9 }, { number = 1, players = { { penalty = penalty or 0 } } } } }),
       '127.0.0.1', port))
   end

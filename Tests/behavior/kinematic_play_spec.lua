@@ -134,13 +134,13 @@ describe('behavior with an idealised robot', function()
     for seed = tonumber(os.getenv('SEED') or 1), tonumber(os.getenv('SEED') or seeds) do
       -- a fresh behavior per run: it knows nothing of the previous one
       package.loaded['Behavior.behavior'] = nil
-      local behavior = require('Behavior.behavior').new({ port = 0 })
+      local behavior = require('Behavior.behavior').new({ port = 0, team_port = 0, fresh = true })
       behavior.gc.state = 3 -- playing (no GameController in this test)
       behavior.gc.gc_seen = true
       -- the stand-in models a kick, not the feet pushing a ball along: play by kicking
       behavior.cfg.body.dribble.enabled = false
       local ok, t = play(behavior, seed, 120)
-      behavior.gc:close()
+      behavior:close()
       print(string.format('# seed %d: %s after %.1f s', seed, ok and 'goal' or 'no goal', t))
       if ok then goals = goals + 1 times[#times + 1] = t end
     end

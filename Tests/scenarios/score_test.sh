@@ -32,7 +32,7 @@ run_one() {
   local seed=$1 id=$2 kill_at=${3:-}
   local tag="$seed${kill_at:+_kill}"
   local mainlog="$LOGDIR/main_$tag.log"
-  ROBOT_ID=$id HRP_SEED=$seed HRP_GC_PORT=$((40000 + id % 20000)) \
+  ROBOT_ID=$id HRP_SEED=$seed HRP_GC_PORT=$((40000 + id % 20000)) HRP_TEAM_PORT=$((30000 + id % 20000)) \
     ./run_main --sim --quiet ${SCORE_BEHAVIOR:+--script behavior=$SCORE_BEHAVIOR} --dcm-arg --lockstep \
     --dcm-arg --seed --dcm-arg "$seed" >"$mainlog" 2>&1 &
   local main_pid=$!

@@ -146,6 +146,34 @@ else
   nok "dcm_sim starts in real time"
 fi
 
+# ---- real time: the motion process killed (-9) mid-stance: the DCM sees its writer die and holds
+# the pose on its next cycle, long before the tick_ack timeout
+cleanup
+if start_dcm kill_motion; then
+  ./run_main --no-restart --quiet motion >"$LOG/kill_motion_main.log" 2>&1 &
+  main_pid=$!
+  out=$(./run_repl -e '
+    local shm = require("shm")
+    local m = shm.open("motion")
+    for _ = 1, 100 do if m.tick[0] > 0 and dcm_actuator.writer_pid[0] == m.pid[0] then break end wait(0.05) end
+    wait(1.0)
+    local pid = m.pid[0]
+    local trips = dcm_stats.watchdog_trips[0]
+    local t0 = shm.C.shm_now()
+    os.execute("kill -9 " .. pid)
+    while dcm_stats.watchdog_trips[0] == trips and shm.C.shm_now() - t0 < 2 do end
+    print(string.format("motion pid %d killed: safe state after %.1f ms (writer_pid %d)", pid,
+      (shm.C.shm_now() - t0) * 1e3, dcm_actuator.writer_pid[0]))' 2>&1)
+  kill "$main_pid" 2>/dev/null; wait "$main_pid" 2>/dev/null
+  echo "$out" | sed 's/^/# /'
+  pid=$(echo "$out" | sed -n 's/^motion pid \([0-9]*\) killed.*/\1/p')
+  [ -n "$pid" ] && grep -q "watchdog: the writer (pid $pid) died" "$LOG/kill_motion.log"
+  check $? "motion killed: the DCM trips its watchdog on the writer's death (not the tick_ack timeout)"
+  stop_dcm
+else
+  nok "dcm_sim starts (kill motion)"
+fi
+
 # ---- the DCM owns its start state: a REPL command written before any DCM ran (hardness 0, torque
 # off, zero pose) does not survive its start; the robot stands either way (issue 17's reproduction)
 for order in repl_first dcm_first; do

@@ -175,7 +175,8 @@ static void test_guard(void) {
   dcm_guard_apply(&g, 6.2, present, &c);
   fill(&c, NJ, 0.2, 0.8, 9);
   c.writer_pid = (uint32_t)child;
-  check(dcm_guard_apply(&g, 6.21, present, &c) == 1 && g.trips == 2, "a dead writer trips the watchdog at once");
+  check(dcm_guard_apply(&g, 6.21, present, &c) == 1 && g.trips == 2 && g.dead_writer == (int)child,
+        "a dead writer trips the watchdog at once, naming its pid");
 
   /* no watchdog (lockstep): silence is not a fault */
   dcm_guard_init(&g, NJ, 0, 0.3, present, 0);

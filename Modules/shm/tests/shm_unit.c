@@ -74,6 +74,22 @@ static void test_create_attach(void) {
   shm_block *other = NULL;
   rc = shm_block_open(s, "t.nope", robot, SHM_OPEN_CREATE, &other, err, sizeof err);
   check(rc < 0 && strstr(err, "t.nope"), "unknown block is named");
+  /* a field table broken by somebody else: the tools' open (no schema) refuses it, naming the field
+   * (found by Tests/foundation/shm_fuzz_test.sh: a field's offset pointed outside the mapping) */
+  shm_field *table = (shm_field *)((uint8_t *)h + sizeof(shm_header));
+  const uint64_t good = table[1].offset;
+  table[1].offset = (uint64_t)1 << 40;
+  rc = shm_block_open(NULL, "t.a", robot, SHM_OPEN_NOSCHEMA, &other, err, sizeof err);
+  check(rc < 0 && strstr(err, "field 1") && strstr(err, "outside the segment"),
+        "a field outside the segment is refused (no schema), the field named");
+  table[1].offset = good;
+  table[2].type = 77;
+  rc = shm_block_open(NULL, "t.a", robot, SHM_OPEN_NOSCHEMA, &other, err, sizeof err);
+  check(rc < 0 && strstr(err, "unknown type"), "a field of an unknown type is refused (no schema)");
+  table[2].type = SHM_F64;
+  rc = shm_block_open(NULL, "t.a", robot, SHM_OPEN_NOSCHEMA, &other, err, sizeof err);
+  check(rc == 0, "the repaired segment opens as it describes itself");
+  if (rc == 0) shm_block_close(other);
   shm_block_close(r);
   shm_block_close(w);
   shm_schema_free(s);

@@ -1,0 +1,65 @@
+-- The game: the GameController, kick-off and set-play rules, team communication. Rule numbers are
+-- the RoboCup Humanoid League's (KidSize; Laws of the Game 2019 onwards: 0.75 m for the opponents
+-- at free kicks and the centre circle's radius at kick-off); a venue or a league changes them here.
+-- Units: metres, seconds.
+return {
+  gamecontroller = {
+    port = 3838,               -- UDP: the GameController's packets (RGme, HL version 12)
+    return_port = 3939,        -- UDP: our return packets (RGrt version 2), to the sender's address
+    alive_period = 1.0,        -- s (robot clock) between "alive" return packets
+    -- with no GameController packet seen: 'initial' waits there until a packet or the chest button
+    -- (a real robot beside a real field); 'playing' starts playing `start_delay` s after start-up
+    -- (the simulator's quick start: Config/platforms/Sim/game.lua)
+    start_without = 'initial',
+    start_delay = 2.0,
+  },
+  kickoff = {
+    -- the team without the kick-off stays outside the centre circle until the ball has moved or
+    -- `wait` s of PLAYING have passed
+    wait = 10.0,
+    distance = 0.75,           -- m from the ball (the centre circle's radius)
+    ball_moved = 0.3,          -- m the ball's estimate must move (its sightings' error at 1-2 m)
+  },
+  setplay = {
+    -- m the opponents of the team taking a set play keep from the ball (Humanoid League KidSize)
+    distance = { direct_free_kick = 0.75, indirect_free_kick = 0.75, corner_kick = 0.75,
+      goal_kick = 0.75, throw_in = 0.75,
+      penalty_kick = 1.5 },    -- the penalty mark's own rule; conservative: outside the penalty area
+    margin = 0.15,             -- m kept beyond the distance (the ball estimate's error)
+    hysteresis = 0.2,          -- m: nearer than distance + margin: back off; beyond + this: stand
+    retreat_speed = 0.15,      -- m/s backing away from the ball
+    turn_gain = 0.8,           -- 1/s: turning to face the ball while keeping away
+    take_tolerance = 0.1,      -- m: standing behind the ball for our own set play, this near the spot
+    keeper_line = 0.15,        -- m in front of its goal line: our goalkeeper at their penalty kick
+  },
+  team = {
+    port_base = 10000,         -- UDP: each team broadcasts on port_base + its team number
+    broadcast = '255.255.255.255',
+    period = 0.5,              -- s (robot clock) between our messages
+    lost_after = 3.0,          -- s without a message: the teammate is lost (its role is taken over)
+    max_per_step = 32,         -- datagrams read per behavior step (a flood cannot stall the behavior)
+    max_players = 11,          -- player numbers 1..11 (the GameController's; the team shm block's size)
+  },
+  -- roles from the shared estimates (Player/Team/roles.lua) and where each stands (Team/position.lua)
+  roles = {
+    enabled = true,            -- false: every robot plays the ball alone
+    goalkeeper = 0,            -- player number of the goalkeeper without a GameController (0: none;
+                               -- with one, its goalKeeper flag decides)
+    walk_speed = 0.2,          -- m/s and rad/s a robot is assumed to walk and turn at (time to the ball)
+    turn_speed = 0.5,
+    striker_margin = 1.5,      -- s: the striker keeps the ball until another is this much faster
+    keeper_depth = 0.5,        -- m out from the own goal's centre towards the ball
+    keeper_clear = 1.5,        -- m: a ball this near the own goal's centre: the goalkeeper clears it
+    defender_fraction = 0.4,   -- of the way from the own goal's centre to the ball
+    defender_max_x = -1.0,     -- m: the defender stays behind this line
+    defender_home = 1.5,       -- m in front of the own goal while no ball is known
+    supporter_back = 1.0,      -- m behind the ball ...
+    supporter_side = 1.2,      -- m ... and to the side, towards the centre line
+    supporter_home = -1.0,     -- m: x while no ball is known
+    field_margin = 0.4,        -- m kept inside the field lines
+    arrive = 0.25,             -- m: at the position (then turn to the ball and stand)
+    -- kick-off positions in READY (field x, y, heading) of the roles other than the striker's (which is
+    -- behavior.lua's ready_pose); supporters by player number: even ones at y, odd ones at -y
+    ready = { defender = { -3.0, 0.0, 0.0 }, supporter = { -2.0, 1.5, 0.0 }, goalkeeper = { -4.2, 0.0, 0.0 } },
+  },
+}

@@ -1,0 +1,43 @@
+-- Where each role stands while it does not play the ball (Player/Team/roles.lua), on the field
+-- (own goal at x = -length/2); nil: play the ball (the striker; a goalkeeper clearing a ball near
+-- its goal). Numbers: Config/common/game.lua roles.
+--   local x, y = position.target(role, ball, cfg, field)   -- ball: {x, y} on the field or nil
+--   local pose = position.ready(role, player, cfg, striker_pose) -- the kick-off position in READY
+local M = {}
+
+local sqrt = math.sqrt
+
+local function clamp(x, lo, hi) if x < lo then return lo elseif x > hi then return hi end return x end
+
+function M.target(role, ball, cfg, field)
+  local gx = -field.length / 2
+  if role == 'striker' then return nil end
+  if role == 'goalkeeper' then
+    if not ball then return gx + cfg.keeper_depth, 0 end
+    local dx, dy = ball[1] - gx, ball[2]
+    local d = sqrt(dx * dx + dy * dy)
+    if d < cfg.keeper_clear then return nil end -- near the goal: clear it
+    -- on the line from the goal's centre to the ball, keeper_depth out, within the goal's width
+    return gx + cfg.keeper_depth * dx / d, clamp(cfg.keeper_depth * dy / d, -field.goal_width / 2, field.goal_width / 2)
+  end
+  local margin = cfg.field_margin
+  if role == 'defender' then
+    if not ball then return gx + cfg.defender_home, 0 end
+    local x = gx + cfg.defender_fraction * (ball[1] - gx)
+    return math.min(x, cfg.defender_max_x), cfg.defender_fraction * ball[2]
+  end
+  -- supporter: behind the ball, to the side nearer the field's centre line
+  if not ball then return cfg.supporter_home, 0 end
+  local side = ball[2] > 0 and -1 or 1
+  return clamp(ball[1] - cfg.supporter_back, gx + margin, field.length / 2 - margin),
+    clamp(ball[2] + side * cfg.supporter_side, -field.width / 2 + margin, field.width / 2 - margin)
+end
+
+function M.ready(role, player, cfg, striker_pose)
+  if role == 'striker' then return striker_pose end
+  local p = cfg.ready[role]
+  if role == 'supporter' and player % 2 == 1 then return { p[1], -p[2], p[3] } end
+  return p
+end
+
+return M

@@ -1,0 +1,79 @@
+-- Roles from the shared estimates (Player/Team/team.lua): every robot computes the whole team's
+-- assignment from the same data, so the robots agree without sending roles (the league's message
+-- has no field for them). Among the robots playing (heard within lost_after, not penalised):
+--   goalkeeper  the GameController's (or the site's) goalkeeper; if it is lost, the robot nearest
+--               the own goal takes over, once two others remain to play
+--   striker     the one that reaches the ball first (distance / speed plus the turn); the current
+--               striker keeps the role until another is faster by `striker_margin` s
+--   defender    the one nearest the own goal among the rest
+--   supporter   everyone else
+-- A robot alone is the striker (or the goalkeeper, if it is the designated one and others play).
+--
+--   local role, assignment = roles.assign(me, mates, cfg, ball, own_goal_x, previous)
+--   me / mates: { player, pose = {x, y, a} }; ball: {x, y} on the field or nil; cfg: game.lua roles
+local M = {}
+
+local sqrt, atan2, abs = math.sqrt, math.atan2, math.abs
+
+M.ROLES = { 'striker', 'supporter', 'defender', 'goalkeeper' }
+M.INDEX = { striker = 1, supporter = 2, defender = 3, goalkeeper = 4 }
+
+local function wrap(a) return (a + math.pi) % (2 * math.pi) - math.pi end
+
+-- Seconds robot r needs to reach the ball: walking plus turning towards it.
+function M.time_to_ball(r, ball, cfg)
+  local dx, dy = ball[1] - r.pose[1], ball[2] - r.pose[2]
+  local d = sqrt(dx * dx + dy * dy)
+  return d / cfg.walk_speed + abs(wrap(atan2(dy, dx) - r.pose[3])) / cfg.turn_speed
+end
+
+local function goal_distance(r, own_goal_x)
+  local dx, dy = r.pose[1] - own_goal_x, r.pose[2]
+  return sqrt(dx * dx + dy * dy)
+end
+
+-- Picks from `list` the robot with the least key(r) (ties: the lower player number).
+local function pick(list, key)
+  local best, best_k
+  for _, r in ipairs(list) do
+    local k = key(r)
+    if not best or k < best_k or (k == best_k and r.player < best.player) then best, best_k = r, k end
+  end
+  return best
+end
+
+local function remove(list, r)
+  for i, x in ipairs(list) do if x == r then table.remove(list, i) return end end
+end
+
+-- The assignment { [player] = role } and this robot's role. `previous` is this robot's last role
+-- (the striker's hysteresis).
+function M.assign(me, mates, cfg, ball, own_goal_x, previous)
+  local team = { me }
+  for _, m in ipairs(mates) do if not m.penalised then team[#team + 1] = m end end
+  local out = {}
+  -- the goalkeeper
+  local keeper
+  for _, r in ipairs(team) do if r.player == cfg.goalkeeper then keeper = r end end
+  if not keeper and cfg.goalkeeper ~= 0 and #team >= 3 then
+    keeper = pick(team, function(r) return goal_distance(r, own_goal_x) end)
+  end
+  if keeper and #team >= 2 then
+    out[keeper.player] = 'goalkeeper'
+    remove(team, keeper)
+  end
+  -- the striker: first to the ball (without a ball anywhere: the one furthest forward)
+  local function t_ball(r)
+    local tb = ball and M.time_to_ball(r, ball, cfg) or -r.pose[1]
+    if r == me and previous == 'striker' then tb = tb - cfg.striker_margin end
+    return tb
+  end
+  local striker = pick(team, t_ball)
+  if striker then out[striker.player] = 'striker' remove(team, striker) end
+  local defender = pick(team, function(r) return goal_distance(r, own_goal_x) end)
+  if defender then out[defender.player] = 'defender' remove(team, defender) end
+  for _, r in ipairs(team) do out[r.player] = 'supporter' end
+  return out[me.player], out
+end
+
+return M

@@ -1,0 +1,136 @@
+-- luacheck: std +busted
+-- Roles from shared estimates (Player/Team/roles.lua) and their positions (Team/position.lua); then
+-- a behavior that hears a teammate over UDP: it defends while the teammate strikes, and takes the
+-- striker's role over when the teammate is lost.
+local shm = require('shm')
+local view = require('Tests.behavior.view')
+local roles = require('Team.roles')
+local position = require('Team.position')
+local Team = require('Team.team')
+local Config = require('Config')
+
+local rules = Config.load('game')
+local field = Config.load('behavior').world.field
+local GOAL_X = -field.length / 2
+local function cfg(keeper) return setmetatable({ goalkeeper = keeper or 0 }, { __index = rules.roles }) end
+local function r(player, x, y, a) return { player = player, pose = { x, y, a or 0 } } end
+
+describe('roles', function()
+  local ball = { 1.0, 0.0 }
+  local team = { r(2, 0.2, 0.1), r(3, -2.0, 1.0), r(4, -3.5, -0.5) }
+
+  it('goalkeeper as designated, striker first to the ball, defender nearest the own goal', function()
+    local role, all = roles.assign(r(1, -4.2, 0), team, cfg(1), ball, GOAL_X)
+    assert.are.equal('goalkeeper', role)
+    assert.are.same({ [1] = 'goalkeeper', [2] = 'striker', [3] = 'supporter', [4] = 'defender' }, all)
+  end)
+
+  it('the time to the ball counts the turn', function()
+    local facing = roles.time_to_ball(r(1, 0, 0, 0), ball, rules.roles)
+    local away = roles.time_to_ball(r(1, 0, 0, math.pi), ball, rules.roles)
+    assert.is_true(math.abs(facing - 1.0 / rules.roles.walk_speed) < 1e-9)
+    assert.is_true(math.abs(away - facing - math.pi / rules.roles.turn_speed) < 1e-9)
+  end)
+
+  it("a lost striker's role is taken over by the next fastest", function()
+    local _, all = roles.assign(r(1, -4.2, 0), { team[2], team[3] }, cfg(1), ball, GOAL_X)
+    assert.are.same({ [1] = 'goalkeeper', [3] = 'striker', [4] = 'defender' }, all)
+  end)
+
+  it("a lost goalkeeper's role is taken over by the robot nearest the own goal, when two others remain", function()
+    local _, all = roles.assign(r(2, 0.2, 0.1), { team[2], team[3] }, cfg(1), ball, GOAL_X)
+    assert.are.same({ [2] = 'striker', [3] = 'defender', [4] = 'goalkeeper' }, all)
+    _, all = roles.assign(r(2, 0.2, 0.1), { team[3] }, cfg(1), ball, GOAL_X)
+    assert.are.same({ [2] = 'striker', [4] = 'defender' }, all)
+  end)
+
+  it('a robot alone strikes, even the designated goalkeeper; penalised teammates do not count', function()
+    assert.are.equal('striker', (roles.assign(r(1, -4.2, 0), {}, cfg(1), ball, GOAL_X)))
+    local pen = r(2, 0.2, 0.1)
+    pen.penalised = true
+    assert.are.equal('striker', (roles.assign(r(3, -2, 1), { pen }, cfg(0), ball, GOAL_X)))
+  end)
+
+  it('the striker keeps the ball until another is faster by the margin', function()
+    local rc = rules.roles
+    local me = r(1, 0.0, 0.0)
+    local a_bit = r(2, 0.5 * rc.striker_margin * rc.walk_speed, 0.0) -- half the margin faster
+    local much = r(2, 2.0 * rc.striker_margin * rc.walk_speed, 0.0)  -- twice the margin faster
+    assert.are.equal('defender', (roles.assign(me, { a_bit }, cfg(0), ball, GOAL_X, 'defender')))
+    assert.are.equal('striker', (roles.assign(me, { a_bit }, cfg(0), ball, GOAL_X, 'striker')))
+    assert.are.equal('defender', (roles.assign(me, { much }, cfg(0), ball, GOAL_X, 'striker')))
+  end)
+
+  it('positions: goalkeeper on the goal-ball line, defender between, supporter behind and inside', function()
+    local rc = rules.roles
+    local x, y = position.target('goalkeeper', { -2.0, 2.0 }, rc, field)
+    assert.is_true(x > GOAL_X and x < GOAL_X + rc.keeper_depth + 1e-9)
+    assert.is_true(y > 0 and y <= field.goal_width / 2)
+    assert.is_nil(position.target('goalkeeper', { GOAL_X + 0.5, 0.2 }, rc, field)) -- clears a near ball
+    assert.is_nil(position.target('striker', ball, rc, field))
+    x, y = position.target('defender', { 2.0, 1.0 }, rc, field)
+    assert.is_true(x <= rc.defender_max_x and x > GOAL_X and y > 0 and y < 1.0)
+    x, y = position.target('supporter', { 3.0, -2.7 }, rc, field)
+    assert.are.equal(3.0 - rc.supporter_back, x)
+    assert.is_true(y > -2.7 and y <= field.width / 2 - rc.field_margin)
+  end)
+
+  it('kick-off positions in READY by role; supporters on either side by player number', function()
+    local rc, striker = rules.roles, { -1, 0, 0 }
+    assert.are.equal(striker, position.ready('striker', 2, rc, striker))
+    assert.are.same(rc.ready.goalkeeper, position.ready('goalkeeper', 1, rc, striker))
+    assert.are.same(rc.ready.defender, position.ready('defender', 3, rc, striker))
+    local a, b = position.ready('supporter', 2, rc, striker), position.ready('supporter', 3, rc, striker)
+    assert.are.equal(a[1], b[1])
+    assert.are.equal(-a[2], b[2])
+    assert.is_true(a[2] ~= 0)
+  end)
+end)
+
+describe('roles in the behavior', function()
+  local id = tonumber(os.getenv('ROBOT_ID') or '1')
+  local port = 23000 + (id % 20000)
+  local sensor, vision, motion, game, behavior, mate
+  local tc = setmetatable({ broadcast = '127.255.255.255' }, { __index = rules.team })
+
+  setup(function()
+    sensor, vision = shm.open('dcm.sensor'), shm.open('vision')
+    motion, game = shm.open('motion'), shm.open('game')
+    sensor.time[0], sensor.tick[0] = 200, 0
+    behavior = require('Behavior.behavior').new({ port = 0, team_port = port, fresh = true })
+    mate = Team.new({ team_number = 1, player_number = 2, team = tc }, { port = port })
+  end)
+  teardown(function()
+    behavior:close()
+    mate:close()
+    if os.getenv('ROBOT_ID') then for _, name in ipairs(shm.block_names()) do shm.unlink(name) end end
+  end)
+
+  -- the robot sees the ball 2 m ahead and the opponent goal's posts as from (-2, 0); the teammate
+  -- (while `talking`) says it stands 0.3 m from the ball at (0, 0.1), facing it
+  local tick = 0
+  local function run(seconds, talking)
+    for _ = 1, math.floor(seconds / 0.024 + 0.5) do
+      tick = view.frame(sensor, vision, tick, 2.0, 0.1)
+      if talking then
+        mate:update(sensor.time[0], { pose = { -0.3, 0.1, 0 }, ball = { 0.0, 0.1, 0, 0 }, penalised = false,
+          walk = { 0, 0, 0 } })
+      end
+      behavior:step()
+    end
+  end
+
+  it('defends while a teammate nearer the ball strikes, and strikes once the teammate is lost', function()
+    run(3, true)
+    assert.are.equal(1, #behavior.world.mates)
+    assert.are.equal(roles.INDEX.defender, game.role[0])
+    assert.are.equal('idle', behavior.body:state()) -- not going for the ball: keeping its position
+    assert.is_true(math.abs(motion.velocity[0]) + math.abs(motion.velocity[1]) + math.abs(motion.velocity[2]) > 0)
+    run(rules.team.lost_after - 0.5, false)
+    assert.are.equal(roles.INDEX.defender, game.role[0]) -- not yet lost
+    run(1.0, false)
+    assert.are.equal(0, #behavior.world.mates)
+    assert.are.equal(roles.INDEX.striker, game.role[0])
+    assert.are_not.equal('idle', behavior.body:state())
+  end)
+end)
