@@ -1,5 +1,6 @@
 /* hrp_record: records every shm block of ROBOT_ID into MCAP files (see record.h and README.md).
- *   hrp_record [--dir DIR] [--seconds S] [--camera jpeg|raw|off] [--file-mb MB] [--total-mb MB] [--quiet]
+ *   hrp_record [--dir DIR] [--seconds S] [--camera jpeg|raw|off] [--file-mb MB] [--total-mb MB] [--lockstep] [--quiet]
+ * --lockstep: in a lockstep run, record every tick as a lockstep observer (observer.c).
  * Settings: Config/common/recorder.lua (overlaid like every concern). Stops on SIGINT / SIGTERM
  * (closing the file properly) and prints its figures. */
 #include "record.h"
@@ -76,7 +77,7 @@ done:
 static int usage(const char *msg) {
   if (msg) fprintf(stderr, "hrp_record: %s\n", msg);
   fprintf(stderr, "usage: hrp_record [--dir DIR] [--seconds S] [--camera jpeg|raw|off] [--file-mb MB] [--total-mb MB] "
-          "[--quiet]\n");
+          "[--lockstep] [--quiet]\n");
   return 2;
 }
 
@@ -86,9 +87,11 @@ int main(int argc, char **argv) {
   static rec_doc docs[REC_CONCERNS_MAX];
   static rec_queue q;
   static rec_history hist;
+  static rec_observer ob;
   char err[1024];
   const char *dir = NULL, *camera = NULL;
   double file_mb = 0, total_mb = 0;
+  int lockstep = 0;
   o.seconds = -1;
   for (int i = 1; i < argc; i++) {
     if (!strcmp(argv[i], "--dir") && i + 1 < argc) dir = argv[++i];
@@ -97,6 +100,7 @@ int main(int argc, char **argv) {
     else if (!strcmp(argv[i], "--file-mb") && i + 1 < argc) file_mb = atof(argv[++i]);
     else if (!strcmp(argv[i], "--total-mb") && i + 1 < argc) total_mb = atof(argv[++i]);
     else if (!strcmp(argv[i], "--quiet")) o.quiet = 1;
+    else if (!strcmp(argv[i], "--lockstep")) lockstep = 1;
     else return usage(argv[i][0] == '-' && strcmp(argv[i], "-h") && strcmp(argv[i], "--help") ? "unknown option" : NULL);
   }
   /* a camera frame (600 kB) per item: kept on the heap and reused rather than mapped and faulted in
@@ -159,6 +163,11 @@ int main(int argc, char **argv) {
     dcm_config_free(rcfg);
   }
   if (rec_history_open(&hist, &bs, &o, period, err, sizeof err) < 0) fprintf(stderr, "hrp_record: %s (no history)\n", err);
+  if (lockstep && rec_observer_join(&ob, bs.schema, o.robot_id, err, sizeof err) < 0) {
+    fprintf(stderr, "hrp_record: %s\n", err);
+    rec_blocks_close(&bs);
+    return 1;
+  }
   rec_queue_init(&q, (size_t)(o.queue_mb * 1e6));
   if (rec_writer_start(&w, &o, &bs, &q, docs, ndocs, err, sizeof err) < 0) {
     fprintf(stderr, "hrp_record: %s\n", err);
@@ -174,15 +183,21 @@ int main(int argc, char **argv) {
   int have_tick = 0;
   *s_pid = (int32_t)getpid();
   while (!g_stop) {
-    writes = shm_wait_write(sensor, writes, 0.05);
-    const uint32_t tick = *tick_p;
-    if (have_tick && tick > last_tick + 1) missed += tick - last_tick - 1;
-    if (!have_tick || tick != last_tick) {
-      last_tick = tick;
-      have_tick = 1;
+    uint32_t observed = 0;
+    int sample = 1;
+    if (lockstep && (observed = rec_observer_wait(&ob, 0.05)) == 0 && *ob.lockstep == 1) sample = 0;
+    else if (!observed) writes = shm_wait_write(sensor, writes, 0.05);
+    if (sample) {
+      const uint32_t tick = *tick_p;
+      if (have_tick && tick > last_tick + 1) missed += tick - last_tick - 1;
+      if (!have_tick || tick != last_tick) {
+        last_tick = tick;
+        have_tick = 1;
+      }
+      const double t = *time_p;
+      rec_blocks_sample(&bs, &q, &hist, t > 0 ? (uint64_t)(t * 1e9 + 0.5) : 0, wall_ns());
+      if (observed) rec_observer_done(&ob, observed);
     }
-    const double t = *time_p;
-    rec_blocks_sample(&bs, &q, &hist, t > 0 ? (uint64_t)(t * 1e9 + 0.5) : 0, wall_ns());
     const double now = shm_now();
     if (now >= next_stats) {
       rec_figures f;
@@ -206,6 +221,7 @@ int main(int argc, char **argv) {
     if (o.seconds >= 0 && now - t0 >= o.seconds) break;
   }
   const double elapsed = shm_now() - t0;
+  rec_observer_leave(&ob);
   rec_queue_close(&q);
   rec_figures f;
   rc = rec_writer_join(w, &f, err, sizeof err);

@@ -7,8 +7,8 @@
  *                          counted, so no robot process ever waits for the recorder
  *   writer (a thread)      JPEG-compresses frames (OpenCV), writes MCAP files (Modules/mcap), closes
  *                          a file past file_mb and deletes the oldest past total_mb
- * The recorder is no lockstep participant: it only reads the blocks, and counts the DCM ticks it
- * missed (dcm.sensor.tick gaps).
+ * The recorder only reads the blocks and counts the DCM ticks it missed (dcm.sensor.tick gaps); with
+ * --lockstep it is a lockstep observer (observer.c) and misses none.
  */
 #ifndef HRP_RECORD_H
 #define HRP_RECORD_H
@@ -114,6 +114,20 @@ int rec_history_open(rec_history *h, const rec_blocks *bs, const rec_opts *o, do
 /* Appends block i's present copy (bs->b[i].now) at robot time t. */
 void rec_history_append(rec_history *h, const rec_blocks *bs, int i, double t);
 void rec_history_close(rec_history *h);
+
+/* ---- the recorder as a lockstep observer (--lockstep): every tick recorded, after the others did it */
+typedef struct rec_observer {
+  shm_block *blk;
+  int32_t *lockstep, *pid, *observer;
+  uint32_t *tick, *done_count, *wake, *done;
+  int n, slot;
+} rec_observer;
+int rec_observer_join(rec_observer *ob, shm_schema *schema, int robot_id, char *err, size_t errlen);
+/* The tick to record once the other participants due at it are done; 0 when there is none within
+ * timeout_s (no lockstep, or the tick is already recorded). */
+uint32_t rec_observer_wait(rec_observer *ob, double timeout_s);
+void rec_observer_done(rec_observer *ob, uint32_t tick);
+void rec_observer_leave(rec_observer *ob);
 
 /* ---- the configuration in force: one JSON document per concern (Run/config_dump.lua) */
 typedef struct rec_doc {
