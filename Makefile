@@ -22,6 +22,9 @@ Platforms/OP/: Modules/dynamixel/
 Run/hubo_emulator_src/: Platforms/Hubo/ Modules/dcm/
 # the robot description parser: linked by the kinematics and the sim
 Modules/kinematics/ Platforms/Sim/: Modules/description/
+# the recorder and the Replay DCM: MCAP files of shm blocks
+Run/recorder/: Modules/dcm/ Modules/mcap/ Modules/shmlog/
+Platforms/Replay/: Modules/mcap/ Modules/shmlog/
 
 $(NATIVE_DIRS): $(DEPS_STAMP)
 	@$(MAKE) --no-print-directory -C $@ all
