@@ -8,6 +8,8 @@
 --   Sim.push(fx, fy, duration)       N on the torso, field frame, for duration s of robot time
 --   Sim.press_button(i [, duration]) button i (1 or 2) held for duration s (default 0.1)
 --   Sim.score()  --> goals into the goal at +x, goals into the goal at -x
+--   Sim.use_robot(id)                another robot's sim DCM from now on (hardware in the loop: the
+--                                    simulated robot behind a bus emulator has its own id)
 --
 -- Field frame: origin at the centre spot, x towards the goal at +x, y left, z up; metres, radians.
 -- A request returns once the sim DCM has applied it (in lockstep mode: on the current tick, before
@@ -22,13 +24,21 @@ local REQUEST = { reset = 1, teleport_robot = 2, teleport_ball = 3, push = 4, bu
 local TIMEOUT = 2.0   -- s of wall time to wait for the DCM
 
 local sim, sync, sensor
+local robot   -- nil: this process's ROBOT_ID
 local function blocks()
   if not sim then
-    sim = shm.open('sim')
-    sync = shm.open('sync')
-    sensor = shm.open('dcm.sensor')
+    local opts = { robot = robot }
+    sim = shm.open('sim', opts)
+    sync = shm.open('sync', opts)
+    sensor = shm.open('dcm.sensor', opts)
   end
   return sim
+end
+
+function M.use_robot(id)
+  if type(id) ~= 'number' or id < 0 or id % 1 ~= 0 then error('Sim.use_robot: a robot id, got ' .. tostring(id), 2) end
+  robot = id
+  sim, sync, sensor = nil, nil, nil
 end
 
 local function finite(x) return type(x) == 'number' and x == x and x ~= math.huge and x ~= -math.huge end
@@ -46,7 +56,7 @@ local function request(code, a, b, c, d)
   local s = blocks()
   local pid = sensor.dcm_pid[0]
   if pid == 0 or C.shm_pid_alive(pid) == 0 then
-    return nil, 'no sim DCM is running for robot ' .. shm.robot_id() .. ' (start ./run_dcm)'
+    return nil, 'no sim DCM is running for robot ' .. (robot or shm.robot_id()) .. ' (start ./run_dcm)'
   end
   local seq
   s:write(function(x)
