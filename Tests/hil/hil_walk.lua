@@ -28,6 +28,7 @@ end
 local Sim = require('Sim')
 Sim.use_robot(sim_id)
 local sim_sensor = shm.open('dcm.sensor', { robot = sim_id })
+local sim_stats = shm.open('dcm.stats', { robot = sim_id })
 local actuator = shm.open('dcm.actuator')
 local truth = Sim.truth
 
@@ -64,7 +65,7 @@ if not standing then
 end
 local a = truth()
 local fell = false
-local sum2, nsamp, emax = 0, 0, 0
+local sum2, nsamp, emax, rtf_min = 0, 0, 0, math.huge
 local t0 = Body.get_time()
 while Body.get_time() - t0 < seconds do
   wait(0.05)
@@ -77,6 +78,8 @@ while Body.get_time() - t0 < seconds do
     nsamp = nsamp + 1
     if e > emax then emax = e end
   end
+  local rtf = sim_stats.realtime_factor[0]
+  if rtf > 0 and rtf < rtf_min then rtf_min = rtf end
   local s = truth()
   if s.fallen or Motion.state() ~= (standing and 'stance' or 'walk') then fell = true break end
 end
@@ -87,6 +90,7 @@ local speed = (c * (b.x - a.x) + s * (b.y - a.y)) / dt
 local rms = math.sqrt(sum2 / math.max(nsamp, 1))
 print(string.format('# %s %.1f s at %.2f m/s commanded: %.3f m/s measured; '
   .. 'leg tracking error RMS %.4f rad, max %.4f rad', standing and 'stood' or 'walked', dt, vx, speed, rms, emax))
+print(string.format('# the sim DCM kept %.2f x real time at least (dcm.stats.realtime_factor, 1 s windows)', rtf_min))
 print(string.format('tracking %.5f %.5f', rms, emax))
 if standing then
   local moved = math.sqrt((b.x - a.x) ^ 2 + (b.y - a.y) ^ 2)

@@ -31,17 +31,24 @@ measure() {
   grep -q '^ok .*without a fall' "$LOGDIR/$1.log" || tail -n 5 "$LOGDIR/$1.log" | sed 's/^/#   /'
   awk '/^tracking /{print $2, $3}' "$LOGDIR/$1.log" >"$T/$1.track"
 }
-# start_sim NAME: the sim DCM (real time, no camera) serving SIM_ID
+# start_sim NAME: the sim DCM (real time, no camera) serving SIM_ID; at SCHED_FIFO where allowed, as
+# the hardware DCMs and the emulators run (rt_priority, --realtime): on a loaded machine a sim that
+# falls behind the wall clock gets the bus's commands faster than its physics moves
 start_sim() {
   Run/shm --robot "$SIM_ID" remove >/dev/null 2>&1
-  PLATFORM=Sim ROBOT_ID=$SIM_ID ./run_dcm --no-camera --quiet >"$LOGDIR/sim_$1.log" 2>&1 &
+  local rt=()
+  chrt -f 20 true 2>/dev/null && rt=(chrt -f 20)
+  PLATFORM=Sim ROBOT_ID=$SIM_ID "${rt[@]}" ./run_dcm --no-camera --quiet >"$LOGDIR/sim_$1.log" 2>&1 &
   PIDS+=($!)
   for _ in $(seq 100); do [ -e /dev/shm/hrp."$SIM_ID".dcm.sensor ] && break; sleep 0.1; done
   sleep 0.5
 }
-# start_motion PLATFORM ID NAME: the motion process of robot ID
+# start_motion PLATFORM ID NAME: the motion process of robot ID, at SCHED_FIFO below the DCMs where
+# allowed (in real time on a loaded machine a motion process that misses ticks stumbles)
 start_motion() {
-  PLATFORM=$1 ROBOT_ID=$2 ./run_main --quiet --no-restart motion >"$LOGDIR/main_$3.log" 2>&1 &
+  local rt=()
+  chrt -f 10 true 2>/dev/null && rt=(chrt -f 10)
+  PLATFORM=$1 ROBOT_ID=$2 "${rt[@]}" ./run_main --quiet --no-restart motion >"$LOGDIR/main_$3.log" 2>&1 &
   PIDS+=($!)
   wait_log "$LOGDIR/main_$3.log" 'motion started'
 }
