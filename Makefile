@@ -20,6 +20,8 @@ $(filter Platforms/%,$(NATIVE_DIRS)): Modules/dcm/
 Platforms/OP/: Modules/dynamixel/
 # the Hubo emulator speaks the Hubo platform's protocol library
 Run/hubo_emulator_src/: Platforms/Hubo/ Modules/dcm/
+# the Dynamixel emulator reads the body through the OP DCM's device reader (--sim-id)
+Run/dxl_emulator_src/: Modules/dynamixel/ Modules/dcm/
 # the robot description parser: linked by the kinematics and the sim
 Modules/kinematics/ Platforms/Sim/: Modules/description/
 # the recorder and the Replay DCM: MCAP files of shm blocks

@@ -9,6 +9,8 @@
 --   Sim.press_button(i [, duration]) button i (1 or 2) held for duration s (default 0.1)
 --   Sim.score()  --> goals into the goal at +x, goals into the goal at -x
 --   Sim.of(id)   --> the same functions for robot `id` of this world (a referee: Run/referee.lua)
+--   Sim.use_robot(id)                Sim.* for robot `id` from now on (hardware in the loop: the
+--                                    simulated robot behind a bus emulator has its own id)
 --
 -- Field frame: origin at the centre spot, x towards the goal at +x, y left, z up; metres, radians.
 -- A request returns once the sim DCM has applied it (in lockstep mode: on the current tick, before
@@ -136,5 +138,9 @@ end
 
 bind(M, make(nil))
 function M.of(id) return bind({}, make(id)) end
+function M.use_robot(id)
+  if type(id) ~= 'number' or id < 0 or id % 1 ~= 0 then error('Sim.use_robot: a robot id, got ' .. tostring(id), 2) end
+  bind(M, make(id))
+end
 
 return M

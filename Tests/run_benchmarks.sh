@@ -27,3 +27,4 @@ bench standup_op3 env ROBOT=op3 Tests/motion/standup_stats.sh
 bench standup_darwin env ROBOT=darwin Tests/motion/standup_stats.sh
 bench recorder Tests/bench/recorder.sh 20
 bench darwin_score env SCORE_NEED=9 bash Tests/scenarios/darwin_score_test.sh
+bench hil_walk_op3 bash Tests/hil/dxl_sim_walk.sh

@@ -328,6 +328,7 @@ void sim_publish(void *hw, dcm *d, int r, const dcm_blk_dcm_sensor *o) {
   memcpy(o->accelerometer, x.accel, sizeof x.accel);
   memcpy(o->angle, x.angle, sizeof x.angle);
   memcpy(o->foot_force, x.foot_force, sizeof x.foot_force);
+  memcpy(o->ft, x.ft, sizeof x.ft);
   for (int k = 0; k < 2; k++) o->button[k] = w.time() < s.rob[r].button_until[k];
   *o->battery = s.params[r].battery;
 }

@@ -120,6 +120,15 @@ void params_load(const std::string &robot, Params *p) {
   p->lleg = r.has("groups.lleg") ? r.strs("groups.lleg") : std::vector<std::string>();
   p->rleg = r.has("groups.rleg") ? r.strs("groups.rleg") : std::vector<std::string>();
   p->head = r.has("groups.head") ? r.strs("groups.head") : std::vector<std::string>();
+  // 6-axis force/torque sensors: { lfoot = joint, rfoot = ..., lhand = ..., rhand = ... }, each optional
+  static const char *const ft_slots[4] = {"lfoot", "rfoot", "lhand", "rhand"};
+  for (int k = 0; k < 4; k++) {
+    const std::string key = std::string("ft.") + ft_slots[k];
+    p->ft[k] = r.has(key) ? r.str(key) : "";
+    if (r.has(key) && std::find(p->joints.begin(), p->joints.end(), p->ft[k]) == p->joints.end()) {
+      throw std::runtime_error(robot_lua + ": '" + key + "' is '" + p->ft[k] + "', not one of its joints");
+    }
+  }
   // each joint's servo: the actuator model robot.lua names for it
   p->servos.clear();
   for (const std::string &j : p->joints) {
@@ -152,7 +161,7 @@ void params_load(const std::string &robot, Params *p) {
 // ---------------------------------------------------------------- construction
 
 World::World(const Params &p, const Model &m, int nrobots, uint64_t seed)
-    : World(p, std::vector<Body>(std::max(nrobots, 0), Body{m, p.joints, p.servos}), seed) {}
+    : World(p, std::vector<Body>(std::max(nrobots, 0), Body{m, p.joints, p.servos, p.ft}), seed) {}
 
 World::World(const Params &p, std::vector<Body> bodies, uint64_t seed)
     : p_(p), bodies_(std::move(bodies)), seed_(seed), rng_(seed) {
@@ -337,6 +346,12 @@ void World::build_robot(int r, const Body &body) {
     int li = m.joint_link(jn);
     if (li < 0) throw std::runtime_error(m.file + ": no joint '" + jn + "' (listed in the robot config)");
     rb.jlink.push_back(li);
+  }
+  for (int k = 0; k < 4; k++) {
+    rb.ft_link[k] = body.ft[k].empty() ? -1 : m.joint_link(body.ft[k]);
+    if (!body.ft[k].empty() && rb.ft_link[k] < 0) {
+      throw std::runtime_error(m.file + ": no joint '" + body.ft[k] + "' (robot config's ft)");
+    }
   }
   const int nj = (int)body.joints.size();
   rb.cmd.assign(nj, 0);
@@ -694,6 +709,7 @@ void World::sense(int r, Sensors *s) {
   s->angle[2] = std::atan2(R(1, 0), R(0, 0));
   s->foot_force[0] = rb.foot_acc[0];
   s->foot_force[1] = rb.foot_acc[1];
+  sense_ft(rb, s->ft);
 }
 
 void World::link_pose(int r, int link, Vec3 *pos, Mat3 *rot) const {
@@ -828,6 +844,7 @@ void load_bodies(const std::vector<std::string> &robots, std::vector<Params> *pa
     check_joints(p, b.model);
     b.joints = p.joints;
     b.servos = p.servos;
+    b.ft = p.ft;
     // one world steps every robot with one control period
     if (r > 0 && std::fabs(p.period - (*params)[0].period) > 1e-12) {
       throw std::runtime_error("robot '" + robots[r] + "' has a control period of " + std::to_string(p.period) +

@@ -55,6 +55,9 @@ struct Params {
   // robot.lua's groups lleg, rleg, head (empty when the body has none): the sim's stance and tests
   std::vector<std::string> lleg, rleg, head;
   std::vector<Servo> servos;          // per shm joint: its actuator model (robot.lua `actuator`)
+  // robot.lua's optional `ft`: per slot of dcm.sensor.ft (left foot, right foot, left hand, right
+  // hand) the joint whose child link carries a 6-axis sensor, "" for none
+  std::vector<std::string> ft = std::vector<std::string>(4);
   std::string urdf;                   // path of the robot file
 };
 // Reads the sim, robot and camera configs of a body ("" = $ROBOT) into p; throws
@@ -65,6 +68,10 @@ void params_load(const std::string &robot, Params *p);
 struct Sensors {
   std::vector<double> position, velocity, load;   // per shm joint
   double gyro[3], accel[3], angle[3], foot_force[2];
+  // 6-axis sensors (slots as Params::ft): fx fy fz (N) mx my mz (N m) each, 0 where the body has
+  // none. The wrench the sensor's link (and what it touches) exerts on the link above it, at the
+  // joint's anchor, in the sensor link's frame: standing, a foot's fz carries the weight above it.
+  double ft[24];
 };
 
 // Field-frame truth of one robot's torso (body link frame) and the ball.
@@ -97,6 +104,7 @@ struct Body {
   Model model;
   std::vector<std::string> joints;
   std::vector<Servo> servos;   // per shm joint
+  std::vector<std::string> ft = std::vector<std::string>(4);   // as Params::ft
 };
 
 class World {
@@ -167,6 +175,7 @@ class World {
     Vec3 push_force = Vec3::Zero();
     double push_left = 0;
     double accel[3] = {0, 0, 9.81};
+    int ft_link[4] = {-1, -1, -1, -1};     // per ft slot: the sensor's (child) link, -1 none
   };
 
   void build_env();
@@ -174,6 +183,7 @@ class World {
   void servo_update(Robot &rb);
   void physics_step();
   void set_hinge_feedback(bool on);
+  void sense_ft(const Robot &rb, double *ft) const;   // world_ft.cpp
   static void near_cb(void *data, dGeomID o1, dGeomID o2);
   void collide(dGeomID o1, dGeomID o2);
   void check_goal();

@@ -3,7 +3,7 @@
  *
  *   dxl_emulator [--link PATH] [--protocol 1|2] [--ids A-B] [--baud N] [--timing]
  *                [--drop P] [--corrupt P] [--delay S] [--dead ID]... [--tau S] [--seed N]
- *                [--stdin] [--realtime] [--quiet]
+ *                [--stdin] [--realtime] [--quiet] [--sim-id N]
  *
  * --protocol 1 (default): a DARwIn-OP chain: MX-28 servos (ids 1-20) and the CM-730 (id 200).
  * --protocol 2: an OP3 chain: XM430-W350 servos (ids 1-20) and the OpenCR (id 200).
@@ -14,9 +14,14 @@
  * --realtime asks for SCHED_FIFO so answers leave on time on a loaded machine.
  * --stdin reads commands, one per line:  button MASK | gyro X Y Z (rad/s) | accel X Y Z (m/s^2)
  *   | dead ID | alive ID | stats | quit.
+ * --sim-id N: hardware in the loop. The devices are the body's ($ROBOT's robot.lua `devices`, bus 1)
+ *   and the physics world moves them: goals, torque enables and hardness registers go to the sim
+ *   DCM's robot N (dcm.actuator), present positions, speeds, loads, IMU and buttons come from its
+ *   dcm.sensor (dxl_sim.h); --protocol, --ids, --tau and the stdin IMU commands do not apply.
  * Prints "dxl_emulator: ready <pty>" on stderr when the port can be opened.
  */
 #include "dynamixel/dynamixel.h"
+#include "dxl_sim.h"
 
 #include <errno.h>
 #include <fcntl.h>
@@ -44,6 +49,7 @@ typedef struct device {
   double pos;              /* counts */
   double vel;              /* counts/s */
   int dead;
+  int servo;               /* --sim-id: index in the body's bus (dxl_sim), else -1 */
 } device;
 
 static device dev[MAXDEV];
@@ -59,6 +65,8 @@ static double last_update;
 static double gyro[3], accel[3] = { 0, 0, 9.81 };
 static int buttons;
 static unsigned long n_rx, n_tx, n_dropped, n_corrupted, n_bad;
+static int sim_mode;
+static dxl_sim sim;
 
 /* ---------------------------------------------------------------- control tables */
 
@@ -87,6 +95,7 @@ static void add_device(int kind, uint8_t id) {
   memset(d, 0, sizeof *d);
   d->kind = kind;
   d->id = id;
+  d->servo = -1;
   switch (kind) {
   case MX28:
     put16(d, 0, 29); d->t[2] = 30; d->t[3] = id; d->t[4] = 1; d->t[5] = 0;   /* return delay 0 */
@@ -149,6 +158,56 @@ static void update_board(device *d) {
   }
 }
 
+/* Present position, speed, load (register units: MX 0..1023 + sign bit, XM signed current) and the
+ * moving flag of a servo from d->pos and d->vel. */
+static void put_present(device *d, double goal, double load) {
+  if (d->kind == MX28) {
+    put16(d, 36, clampi(d->pos, 0, 4095));
+    double rpm = d->vel / 4096.0 * 60.0;
+    int sp = clampi(fabs(rpm) / 0.114, 0, 1023) | (rpm < 0 ? 1024 : 0);
+    put16(d, 38, sp);
+    put16(d, 40, clampi(fabs(load), 0, dxl_get16(d->t + 34)) | (load < 0 ? 1024 : 0));
+    d->t[46] = fabs(goal - d->pos) > 1.0;
+  } else {
+    put32(d, 132, (long)lround(d->pos));
+    put32(d, 128, (long)lround(d->vel / 4096.0 * 60.0 / 0.229));
+    put16(d, 126, (uint16_t)(int16_t)clampi(load, -1193, 1193));
+    d->t[122] = fabs(goal - d->pos) > 1.0;
+  }
+}
+
+static double goal_of(const device *d) {
+  return d->kind == MX28 ? dxl_get16(d->t + 30) : (double)(int32_t)dxl_get32(d->t + 116);
+}
+
+/* --sim-id: the commands to the simulated robot (when `send`), its state into the registers. */
+static void update_sim(int send) {
+  if (send) {
+    for (int i = 0; i < ndev; i++) {
+      device *d = &dev[i];
+      if (d->servo < 0) continue;
+      int mx = d->kind == MX28;
+      /* hardness: the registers dcm_op writes for it (MX torque limit, XM position P gain) */
+      dxl_sim_command(&sim, d->servo, goal_of(d), mx ? d->t[24] : d->t[64], dxl_get16(d->t + (mx ? 34 : 84)));
+    }
+    dxl_sim_flush(&sim);
+  }
+  dxl_sim_state st;
+  dxl_sim_read(&sim, &st);
+  for (int i = 0; i < ndev; i++) {
+    device *d = &dev[i];
+    if (d->servo >= 0) {
+      d->pos = st.count[d->servo];
+      d->vel = st.count_speed[d->servo];
+      put_present(d, goal_of(d), st.load[d->servo] * (d->kind == MX28 ? 1023 : 1193));
+    }
+  }
+  memcpy(gyro, st.gyro, sizeof gyro);
+  memcpy(accel, st.accel, sizeof accel);
+  buttons = st.buttons;
+  for (int i = 0; i < ndev; i++) if (dev[i].kind == CM730 || dev[i].kind == OPENCR) update_board(&dev[i]);
+}
+
 /* First-order motion of every servo towards its goal since the last update. */
 static void update_motion(double now) {
   double dt = now - last_update;
@@ -160,7 +219,7 @@ static void update_motion(double now) {
     if (d->kind == MX28 || d->kind == XM430) {
       int mx = d->kind == MX28;
       int torque = mx ? d->t[24] : d->t[64];
-      double goal = mx ? dxl_get16(d->t + 30) : (double)(int32_t)dxl_get32(d->t + 116);
+      double goal = goal_of(d);
       /* no-load speed: MX-28 55 rpm, XM430-W350 46 rpm; moving speed / profile velocity cap */
       double vmax = (mx ? 55.0 : 46.0) / 60.0 * 4096.0;
       if (mx && dxl_get16(d->t + 32)) vmax = fmin(vmax, dxl_get16(d->t + 32) * 0.114 / 60 * 4096);
@@ -175,20 +234,7 @@ static void update_motion(double now) {
       }
       d->vel = (d->pos - before) / dt;
       double err = torque ? goal - d->pos : 0;
-      if (mx) {
-        put16(d, 36, clampi(d->pos, 0, 4095));
-        double rpm = d->vel / 4096.0 * 60.0;
-        int sp = clampi(fabs(rpm) / 0.114, 0, 1023) | (rpm < 0 ? 1024 : 0);
-        put16(d, 38, sp);
-        int ld = clampi(fabs(err) * 4, 0, dxl_get16(d->t + 34)) | (err < 0 ? 1024 : 0);
-        put16(d, 40, ld);
-        d->t[46] = fabs(goal - d->pos) > 1.0;
-      } else {
-        put32(d, 132, (long)lround(d->pos));
-        put32(d, 128, (long)lround(d->vel / 4096.0 * 60.0 / 0.229));
-        put16(d, 126, (uint16_t)(int16_t)clampi(err * 2, -1193, 1193));
-        d->t[122] = fabs(goal - d->pos) > 1.0;
-      }
+      put_present(d, goal, err * (mx ? 4 : 2));
     } else {
       update_board(d);
     }
@@ -274,7 +320,8 @@ static void do_write(device *d, int addr, const uint8_t *data, int len, int repl
 
 static void handle(const dxl_packet *p) {
   n_rx++;
-  update_motion(now_s());
+  if (sim_mode) update_sim(0);
+  else update_motion(now_s());
   const uint8_t *a = p->params;
   int n = p->nparams;
   int bcast = p->id == DXL_BROADCAST_ID;
@@ -362,13 +409,14 @@ static void on_signal(int s) { (void)s; stop = 1; }
 
 static void usage(void) {
   fprintf(stderr, "usage: dxl_emulator [--link PATH] [--protocol 1|2] [--ids A-B] [--baud N] [--timing]\n"
-                  "       [--drop P] [--corrupt P] [--delay S] [--dead ID]... [--tau S] [--seed N] [--stdin] [--realtime] [--quiet]\n");
+                  "       [--drop P] [--corrupt P] [--delay S] [--dead ID]... [--tau S] [--seed N] [--stdin] [--realtime] [--quiet]\n"
+                  "       [--sim-id N]  (the sim DCM's robot N behind the body's devices: $ROBOT)\n");
 }
 
 int main(int argc, char **argv) {
   const char *link_path = NULL;
   int id_lo = 1, id_hi = 20, use_stdin = 0;
-  int dead[64], ndead = 0, realtime = 0;
+  int dead[64], ndead = 0, realtime = 0, sim_id = 0;
   unsigned seed = 1;
   for (int i = 1; i < argc; i++) {
     const char *o = argv[i];
@@ -387,6 +435,7 @@ int main(int argc, char **argv) {
     else if (!strcmp(o, "--stdin")) use_stdin = 1;
     else if (!strcmp(o, "--quiet")) quiet = 1;
     else if (!strcmp(o, "--realtime")) realtime = 1;
+    else if (!strcmp(o, "--sim-id") && v) { sim_id = atoi(v); sim_mode = 1; i++; }
     else { usage(); return 2; }
   }
   if ((protocol != 1 && protocol != 2) || baud <= 0 || id_lo < 0 || id_hi > 252 || id_lo > id_hi ||
@@ -397,8 +446,22 @@ int main(int argc, char **argv) {
     if (sched_setscheduler(0, SCHED_FIFO, &sp) != 0 && !quiet)
       fprintf(stderr, "dxl_emulator: no real-time priority (%s): timing may slip\n", strerror(errno));
   }
-  for (int id = id_lo; id <= id_hi && ndev < MAXDEV - 1; id++) add_device(protocol == 1 ? MX28 : XM430, (uint8_t)id);
-  add_device(protocol == 1 ? CM730 : OPENCR, 200);
+  if (sim_mode) {
+    char err[512];
+    if (sim_id <= 0 || dxl_sim_open(&sim, sim_id, err, sizeof err) < 0) {
+      fprintf(stderr, "dxl_emulator: --sim-id %d: %s\n", sim_id, sim_id <= 0 ? "needs a robot id > 0" : err);
+      return 1;
+    }
+    protocol = sim.bus->protocol;
+    for (int i = 0; i < sim.bus->nservo && ndev < MAXDEV - 1; i++) {
+      add_device(sim.bus->servo[i].model->family == OP_MX ? MX28 : XM430, sim.bus->servo[i].id);
+      dev[ndev - 1].servo = i;
+    }
+    if (sim.bus->has_board) add_device(sim.bus->board.model->kind == OP_CM730 ? CM730 : OPENCR, sim.bus->board.id);
+  } else {
+    for (int id = id_lo; id <= id_hi && ndev < MAXDEV - 1; id++) add_device(protocol == 1 ? MX28 : XM430, (uint8_t)id);
+    add_device(protocol == 1 ? CM730 : OPENCR, 200);
+  }
   for (int k = 0; k < ndead; k++) { device *d = find((uint8_t)dead[k]); if (d) d->dead = 1; }
 
   int m = posix_openpt(O_RDWR | O_NOCTTY);
@@ -426,7 +489,8 @@ int main(int argc, char **argv) {
           link_path ? " -> " : "", link_path ? link_path : "", protocol, ndev,
           timing ? "timing model on" : "no timing model");
   last_update = now_s();
-  update_motion(last_update);
+  if (sim_mode) update_sim(0);
+  else update_motion(last_update);
 
   static uint8_t in[8192];
   size_t inlen = 0;
@@ -445,7 +509,11 @@ int main(int argc, char **argv) {
       else if (c == '\n') { line[linelen] = 0; command(line); linelen = 0; }
       else if (linelen + 1 < sizeof line) line[linelen++] = c;
     }
-    if (!(pf[0].revents & POLLIN)) { update_motion(now_s()); continue; }
+    if (!(pf[0].revents & POLLIN)) {
+      if (sim_mode) update_sim(0);   /* no commands: the sim DCM's watchdog sees a silent bus */
+      else update_motion(now_s());
+      continue;
+    }
     ssize_t k = read(m, in + inlen, sizeof in - inlen);
     if (k <= 0) continue;
     double arrived = now_s();
@@ -462,6 +530,7 @@ int main(int argc, char **argv) {
           bus_free = (bus_free > arrived ? bus_free : arrived) + (double)used * byte_time();
         }
         handle(&pkt);
+        if (sim_mode) update_sim(1);
         /* each answer leaves when the emulated bus has carried it (all at once without
          * the timing model), after the extra --delay */
         size_t off = 0;
@@ -487,5 +556,6 @@ int main(int argc, char **argv) {
                       n_rx, n_tx, n_dropped, n_corrupted, n_bad);
   close(s);
   close(m);
+  if (sim_mode) dxl_sim_close(&sim);
   return 0;
 }

@@ -2,7 +2,7 @@
  *
  *   hubo_emulator [--robot NAME] [--iface BUS=NAME]... [--unhomed] [--tau S] [--no-timing]
  *                 [--drop P] [--corrupt P] [--delay S] [--dead BOARD]... [--error BOARD]...
- *                 [--seed N] [--stdin] [--realtime] [--quiet]
+ *                 [--seed N] [--stdin] [--realtime] [--quiet] [--sim-id N]
  *
  * The boards are the body's can.lua (ROBOT, default hubo2plus) on its interfaces (can0, can1; a
  * real kernel's vcan works, and on this machine the fake of Platforms/Hubo/tests/fake_socketcan.c
@@ -25,9 +25,12 @@
  * stats prints per board "board NAME bus B number N ref R0 R1 enc E0 E1 fet F ctrl C home H dead D",
  * "sensor NAME ..." for sensor and power boards, "silent NAME ..." for boards it does not emulate (the
  * Hubo2+ neck: formats unknown), per bus "bus B frames_in N frames_out M bits BITS load_pct L", totals, then "end".
+ * --sim-id N: hardware in the loop: the sim DCM's robot N moves the joints and gives the F/T and
+ *   IMU boards' readings instead of the first-order model (emu_sim.h); the boards start homed.
  * Prints "hubo_emulator: ready" on stderr when its sockets are bound.
  */
 #include "emu.h"
+#include "emu_sim.h"
 
 #include <errno.h>
 #include <linux/can.h>
@@ -299,12 +302,13 @@ static void read_stdin(void) {
 static void usage(void) {
   fprintf(stderr, "usage: hubo_emulator [--robot NAME] [--iface BUS=NAME]... [--unhomed] [--tau S] [--no-timing]\n"
                   "                     [--drop P] [--corrupt P] [--delay S] [--dead BOARD]... [--error BOARD]...\n"
-                  "                     [--seed N] [--stdin] [--realtime] [--quiet]\n");
+                  "                     [--seed N] [--stdin] [--realtime] [--quiet] [--sim-id N]\n");
 }
 
 int main(int argc, char **argv) {
   const char *dead[HT_BOARD_MAX], *errb[HT_BOARD_MAX], *iface[HT_BUS_MAX] = { 0 };
-  int ndead = 0, nerr = 0, homed = 1, realtime = 0;
+  int ndead = 0, nerr = 0, homed = 1, realtime = 0, sim_id = 0;
+  static emu_sim sim;
   double tau = 0.02;
   E.timing = 1;
   srand(1);
@@ -329,6 +333,7 @@ int main(int argc, char **argv) {
     else if (!strcmp(a, "--dead") && ndead < HT_BOARD_MAX) dead[ndead++] = v;
     else if (!strcmp(a, "--error") && nerr < HT_BOARD_MAX) errb[nerr++] = v;
     else if (!strcmp(a, "--seed")) srand((unsigned)atoi(v));
+    else if (!strcmp(a, "--sim-id")) sim_id = atoi(v);
     else { usage(); return 2; }
     i++;
   }
@@ -345,6 +350,15 @@ int main(int argc, char **argv) {
     return 2;
   }
   emu_init(&E.w, &E.table, homed, tau);
+  if (sim_id) {
+    /* the physics has no homing: the boards start homed at the simulated pose */
+    if (!homed || sim_id < 0) { usage(); return 2; }
+    if (emu_sim_open(&sim, sim_id, err, sizeof err) < 0) {
+      fprintf(stderr, "hubo_emulator: --sim-id %d: %s\n", sim_id, err);
+      return 1;
+    }
+    emu_sim_step(&sim, &E.w);
+  }
   for (int k = 0; k < ndead + nerr; k++) {
     const char *name = k < ndead ? dead[k] : errb[k - ndead];
     emu_board *b = emu_find(&E.w, name);
@@ -385,7 +399,8 @@ int main(int argc, char **argv) {
     struct timespec ts = { 0, (long)(wait * 1e9) };
     ppoll(pf, (nfds_t)nb + 1, &ts, NULL);
     t = now();
-    emu_step(&E.w, t, t - last);
+    if (sim_id) emu_sim_step(&sim, &E.w);
+    else emu_step(&E.w, t, t - last);
     last = t;
     for (int b = 0; b < nb; b++)
       if (pf[b].revents & POLLIN) receive(b, t);
@@ -394,5 +409,6 @@ int main(int argc, char **argv) {
   }
   if (!E.quiet) stats();
   for (int b = 0; b < E.table.nbus; b++) close(E.fd[b]);
+  if (sim_id) emu_sim_close(&sim);
   return 0;
 }

@@ -45,6 +45,9 @@ return {
   -- (darwin_reference.txt, JOINTS), the only complete public set, taken as they are: each lies
   -- within the servo's 0..4095 counts and the mechanical range as that model has it. Left and
   -- right are not exact mirrors in the source (hip yaw and roll); kept.
+  -- 6-axis force/torque at the ankles (dcm.sensor.ft), the sim's instruments: the real DARwIn-OP has
+  -- none, so on PLATFORM=OP these slots read 0
+  ft = { lfoot = 'l_ank_roll', rfoot = 'r_ank_roll' },
   limits = {
     head_pan = { -1.81, 1.81 }, head_tilt = { -0.36, 0.94 },
     l_sho_pitch = { -3.14, 2.85 }, l_sho_roll = { -2.25, 0.77 }, l_el = { -1.18, 1.63 },

@@ -50,6 +50,9 @@ return {
   -- left and right hip roll and wrist pitch differ in the source: kept), except the knees' lower
   -- end: openHubo's -0.0698, not HuboCan's 0 (a bound at the straight leg itself, which would flag
   -- every straight-leg pose as clamped; the walk keeps the knees bent anyway)
+  -- 6-axis force/torque sensors (dcm.sensor.ft): between ankle and foot, wrist and hand (the
+  -- FFT/HFT boards of can.lua); named by the joint whose child link carries the sensor
+  ft = { lfoot = 'LAR', rfoot = 'RAR', lhand = 'LWP', rhand = 'RWP' },
   limits = {
     WST = { -3.14, 3.14 }, NK1 = { -0.5236, 0.5236 }, NK2 = { -0.5236, 0.5236 },
     RHY = { -1.5708, 1.5708 }, RHR = { -0.4887, 0.4887 }, RHP = { -1.57, 1.57 },

@@ -31,6 +31,9 @@ return {
     rarm = { 'r_sho_pitch', 'r_sho_roll', 'r_el' },
   },
   -- joint limits, rad { min, max }: kept inside the mechanical ranges
+  -- 6-axis force/torque at the ankles (dcm.sensor.ft), the sim's instruments: the real OP3 has none,
+  -- so on PLATFORM=OP these slots read 0
+  ft = { lfoot = 'l_ank_roll', rfoot = 'r_ank_roll' },
   limits = {
     head_pan = { -1.57, 1.57 }, head_tilt = { -1.2, 0.6 },
     l_sho_pitch = { -3.14, 3.14 }, l_sho_roll = { -1.6, 1.6 }, l_el = { -2.6, 2.6 },

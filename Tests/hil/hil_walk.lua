@@ -1,0 +1,103 @@
+-- Walks the motion process of this robot (ROBOT_ID, any platform) forward (or keeps it standing:
+-- VX = stand) and measures the
+-- simulated robot behind it, robot SIM_ID of a sim DCM (the same id when the sim DCM serves this
+-- robot directly; another when a bus emulator stands between them): no fall (from the sim's truth),
+-- the distance, and the leg joints' tracking error, this robot's command (dcm.actuator) against the
+-- simulated joint position (SIM_ID's dcm.sensor), sampled every 0.05 s of walking.
+-- Once the robot stands (stance), the sim is reset: the simulated robot upright at its start, joints
+-- at their commands, whatever the start-up did to it (a DCM's watchdog holding it soft).
+--   ./run_repl Tests/hil/hil_walk.lua [SECONDS [VX|stand]]   (env SIM_ID)
+-- Prints TAP lines and "# " figures, and a line "tracking RMS MAX" for the caller.
+-- luacheck: globals Motion Walk wait Body
+local shm = require('shm')
+local seconds = tonumber(arg[1]) or 30
+local standing = arg[2] == 'stand'
+local vx = standing and 0 or tonumber(arg[2]) or 0.2
+local sim_id = tonumber(os.getenv('SIM_ID') or '')
+local count = 0
+local function tap(ok, msg)
+  count = count + 1
+  print(string.format('%s %d - %s', ok and 'ok' or 'not ok', count, msg))
+  io.stdout:flush()
+  return ok
+end
+if not sim_id then
+  tap(false, 'hil_walk: SIM_ID (the sim DCM robot id) is not set')
+  os.exit(1)
+end
+local Sim = require('Sim')
+Sim.use_robot(sim_id)
+local sim_sensor = shm.open('dcm.sensor', { robot = sim_id })
+local sim_stats = shm.open('dcm.stats', { robot = sim_id })
+local actuator = shm.open('dcm.actuator')
+local truth = Sim.truth
+
+-- the leg joints (robot.lua's groups lleg, rleg), shm indices
+local legs = {}
+local groups = require('Config').load('robot').groups
+for _, g in ipairs({ 'lleg', 'rleg' }) do
+  for _, name in ipairs(groups[g]) do legs[#legs + 1] = Body.index(name) - 1 end
+end
+
+local function wait_until(pred, timeout)
+  local t0 = Body.get_time()
+  while Body.get_time() - t0 < timeout do
+    if pred() then return true end
+    wait(0.05)
+  end
+  return pred()
+end
+
+-- the motion process runs and stands
+local motion = shm.open('motion')
+tap(wait_until(function() return motion.tick[0] ~= 0 end, 30), 'the motion process runs')
+Walk.set_velocity(0, 0, 0)
+Motion.request('stand')
+tap(wait_until(function() return Motion.state() == 'stance' end, 15), 'stands (stance)')
+wait(1.5)
+tap(Sim.reset(), 'the simulated robot is reset upright at its commands')
+wait(1.0)
+
+if not standing then
+  Motion.request('walk')
+  Walk.set_velocity(vx, 0, 0)
+  wait(2)
+end
+local a = truth()
+local fell = false
+local sum2, nsamp, emax, rtf_min = 0, 0, 0, math.huge
+local t0 = Body.get_time()
+while Body.get_time() - t0 < seconds do
+  wait(0.05)
+  local cmd, pos = {}, {}
+  for k, j in ipairs(legs) do cmd[k] = actuator.command[j] end
+  sim_sensor:read(function(x) for k, j in ipairs(legs) do pos[k] = x.position[j] end end)
+  for k = 1, #legs do
+    local e = math.abs(cmd[k] - pos[k])
+    sum2 = sum2 + e * e
+    nsamp = nsamp + 1
+    if e > emax then emax = e end
+  end
+  local rtf = sim_stats.realtime_factor[0]
+  if rtf > 0 and rtf < rtf_min then rtf_min = rtf end
+  local s = truth()
+  if s.fallen or Motion.state() ~= (standing and 'stance' or 'walk') then fell = true break end
+end
+local b = truth()
+local dt = Body.get_time() - t0
+local c, s = math.cos(a.yaw), math.sin(a.yaw)
+local speed = (c * (b.x - a.x) + s * (b.y - a.y)) / dt
+local rms = math.sqrt(sum2 / math.max(nsamp, 1))
+print(string.format('# %s %.1f s at %.2f m/s commanded: %.3f m/s measured; '
+  .. 'leg tracking error RMS %.4f rad, max %.4f rad', standing and 'stood' or 'walked', dt, vx, speed, rms, emax))
+print(string.format('# the sim DCM kept %.2f x real time at least (dcm.stats.realtime_factor, 1 s windows)', rtf_min))
+print(string.format('tracking %.5f %.5f', rms, emax))
+if standing then
+  local moved = math.sqrt((b.x - a.x) ^ 2 + (b.y - a.y) ^ 2)
+  tap(not fell, string.format('stands %d s without a fall (moved %.4f m)', seconds, moved))
+else
+  tap(not fell, string.format('walks %d s without a fall', seconds))
+  tap(speed > 0.5 * vx, string.format('moves forward (%.3f m/s)', speed))
+end
+Walk.set_velocity(0, 0, 0)
+Motion.request('stand')
