@@ -11,6 +11,18 @@ OBJDIR    = $(BUILD)/obj/$(notdir $(CURDIR))
 
 CC       := gcc
 CXX      := g++
+# Sanitizer builds (make SANITIZE=address,undefined or SANITIZE=thread; the top Makefile puts them in
+# build-<sanitizers>/): the flags go into CC/CXX themselves, so every compile *and* link line,
+# shared libraries included, is instrumented. -O1 keeps stack traces readable; UBSan stops at the
+# first finding so a test fails instead of printing and going on.
+ifneq ($(SANITIZE),)
+SAN_FLAGS := -fsanitize=$(SANITIZE) -fno-omit-frame-pointer -O1
+ifneq ($(findstring undefined,$(SANITIZE)),)
+SAN_FLAGS += -fno-sanitize-recover=undefined
+endif
+CC       := gcc $(SAN_FLAGS)
+CXX      := g++ $(SAN_FLAGS)
+endif
 WARN     := -Wall -Wextra -Werror -Wshadow -Wno-unused-parameter
 CFLAGS   += -std=c11 -O2 -g -fPIC $(WARN) -D_GNU_SOURCE -I$(TOP)/Modules -I$(GENDIR) -DHRP_ROOT_DEFAULT='"$(TOP)"'
 CXXFLAGS += -std=c++17 -O2 -g -fPIC $(WARN) -D_GNU_SOURCE -I$(TOP)/Modules -I$(GENDIR) -DHRP_ROOT_DEFAULT='"$(TOP)"'
