@@ -13,10 +13,10 @@ CC       := gcc
 CXX      := g++
 # Sanitizer builds (make SANITIZE=address,undefined or SANITIZE=thread; the top Makefile puts them in
 # build-<sanitizers>/): the flags go into CC/CXX themselves, so every compile *and* link line,
-# shared libraries included, is instrumented. -O1 keeps stack traces readable; UBSan stops at the
-# first finding so a test fails instead of printing and going on.
+# shared libraries included, is instrumented (at the parts' own -O2/-O3); frame pointers keep the
+# reports' stack traces whole; UBSan stops at the first finding so a test fails instead of going on.
 ifneq ($(SANITIZE),)
-SAN_FLAGS := -fsanitize=$(SANITIZE) -fno-omit-frame-pointer -O1
+SAN_FLAGS := -fsanitize=$(SANITIZE) -fno-omit-frame-pointer
 ifneq ($(findstring undefined,$(SANITIZE)),)
 SAN_FLAGS += -fno-sanitize-recover=undefined
 endif
