@@ -187,17 +187,22 @@ static void test_bad_devices(void) {
   check(cam_open(&cfg, &cam, err, sizeof err) == CAM_EARG, "odd width refused at open");
 }
 
-/* The re-execution's LD_PRELOAD: the shim, which must see the driver's system calls first. Under
- * AddressSanitizer the shim then comes before the ASan runtime, which ASan refuses unless told
- * (found by make sanitize); the shim passes every call on to it. */
+/* The re-execution's LD_PRELOAD: the shim, which must see the driver's system calls. In a sanitizer
+ * build the sanitizer's runtime must come first in the list (found by make sanitize): it is put
+ * before the (uninstrumented) shim and passes the calls it intercepts on to it. */
 static void set_preload(void) {
-  setenv("LD_PRELOAD", FAKE_UVC_LIB, 1);
-#ifdef __SANITIZE_ADDRESS__
-  char opts[1024];
-  const char *have = getenv("ASAN_OPTIONS");
-  snprintf(opts, sizeof opts, "%s%sverify_asan_link_order=0", have ? have : "", have && *have ? ":" : "");
-  setenv("ASAN_OPTIONS", opts, 1);
-#endif
+  char list[2048];
+  snprintf(list, sizeof list, "%s", FAKE_UVC_LIB);
+  const char *inits[] = {"__asan_init", "__tsan_init"};
+  for (int i = 0; i < 2; i++) {
+    Dl_info info;
+    void *sym = dlsym(RTLD_DEFAULT, inits[i]);
+    if (sym && dladdr(sym, &info) && info.dli_fname) {
+      snprintf(list, sizeof list, "%s:%s", info.dli_fname, FAKE_UVC_LIB);
+      break;
+    }
+  }
+  setenv("LD_PRELOAD", list, 1);
 }
 
 int main(int argc, char **argv) {
