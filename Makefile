@@ -27,6 +27,8 @@ all: $(DEPS_STAMP) $(NATIVE_DIRS)
 $(filter-out Modules/shm/,$(NATIVE_DIRS)): Modules/shm/
 $(filter Platforms/%,$(NATIVE_DIRS)): Modules/dcm/
 Platforms/OP/: Modules/dynamixel/
+# the Hubo emulator speaks the Hubo platform's protocol library
+Run/hubo_emulator_src/: Platforms/Hubo/ Modules/dcm/
 # the robot description parser: linked by the kinematics and the sim
 Modules/kinematics/ Platforms/Sim/: Modules/description/
 

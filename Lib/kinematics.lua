@@ -7,7 +7,9 @@
 --              rarm = ..., head = { tip = 'camera_link' } }
 --
 -- Chain names: lleg/rleg (6 joints: hip yaw, roll, pitch, knee, ankle pitch, ankle roll; analytic
--- IK), larm/rarm (any number of joints; damped least squares IK), head (pan, tilt). `joints` lists
+-- IK; a shank off the hip centre along the pitch axes is allowed), larm/rarm (any number of joints;
+-- damped least squares IK), head (pan, tilt; or two horizontal tilt axes, such as the Hubo's neck,
+-- whose look-at is solved numerically within their limits). `joints` lists
 -- the chain's joints from its base to its tip (default: the group of the same name); `tip` is a
 -- frame (or link) of the URDF on the chain's last link. Every chain is optional; a function of a
 -- chain the body lacks raises an error.

@@ -18,7 +18,10 @@ What comes from where:
   damping/friction -> <dynamics>), chains (the torso frame's origin is the midpoint of the two
   legs' first joint anchors), frames (massless fixed frames: camera_link, l_sole, l_hand ...,
   each { link = parent link, xyz = zero-pose origin, rpy = zero-pose orientation }, in the reference
-  frame; camera_link without xyz takes the reference's CAMERA point).
+  frame; camera_link without xyz takes the reference's CAMERA point), collision_skip (optional:
+  COLLISION kinds left out, e.g. a reference's alternative sole set), added_masses (optional: mass
+  the reference lacks, each { link, mass, com = xyz, size = xyz of a uniform box about com }, merged
+  into the link's inertial by the parallel-axis rule; robot.lua says where the mass comes from).
 
 Conventions of the generated file (what the sim and the kinematics rely on):
 - Every link frame sits at its joint's anchor and is parallel to the world frame at the zero pose
@@ -171,6 +174,48 @@ def vec3(v, what):
     return [float(x) for x in v]
 
 
+def add_mass(body, mass, com, size):
+    """Merges a uniform box (mass, centre com, world-aligned edges size) into a body's inertial."""
+    m0, c0 = body['mass'], body['com']
+    m = m0 + mass
+    c = [(m0 * c0[i] + mass * com[i]) / m for i in range(3)]
+    # tensors about the new COM: each part's own tensor plus its shift (I + m (|d|^2 E - d d^T))
+    def shifted(I, mm, p):
+        d = [p[i] - c[i] for i in range(3)]
+        dd = sum(x * x for x in d)
+        ixx, iyy, izz, ixy, ixz, iyz = I
+        return [ixx + mm * (dd - d[0] * d[0]), iyy + mm * (dd - d[1] * d[1]), izz + mm * (dd - d[2] * d[2]),
+                ixy - mm * d[0] * d[1], ixz - mm * d[0] * d[2], iyz - mm * d[1] * d[2]]
+    sx, sy, sz = size
+    box = [mass * (sy * sy + sz * sz) / 12, mass * (sx * sx + sz * sz) / 12, mass * (sx * sx + sy * sy) / 12,
+           0.0, 0.0, 0.0]
+    a, b = shifted(body['inertia'], m0, c0), shifted(box, mass, com)
+    body['mass'], body['com'], body['inertia'] = m, c, [a[i] + b[i] for i in range(6)]
+
+
+def apply_robot_data(robot, rfiles, bodies, boxes):
+    """robot.lua's collision_skip and added_masses applied to the reference's bodies and boxes."""
+    skip = robot.get('collision_skip') or []
+    if not isinstance(skip, list) or not all(isinstance(k, str) for k in skip):
+        fail('%s: collision_skip must be a list of COLLISION kinds' % rfiles)
+    for k in skip:
+        if not any(b['kind'] == k for b in boxes):
+            fail("%s: collision_skip names kind '%s', which no COLLISION line has" % (rfiles, k))
+    boxes[:] = [b for b in boxes if b['kind'] not in skip]
+    by_name = {b['name']: b for b in bodies}
+    added = robot.get('added_masses') or []
+    if not isinstance(added, list):
+        fail('%s: added_masses must be a list of { link, mass, com, size }' % rfiles)
+    for n, a in enumerate(added, 1):
+        what = '%s: added_masses[%d]' % (rfiles, n)
+        if not isinstance(a, dict) or a.get('link') not in by_name:
+            fail("%s: link '%s' is not a body of the reference" % (what, a.get('link') if isinstance(a, dict) else a))
+        if not isinstance(a.get('mass'), (int, float)) or not a['mass'] > 0:
+            fail('%s: mass must be a number > 0' % what)
+        add_mass(by_name[a['link']], float(a['mass']), vec3(a.get('com'), what + '.com'),
+                 vec3(a.get('size'), what + '.size'))
+
+
 def chain_joints(robot, name, files):
     chains = robot.get('chains') or {}
     c = chains.get(name)
@@ -199,6 +244,7 @@ def main():
     data = read_robot(root, robot_name)
     robot, models = data['robot'], data['actuators']
     rfiles, afiles = data['robot_files'], data['actuator_files']
+    apply_robot_data(robot, rfiles, bodies, boxes)
     if not isinstance(robot.get('description'), str):
         fail("%s: key 'description' (the URDF's file name) missing" % rfiles)
     out = out or os.path.join(root, 'Config', 'robots', robot_name, robot['description'])

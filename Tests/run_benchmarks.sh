@@ -18,6 +18,7 @@ bench kin_leg_ik luajit Tests/bench/kin_leg_ik.lua 100000
 bench vision_pipeline build/bin/img_bench 2
 bench motion_tick luajit Tests/bench/motion_tick.lua 50000
 bench dxl_wire Tests/bench/dxl_wire.sh 4
+bench hubo_bus Tests/bench/hubo_bus.sh 5
 bench vision_lua luajit Tests/bench/vision_lua.lua 2
 bench sim_lockstep bash Tests/bench/sim_lockstep.sh 30
 bench walk_sim Tests/bench/walk_sim.sh

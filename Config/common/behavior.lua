@@ -59,9 +59,14 @@ return {
     imu_yaw = true,             -- turn between steps from the IMU's yaw changes, not the walk's plan
   },
 
-  -- the head and body machines' timing, game and field numbers; the body's sizes and speeds (how far
-  -- it looks, where it stands to kick, how fast it goes) are in Config/robots/<ROBOT>/behavior.lua
+  -- the head and body machines' timing, game and field numbers, and the defaults of a kid-size body
+  -- (the OP3's and DARwIn-OP's common numbers): a body changes what depends on its size (how far it
+  -- looks, where it stands to kick, how fast it goes) in Config/robots/<ROBOT>/behavior.lua
   head = {
+    scan_distances = { 2.5, 0.45 }, -- m: the scan's far and near rows (ground distance looked at)
+    scan_near_first = 1.0,     -- m: a ball lost nearer than this is looked for where it was first
+    scan_swing = 0.4,          -- rad, the head's swing around a ball lost near the feet
+    goal_look_distance = 3.0,  -- m: a goal out of the head's reach is looked for this far on its side
     scan_period = 4.0,         -- s per sweep
     scan_near_time = 1.5,      -- s looking for a ball lost near the feet where it was first
     track_gain = 0.6,          -- fraction of the angle error closed per step
@@ -75,6 +80,39 @@ return {
   },
 
   body = {
+    search_turn_speed = 0.5,   -- rad/s
+    search_back_near = 0.5,    -- m: a ball lost nearer than this: step back first
+    search_back_speed = 0.08,  -- m/s
+    approach_behind = 0.30,    -- m: aim at this point behind the ball (away from the goal)
+    align_distance = 0.45,     -- m: from here on, align precisely ...
+    approach_near = 0.1,       -- m: ... once this much nearer (approach -> align)
+    align_far = 0.3,           -- m: back to approaching this much further (align -> approach)
+    kick_tolerance_x = 0.05,   -- m: the ball this near the kicking spot, ahead ...
+    kick_tolerance_y = 0.04,   -- m: ... and sideways
+    kick_side_switch = 0.05,   -- m: the ball this far on the other side: kick with the other foot
+    -- aligning: velocity from the error to the kicking spot (ahead, sideways, heading)
+    align = {
+      gain = { 0.7, 0.7, 0.8 }, -- 1/s: vx, vy per m of error, va per rad
+      sideways_per_turn = 0.15, -- m/s of side-step per rad of heading error (circling the ball)
+      vx = { -0.06, 0.12 },    -- m/s
+      max_va = 0.5,            -- rad/s
+    },
+    -- walking to a point (Player/BodyFSM/nav.lua)
+    nav = {
+      pass_along = 0.15,       -- m: the ball less far ahead along the attack line: pass beside it ...
+      pass_side = 0.45,        -- m: ... this far to the side of it ...
+      pass_behind = 0.5,       -- ... aiming at this fraction of approach_behind behind it
+      near = 0.6,              -- m: nearer, turn to the wanted heading while side-stepping
+      far_turn_gain = 1.2,     -- 1/s: va per rad of bearing, far away
+      far_side_gain = 0.3,     -- 1/s: vy per m sideways, far away
+      near_turn_gain = 1.0,    -- 1/s, near
+      near_gain = 0.8,         -- 1/s: vx, vy per m, near
+      min_vx = -0.1,           -- m/s: the fastest backwards
+    },
+    follow_turn_gain = 0.8,    -- 1/s: turning towards the ball's bearing after a kick
+    reposition_near = 1.0,     -- m: the ball's last estimate this near: search (the head sees it from here)
+    wander_arrive = 0.3,       -- m: at the wander point
+    max_vx = 0.3, max_vy = 0.1, -- m/s: the body's fastest commands (its max_va: the body's file)
     search_turn_time = 8.0,    -- s turning on the spot before wandering
     search_back_time = 2.0,    -- s stepping back from a ball lost at the feet
     relocalise_below = 0.3,    -- pose confidence under which the robot stops attacking to localize
@@ -92,6 +130,16 @@ return {
       enabled = true,
       start_angle = 0.3,         -- rad: attack direction this near to straight ahead to start
       max_angle = 0.8,           -- rad: attack direction this far off: align again
+      start_side = 0.06,         -- m: ball this near the centre line ahead of the feet to start ...
+      start_ahead = 0.1,         -- m: ... and this near the kicking spot along x
+      max_side = 0.16,           -- m: the ball this far to the side: align again
+      max_ahead = 0.6,           -- m: the ball this far ahead: approach again
+      min_ahead = 0.02,          -- m: the ball nearer (under the feet, behind): align again
+      slow_min = 0.3,            -- the least fraction of speed kept for a ball off to the side
+      side_gain = 1.0,           -- 1/s: side-step per m of the ball's sideways offset
+      side_per_turn = 0.1,       -- m/s of side-step per rad of attack direction error
+      turn_gain = 0.8,           -- 1/s
+      max_va = 0.4,              -- rad/s
     },
     attack_depth = 0.5,        -- m behind the goal line: the point aimed at
     dribble_distance = 1.2,    -- m: nearer than this to the goal line, walk the ball in

@@ -8,7 +8,7 @@
  *             Config.export(concern, { robot =, platform = }); errors name the file(s) and the key
  *   blocks    dcm.sensor, dcm.actuator, dcm.stats and sync of every robot, bound through the structs
  *             generated from Config/shm.schema at build time (dcm_blocks.h): no field lists by hand
- *   pacing    absolute deadlines, missed cycles, jitter p99 / max and the rate, into dcm.stats
+ *   pacing    absolute deadlines, missed cycles, jitter p50 / p99 / max and the rate, into dcm.stats
  *   guard     NaN / inf commands refused (counted), hardness clamped to 0..1; the watchdog: when
  *             tick_ack stops advancing or its writer dies, hold the present pose at the safe
  *             hardness until acknowledgements return
@@ -107,7 +107,7 @@ typedef struct dcm_pacer {
   double deadline;               /* s, start of the current cycle as planned */
   uint32_t cycles, missed;       /* cycles run; cycles lost to overruns (skipped, not raced) */
   double rate;                   /* Hz over the last window */
-  double jitter_p99, jitter_max; /* s, |start - deadline| over the last window */
+  double jitter_p50, jitter_p99, jitter_max; /* s, |start - deadline| over the last window */
   int closed;                    /* 1 in the cycle that closed a window */
   uint32_t window_cycles;        /* cycles of the window just closed */
   /* private */

@@ -1,4 +1,4 @@
-/* pacing: cycles at absolute deadlines, missed cycles, jitter p99 / max and rate per window. */
+/* pacing: cycles at absolute deadlines, missed cycles, jitter p50 / p99 / max and rate per window. */
 #include "dcm.h"
 
 #include <errno.h>
@@ -48,6 +48,7 @@ static void count(dcm_pacer *p, double now) {
   p->rate = now > p->win_start ? p->win_cycles / (now - p->win_start) : 0;
   if (p->njit > 0) {
     qsort(p->jit, (size_t)p->njit, sizeof p->jit[0], cmp_double);
+    p->jitter_p50 = p->jit[(int)(0.50 * (p->njit - 1))];
     p->jitter_p99 = p->jit[(int)(0.99 * (p->njit - 1))];
     p->jitter_max = p->jit[p->njit - 1];
   }

@@ -90,6 +90,7 @@ static void write_stats(dcm *d, const dcm_driver *drv, void *hw) {
     const dcm_guard *g = &d->robot[r].guard;
     shm_write_begin(s->blk);
     *s->rate = d->pacer.rate;
+    *s->jitter_p50 = d->pacer.jitter_p50;
     *s->jitter_p99 = d->pacer.jitter_p99;
     *s->jitter_max = d->pacer.jitter_max;
     *s->cycles = d->pacer.cycles;

@@ -49,6 +49,7 @@ struct Leg {
   double tx, tz;     // hip -> knee axis, xz plane
   double sx, sz;     // knee axis -> ankle, xz plane
   double lt2, ls2, lts, phi;  // |t|^2, |s|^2, |t||s|, knee angle of the straight leg
+  double dy;         // ankle centre minus hip centre along the pitch axes (a CAD offset, or 0)
   bool yaw_offset;   // hip yaw axis misses the hip centre
 };
 
@@ -62,6 +63,7 @@ struct kin_model {
   Chain leg[2], arm[2], head;
   Leg legs[2];
   double head_sign[2];
+  bool head_tilts;   // head of two tilt axes (no pan): look-at solved numerically
 };
 
 namespace {
@@ -234,11 +236,8 @@ bool setup_leg(kin_model *m, const kin_desc *d, const kin_chain &c, char *err, s
   L.yaw_pt = ry_;
   L.hip0 = Vector3d(rp.x(), rr.y(), rr.z());
   L.ankle0 = Vector3d(rap.x(), rar.y(), rap.z());
-  if (std::fabs(L.hip0.y() - L.ankle0.y()) > kAxisTol) {
-    set_err(err, errlen, "%s: ankle centre (y %g) not below the hip centre (y %g)", what.c_str(), L.ankle0.y(),
-            L.hip0.y());
-    return false;
-  }
+  // the shank may sit off the hip centre along the pitch axes (the Hubo's CAD: 0.8 mm)
+  L.dy = L.ankle0.y() - L.hip0.y();
   L.tx = rk.x() - L.hip0.x();
   L.tz = rk.z() - L.hip0.z();
   L.sx = L.ankle0.x() - rk.x();
@@ -256,15 +255,28 @@ bool setup_leg(kin_model *m, const kin_desc *d, const kin_chain &c, char *err, s
   return true;
 }
 
+// A head is either pan (z) then tilt (y), solved in closed form, or two tilt axes (both in the
+// horizontal plane, not parallel, like the Hubo's NK1/NK2 at +-45 deg), solved numerically.
 bool setup_head(kin_model *m, const kin_desc *d, const kin_chain &c, char *err, size_t errlen) {
   const std::string what = chain_label(c);
   const Chain &H = m->head;
-  if (!is_axis(m->joints[H.idx[0]].axis, 2, &m->head_sign[0])) {
-    set_err(err, errlen, "%s: pan joint %s: axis must be along z for look-at", what.c_str(),
-            joint_label(d, H.idx[0]).c_str());
+  const Vector3d &a0 = m->joints[H.idx[0]].axis, &a1 = m->joints[H.idx[1]].axis;
+  m->head_tilts = std::fabs(a0.z()) < kAxisTol && std::fabs(a1.z()) < kAxisTol && a0.cross(a1).norm() > 0.1;
+  if (m->head_tilts) {
+    // the optical axis must not lie along either axis: each tilt must move it
+    Vector3d opt = H.tip_rot.col(0);
+    if (opt.cross(a0).norm() < 0.1 || opt.cross(a1).norm() < 0.1) {
+      set_err(err, errlen, "%s: the camera's optical axis (the tip frame's x) lies along a tilt axis", what.c_str());
+      return false;
+    }
+    return true;
+  }
+  if (!is_axis(a0, 2, &m->head_sign[0])) {
+    set_err(err, errlen, "%s: pan joint %s: axis must be along z for look-at (or two horizontal tilt axes)",
+            what.c_str(), joint_label(d, H.idx[0]).c_str());
     return false;
   }
-  if (!is_axis(m->joints[H.idx[1]].axis, 1, &m->head_sign[1])) {
+  if (!is_axis(a1, 1, &m->head_sign[1])) {
     set_err(err, errlen, "%s: tilt joint %s: axis must be along y for look-at", what.c_str(),
             joint_label(d, H.idx[1]).c_str());
     return false;
@@ -289,10 +301,12 @@ int leg_solve(const Leg &L, const Matrix3d &R, const Vector3d &A, double a, doub
   }
   Vector3d u = R.transpose() * (A - H);  // hip -> ankle, foot frame
   double r = u.norm();
-  double rmax2 = L.lt2 + L.ls2 + 2.0 * L.lts, rmin2 = L.lt2 + L.ls2 - 2.0 * L.lts;
+  const double dy2 = L.dy * L.dy;
+  double rmax2 = L.lt2 + L.ls2 + 2.0 * L.lts + dy2, rmin2 = L.lt2 + L.ls2 - 2.0 * L.lts + dy2;
   double r2 = r * r;
   if (r2 > rmax2 || r2 < rmin2) {
-    flags |= KIN_UNREACHABLE;
+    // a straight leg's own pose may land a rounding error beyond the reach: not a miss
+    if (r2 > rmax2 * (1 + 1e-12) || r2 < rmin2 * (1 - 1e-12)) flags |= KIN_UNREACHABLE;
     double rc = std::sqrt(clamp(r2, rmin2, rmax2));
     if (r > 1e-12) {
       u *= rc / r;
@@ -301,17 +315,23 @@ int leg_solve(const Leg &L, const Matrix3d &R, const Vector3d &A, double a, doub
     }
     r2 = rc * rc;
   }
-  double cosk = clamp((r2 - L.lt2 - L.ls2) / (2.0 * L.lts), -1.0, 1.0);
+  double cosk = clamp((r2 - dy2 - L.lt2 - L.ls2) / (2.0 * L.lts), -1.0, 1.0);
   double d = L.phi + std::acos(cosk);  // the knee bends with the ankle going back
   // w = t + Ry(d) s, xz plane
   double sd = std::sin(d), cd = std::cos(d);
   double wx = L.tx + L.sx * cd + L.sz * sd;
   double wz = L.tz - L.sx * sd + L.sz * cd;
-  // u = Rx(-f) Ry(-g) w with Ry(-g) w = (u.x, 0, w'z): u.y = w'z sin f, u.z = w'z cos f. Take the
-  // ankle roll branch |f| <= pi/2 (w'z of the sign of u.z; usually negative: hip above ankle).
+  // u = Rx(-f) Ry(-g) w with Ry(-g) w = (u.x, dy, w'z): Rx(-f) turns (dy, w'z) into (u.y, u.z).
+  // Take the ankle roll branch with w'z of the sign of u.z (usually negative: hip above ankle).
   double yz = std::sqrt(u.y() * u.y() + u.z() * u.z());
-  double wpz = u.z() > 0 ? yz : -yz;
-  double f = yz < 1e-12 ? 0.0 : std::atan2(u.y() / wpz, u.z() / wpz);
+  double pz = std::sqrt(std::max(yz * yz - dy2, 0.0));
+  double wpz = u.z() > 0 ? pz : -pz;
+  double f = 0.0;
+  if (yz >= 1e-12) {
+    // (the plain form without an offset keeps the small bodies' numbers bit for bit)
+    f = L.dy == 0.0 ? std::atan2(u.y() / wpz, u.z() / wpz)
+                    : std::remainder(std::atan2(wpz, L.dy) - std::atan2(u.z(), u.y()), 2.0 * M_PI);
+  }
   double g = std::atan2(wx, wz) - std::atan2(u.x(), wpz);  // Ry adds its angle to atan2(x, z)
   g = std::remainder(g, 2.0 * M_PI);
   double e = g - d;
@@ -649,6 +669,58 @@ int kin_arm_ik(const kin_model *m, int side, const double *pos, const double *qb
   return flags;
 }
 
+}  // extern "C"
+
+namespace {
+
+// Two tilt axes: Gauss-Newton on the unit direction to the target against the optical axis (both
+// in the torso frame), damped, within the joint limits. Each tilt turns the optical axis about its
+// own axis, so the Jacobian column is axis x d. Unreachable: the nearest direction in the limits.
+int head_look_tilts(const kin_model *m, const Chain &ch, const Vector3d &t, const double *qbase, double *q2) {
+  int flags = 0;
+  double q[2] = {0.0, 0.0}, qfull[KIN_MAXJ];
+  double err_norm = INFINITY;
+  for (int it = 0; it < 50; it++) {
+    fill_full(m, ch, q, qbase, qfull);
+    Pose C = tip_pose(m, ch, qfull, &flags);
+    Vector3d u = t - C.p;
+    if (u.norm() < 1e-9) break;
+    u.normalize();
+    Vector3d d = C.R.col(0);
+    Vector3d e = u - d;
+    err_norm = e.norm();
+    if (err_norm < 1e-10) break;
+    Eigen::Matrix<double, 3, 2> J;
+    for (int k = 0; k < 2; k++) {
+      Pose L = chain_pose(m, ch.idx[k], qfull, &flags);
+      J.col(k) = (L.R * m->joints[ch.idx[k]].axis).cross(d);
+    }
+    Eigen::Matrix2d A = J.transpose() * J + 1e-6 * Eigen::Matrix2d::Identity();
+    Eigen::Vector2d dq = A.ldlt().solve(J.transpose() * e);
+    // a joint at its limit and pushed beyond stays there; the other one alone takes the step
+    for (int k = 0; k < 2; k++) {
+      const Joint &Jk = m->joints[ch.idx[k]];
+      if ((q[k] >= Jk.qmax && dq[k] > 0) || (q[k] <= Jk.qmin && dq[k] < 0)) {
+        const int o = 1 - k;
+        dq[k] = 0.0;
+        dq[o] = J.col(o).dot(e) / (J.col(o).squaredNorm() + 1e-6);
+        break;
+      }
+    }
+    for (int k = 0; k < 2; k++) {
+      const Joint &Jk = m->joints[ch.idx[k]];
+      q[k] = clamp(q[k] + clamp(dq[k], -0.3, 0.3), Jk.qmin, Jk.qmax);
+    }
+  }
+  if (err_norm > 1e-4) flags |= KIN_UNREACHABLE;
+  for (int k = 0; k < 2; k++) q2[k] = std::isfinite(q[k]) ? q[k] : 0.0;
+  return flags;
+}
+
+}  // namespace
+
+extern "C" {
+
 int kin_head_look_at(const kin_model *m, const double *target, const double *qbase, double *q2) {
   if (!m || !target || !q2) return KIN_EINVAL;
   const Chain *ch = find_chain(m, KIN_HEAD, 0);
@@ -658,6 +730,7 @@ int kin_head_look_at(const kin_model *m, const double *target, const double *qba
     q2[0] = q2[1] = 0.0;
     return KIN_BAD_INPUT;
   }
+  if (m->head_tilts) return head_look_tilts(m, *ch, Vector3d(target[0], target[1], target[2]), qbase, q2);
   Pose B = kIdentity;
   if (ch->base >= 0 && qbase) B = chain_pose(m, ch->base, qbase, &flags);
   const Joint &P = m->joints[ch->idx[0]], &Tl = m->joints[ch->idx[1]];

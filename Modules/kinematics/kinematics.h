@@ -185,7 +185,10 @@ int kin_leg_ik(const kin_model *m, int side, const double *pose, const double *q
 int kin_arm_ik(const kin_model *m, int side, const double *pos, const double *qbase, double *qn);
 
 /* Head angles (2: pan, tilt) that point the camera's optical axis at a point (3, torso
- * frame). KIN_UNREACHABLE if the point is too close to the camera or a limit binds. */
+ * frame). KIN_UNREACHABLE if the point is too close to the camera or a limit binds. A head of two
+ * horizontal tilt axes (the Hubo's NK1/NK2 at +-45 deg) is solved numerically (Gauss-Newton on the
+ * direction, within the limits): it pitches and rolls the camera, so a point to the side is
+ * reached only within what the two tilts allow (KIN_UNREACHABLE beyond: the nearest direction). */
 int kin_head_look_at(const kin_model *m, const double *target, const double *qbase, double *q2);
 
 #ifdef __cplusplus

@@ -117,6 +117,9 @@ void params_load(const std::string &robot, Params *p) {
   p->battery = s.num("battery");
   p->name = r.str("name");
   p->joints = r.strs("joints");
+  p->lleg = r.has("groups.lleg") ? r.strs("groups.lleg") : std::vector<std::string>();
+  p->rleg = r.has("groups.rleg") ? r.strs("groups.rleg") : std::vector<std::string>();
+  p->head = r.has("groups.head") ? r.strs("groups.head") : std::vector<std::string>();
   // each joint's servo: the actuator model robot.lua names for it
   p->servos.clear();
   for (const std::string &j : p->joints) {

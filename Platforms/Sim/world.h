@@ -52,6 +52,8 @@ struct Params {
   double safe_hardness = 0.3, start_hardness = 1;   // the DCM's safe state; every joint at start
   std::string name;                   // the body (robot.lua's name)
   std::vector<std::string> joints;    // shm joint order (robot.lua)
+  // robot.lua's groups lleg, rleg, head (empty when the body has none): the sim's stance and tests
+  std::vector<std::string> lleg, rleg, head;
   std::vector<Servo> servos;          // per shm joint: its actuator model (robot.lua `actuator`)
   std::string urdf;                   // path of the robot file
 };

@@ -113,7 +113,10 @@ function M.new(opts)
   -- keyframe motions are checked at start: a bad file stops the process with the file named
   c.keyframes = {}
   local body = M.keyframe_body(robot, opts.model, c.ji)
-  for _, name in ipairs({ 'sit', 'standup_front', 'standup_back' }) do
+  -- (a body that cannot stand itself up, walk config fallPolicy.standup = false, has no stand-ups)
+  local policy = rawget(params, 'fallPolicy')
+  local standup = not (policy and rawget(policy, 'standup') == false)
+  for _, name in ipairs(standup and { 'sit', 'standup_front', 'standup_back' } or { 'sit' }) do
     c.keyframes[name] = keyframe.load(name, body, robot.name)
   end
   c.machine = fsm.new({

@@ -4,6 +4,7 @@
 -- chest button and "alive". The robot's clock and vision are driven by the test (no simulator);
 -- what the behavior asks of the walk is read from the motion block. Numbers: Config/common/game.lua.
 local shm = require('shm')
+local view = require('Tests.behavior.view')
 local packet = require('GameFSM.packet')
 local udp = require('GameFSM.udp')
 local Motion = require('Motion')
@@ -38,16 +39,7 @@ describe('behavior under the rules of a game', function()
   -- the robot's view: the ball where `ball` says, the opponent goal's posts as seen from (-2, 0)
   local function run(seconds)
     for _ = 1, math.floor(seconds / 0.024 + 0.5) do
-      tick = tick + 3
-      sensor.tick[0] = tick
-      sensor.time[0] = sensor.time[0] + 0.024
-      vision.frame[0] = vision.frame[0] + 1
-      vision.time[0] = sensor.time[0]
-      vision.ball_detected[0] = 1
-      vision.ball_position[0], vision.ball_position[1] = ball[1], ball[2]
-      vision.goal_posts[0] = 2
-      vision.goal_position[0], vision.goal_position[1] = 6.5, 1.3
-      vision.goal_position[2], vision.goal_position[3] = 6.5, -1.3
+      tick = view.frame(sensor, vision, tick, ball[1], ball[2])
       behavior:step()
     end
   end

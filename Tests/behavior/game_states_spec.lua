@@ -3,6 +3,7 @@
 -- initial, ready, set, playing, penalized and back. The robot's clock and vision frames are driven
 -- by the test (no simulator needed); what the behavior asks of the walk is read from the motion block.
 local shm = require('shm')
+local view = require('Tests.behavior.view')
 local packet = require('GameFSM.packet')
 local udp = require('GameFSM.udp')
 
@@ -31,16 +32,7 @@ describe('behavior under a GameController', function()
   -- once it knows where it is)
   local function run(seconds)
     for _ = 1, math.floor(seconds / 0.024 + 0.5) do
-      tick = tick + 3
-      sensor.tick[0] = tick
-      sensor.time[0] = sensor.time[0] + 0.024
-      vision.frame[0] = vision.frame[0] + 1
-      vision.time[0] = sensor.time[0]
-      vision.ball_detected[0] = 1
-      vision.ball_position[0], vision.ball_position[1] = 1.0, 0.2
-      vision.goal_posts[0] = 2
-      vision.goal_position[0], vision.goal_position[1] = 6.5, 1.3
-      vision.goal_position[2], vision.goal_position[3] = 6.5, -1.3
+      tick = view.frame(sensor, vision, tick, 1.0, 0.2)
       behavior:step()
     end
   end

@@ -5,10 +5,7 @@
 # after its new processes are up, and move.
 #   Tests/game/restart_test.sh           env: ROBOT_ID (uses ROBOT_ID+70), logs in build/test-logs/game/
 set -u
-cd "$(dirname "$0")/../.."
-source Run/env.sh
-LOGDIR="$HRP_ROOT/build/test-logs/game"
-mkdir -p "$LOGDIR"
+source "$(dirname "$0")/lib.sh"
 ID=$(( ${ROBOT_ID:-9200} + 70 ))
 PORT=$((40000 + ID % 20000))   # this run's GameController port (ids differ per run: no collision)
 echo "1..1"
@@ -23,11 +20,7 @@ cleanup() {
   Run/shm --robot "$ID" remove >/dev/null 2>&1
 }
 trap cleanup EXIT
-for _ in $(seq 1 300); do
-  tick=$(Run/shm --robot "$ID" dump sync tick 2>/dev/null | awk '{print $NF}')
-  [ -n "$tick" ] && [ "$tick" != 0 ] && break
-  sleep 0.1
-done
+wait_for_clock "$ID"
 RESTART_CMD="./run_main --quiet >>'$LOGDIR/restart_main.log' 2>&1 & echo \$! >'$PIDFILE'"
 : >"$LOGDIR/restart_main.log"
 eval "$RESTART_CMD"

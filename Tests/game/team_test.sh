@@ -5,10 +5,7 @@
 # defender takes the striker's role over and goes for the ball.
 #   Tests/game/team_test.sh        env: ROBOT_ID (uses ROBOT_ID+80, +81), logs in build/test-logs/game/
 set -u
-cd "$(dirname "$0")/../.."
-source Run/env.sh
-LOGDIR="$HRP_ROOT/build/test-logs/game"
-mkdir -p "$LOGDIR"
+source "$(dirname "$0")/lib.sh"
 ID=$(( ${ROBOT_ID:-9200} + 80 ))
 if [ ! -x build/bin/dcm_sim ]; then echo "1..1"; echo "ok 1 # SKIP needs build/bin/dcm_sim"; exit 0; fi
 # player 2's site folder (inside the repository's build/)
@@ -28,24 +25,11 @@ cleanup() {
 }
 MAIN1=
 trap cleanup EXIT
-for _ in $(seq 1 300); do
-  tick=$(Run/shm --robot "$ID" dump sync tick 2>/dev/null | awk '{print $NF}')
-  [ -n "$tick" ] && [ "$tick" != 0 ] && break
-  sleep 0.1
-done
+wait_for_clock "$ID"
 ROBOT_ID=$ID HRP_GC_PORT=$((40000 + ID % 20000)) ./run_main --quiet >"$LOGDIR/team_main1.log" 2>&1 &
 MAIN1=$!
 ROBOT_ID=$((ID + 1)) HRP_SITE="$SITE2" HRP_GC_PORT=$((40002 + ID % 20000)) ./run_main --quiet \
   >"$LOGDIR/team_main2.log" 2>&1 &
 echo $! >"$PIDFILE"
 ROBOT_ID=$ID timeout 600 ./run_repl Tests/game/team_play.lua "$PIDFILE" >"$LOGDIR/team_play.log" 2>&1
-mapfile -t checks < <(grep '^check ' "$LOGDIR/team_play.log")
-echo "1..4"
-n=0
-for c in "${checks[@]}"; do
-  n=$((n + 1))
-  set -- $c
-  if [ "$3" = ok ]; then echo "ok $n - $2: ${c#check $2 ok }"; else echo "not ok $n - $2: ${c#check $2 FAIL }"; fi
-done
-for i in $(seq $((n + 1)) 4); do echo "not ok $i - missing check (see $LOGDIR/team_play.log)"; done
-tail -3 "$LOGDIR/team_play.log" | sed 's/^/# /'
+report_checks "$LOGDIR/team_play.log" 4

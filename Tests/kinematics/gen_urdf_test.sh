@@ -2,7 +2,8 @@
 # Run/gen_urdf.py (TAP), on the one reference file the repository holds (the waistbot test body's;
 # the real robots' references live outside the repository): regenerating gives the committed
 # URDF byte for byte; sections the generator does not use (a Hubo-style LIMITS, ACTUATORS, SENSORS)
-# are skipped, not fatal; a reference without CAMERA fails naming the frame that needs it.
+# are skipped, not fatal; a reference without CAMERA fails naming the frame that needs it; robot.lua's
+# added_masses and collision_skip (the Hubo2+'s) do what they say.
 set -u
 cd "$(dirname "$0")/../.."
 source Run/env.sh
@@ -35,6 +36,32 @@ python3 Run/gen_urdf.py waistbot "$TMP/bad.txt" --out "$TMP/d.urdf" >"$TMP/d.log
 rc=$?
 [ $rc != 0 ] && grep -q 'bad.txt:[0-9]*: body line needs 19 fields' "$TMP/d.log"
 check $? "a malformed body line: fails naming the file and the line ($(tail -1 "$TMP/d.log"))"
+
+# robot.lua's added_masses (merged by the parallel-axis rule) and collision_skip, on made-up data
+python3 - >"$TMP/e.log" 2>&1 <<'PY'
+import sys
+sys.path.insert(0, 'Run')
+import gen_urdf as g
+# a 1 kg point-like body at the origin plus a 1 kg uniform 0.1 m cube centred 0.2 m up
+b = dict(name='a', mass=1.0, com=[0.0, 0.0, 0.0], inertia=[0.0] * 6)
+g.add_mass(b, 1.0, [0.0, 0.0, 0.2], [0.1, 0.1, 0.1])
+cube = 1.0 * (0.01 + 0.01) / 12
+want = dict(mass=2.0, com=[0.0, 0.0, 0.1], inertia=[2 * 0.01 + cube, 2 * 0.01 + cube, cube, 0, 0, 0])
+assert abs(b['mass'] - 2.0) < 1e-12, b
+assert all(abs(x - y) < 1e-12 for x, y in zip(b['com'], want['com'])), b
+assert all(abs(x - y) < 1e-12 for x, y in zip(b['inertia'], want['inertia'])), b
+boxes = [dict(kind='sole_box'), dict(kind='sole_outline'), dict(kind='mesh_aabb')]
+g.apply_robot_data({'collision_skip': ['sole_outline']}, 'robot.lua', [b], boxes)
+assert [x['kind'] for x in boxes] == ['sole_box', 'mesh_aabb'], boxes
+try:
+    g.apply_robot_data({'added_masses': [{'link': 'nope', 'mass': 1, 'com': [0, 0, 0], 'size': [1, 1, 1]}]},
+                       'robot.lua', [b], boxes)
+except SystemExit:
+    print('refused')
+PY
+rc=$?
+[ $rc = 0 ] && grep -q "added_masses\[1\]: link 'nope' is not a body" "$TMP/e.log" && grep -q refused "$TMP/e.log"
+check $? "added_masses merges by the parallel-axis rule, collision_skip drops a kind, an unknown link fails naming it"
 
 echo "1..$n"
 [ "$fails" = 0 ]

@@ -11,7 +11,19 @@ local U = require('Tests.kinematics.urdf_read')
 local sin, cos, abs, sqrt, atan2, pi = math.sin, math.cos, math.abs, math.sqrt, math.atan2, math.pi
 local matmul, rpy_rot = U.matmul, U.rpy_rot
 
-local BODIES = { 'op3', 'darwin', 'waistbot' }
+local BODIES = { 'op3', 'darwin', 'waistbot', 'hubo2plus' }
+
+-- Where each body's feet and eyes work (torso frame, m and rad): the walking workspace sampled for
+-- the leg IK (x, y outward from the zero-pose foot, z above it: half-ranges or ranges; roll, pitch,
+-- yaw half-ranges) and the ground points look_at is asked to see. The small bodies share one; the
+-- Hubo2+'s legs are 2.5 times longer, its ankle roll turns only +-0.19 rad, and its head tilts
+-- +-30 deg on two axes and does not pan (robot.lua), so its eyes see ahead only.
+local SMALL = { x = 0.09, y = { -0.03, 0.06 }, z = { 0.02, 0.08 }, roll = 0.3, pitch = 0.3, yaw = 0.6,
+  look_x = { 0.3, 4 }, look_y = 1.5 }
+local WORKSPACE = {
+  hubo2plus = { x = 0.15, y = { -0.03, 0.07 }, z = { 0.05, 0.15 }, roll = 0.08, pitch = 0.2, yaw = 0.3,
+    look_x = { 2.5, 5 }, look_y = 0.3 },
+}
 
 -- Deterministic pseudo-random numbers (LCG) so a failure can be replayed.
 local function rng(seed)
@@ -69,6 +81,8 @@ for _, body in ipairs(BODIES) do
   describe('kinematics of ' .. body, function()
     local m = kin.load({ robot = body })
     local leg_len = -m:leg_fk('l', { 0, 0, 0, 0, 0, 0 })[3] -- torso origin to sole, zero pose
+    local W = WORKSPACE[body] or SMALL
+    local hip_yaw = m.joints[m.leg_index[0][1]]
 
     it('FK(IK(x)) = x over sampled foot poses of the walking workspace', function()
       local R = rng(42)
@@ -78,8 +92,8 @@ for _, body in ipairs(BODIES) do
         local sy = side == 'l' and 1 or -1
         local y0 = m:leg_fk(side, { 0, 0, 0, 0, 0, 0 })[2]
         for _ = 1, 3000 do
-          local pose = { R(-0.09, 0.09), y0 + sy * R(-0.03, 0.06), -leg_len + R(0.02, 0.08),
-            R(-0.3, 0.3), R(-0.3, 0.3), R(-0.6, 0.6) }
+          local pose = { R(-W.x, W.x), y0 + sy * R(W.y[1], W.y[2]), -leg_len + R(W.z[1], W.z[2]),
+            R(-W.roll, W.roll), R(-W.pitch, W.pitch), R(-W.yaw, W.yaw) }
           local _, flags = m:leg_ik(side, pose, q)
           if flags == 0 then
             m:leg_fk(side, q, p2)
@@ -157,7 +171,11 @@ for _, body in ipairs(BODIES) do
       assert.are.equal(kin.UNREACHABLE, flags)
       local p = m:leg_fk('l', q)
       assert.is_true(abs(p[3] + leg_len) < 1e-6) -- leg straight, pointing at the target
-      for k = 1, 6 do assert.is_true(abs(q[k]) < 1e-6) end
+      -- (a shank off the hip centre along the pitch axes, the Hubo's 0.8 mm, rolls the straight
+      -- leg by that offset over its length, the foot kept level)
+      for k = 1, 6 do assert.is_true(abs(q[k]) < ((k == 2 or k == 6) and 2e-3 or 1e-6)) end
+      local legj = m.leg_index[0]
+      assert.is_true(abs(sign(m, m.joints[legj[2]], 1) * q[2] + sign(m, m.joints[legj[6]], 1) * q[6]) < 1e-9)
       local nan, inf = 0 / 0, math.huge
       local z = -leg_len + 0.03
       for _, bad in ipairs({ { nan, y0, z, 0, 0, 0 }, { x0, inf, z, 0, 0, 0 }, { x0, y0, z, nan, -inf, nan },
@@ -172,10 +190,10 @@ for _, body in ipairs(BODIES) do
 
     it('joint limits: a target beyond them is clamped and flagged', function()
       local y0 = m:leg_fk('l', { 0, 0, 0, 0, 0, 0 })[2]
-      local lo, hi = m:limits('l_hip_yaw')
+      local lo, hi = m:limits(hip_yaw)
       assert.is_true(lo < 0 and hi > 0)
       local want = math.min(hi + 0.5, 3.0)   -- hip yaw beyond its upper limit: the foot's yaw
-      local q, flags = m:leg_ik('l', 0, y0, -leg_len + 0.05, 0, 0, sign(m, 'l_hip_yaw', 3) * want)
+      local q, flags = m:leg_ik('l', 0, y0, -leg_len + 0.05, 0, 0, sign(m, hip_yaw, 3) * want)
       assert.are.equal(kin.JOINT_LIMIT, flags)
       assert.is_true(abs(q[1] - hi) < 1e-12)
     end)
@@ -184,7 +202,7 @@ for _, body in ipairs(BODIES) do
       local R = rng(3)
       local worst, solved = 0, 0
       for _ = 1, 300 do
-        local t = { R(0.3, 4), R(-1.5, 1.5), R(-0.5, -0.1) - m.origin[3] }
+        local t = { R(W.look_x[1], W.look_x[2]), R(-W.look_y, W.look_y), R(-0.5, -0.1) - m.origin[3] }
         local qh, flags = m:look_at(t)
         if flags == 0 then
           worst, solved = math.max(worst, look_error(t, m:head_fk(qh))), solved + 1
@@ -241,7 +259,7 @@ for _, body in ipairs(BODIES) do
           local qa, qs = {}, {}
           for k = 1, #idx do
             local lo, hi = m:limits(m.joints[idx[k]])
-            qa[k], qs[k] = math.max(lo, math.min(hi, R(-1, 1))), 0
+            qa[k], qs[k] = R(math.max(lo, -1), math.min(hi, 1)), 0
           end
           local h = m:arm_fk(side, qa)
           local _, flags = m:arm_ik(side, h, qs)

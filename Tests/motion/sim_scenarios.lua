@@ -1,7 +1,8 @@
 -- Walking scenarios in the sim's lockstep, run by ./run_repl (see sim_walk_test.sh):
 --   ./run_repl Tests/motion/sim_scenarios.lua NAME [ARGS...]
--- NAME: forward, sideways, turn, backward, random, push, kick, head, pushmax, speed. Prints TAP lines
--- ("ok N - ..." / "not ok N - ...") and "# " figures; measured from the sim's truth (Sim.truth()).
+-- NAME: forward, sideways, turn, backward, random, push, fallpolicy, keypose, kick, head, pushmax,
+-- speed. Prints TAP lines ("ok N - ..." / "not ok N - ...") and "# " figures; measured from the
+-- sim's truth (Sim.truth()).
 -- luacheck: globals Sim Motion Walk wait arg shm Body
 local name = arg[1]
 local count = 0
@@ -269,6 +270,90 @@ end
 function scenarios.push()
   push_over(1)
   push_over(-1)
+end
+
+-- a body with a fall policy (walk config fallPolicy: too heavy to go limp or to get up by itself):
+-- pushed over while walking, forwards and backwards (`force` N, default 250, for 0.2 s along its heading), the
+-- fall is detected, the protective pose is taken and held at the policy's hardness (no joint goes
+-- limp), no stand-up is tried; lying, it stays in falling
+local function push_policy(dir, force)
+  local policy = Walk.get('fallPolicy')
+  if not policy then
+    tap(false, 'fallpolicy: the walk config of ' .. robot_name .. ' has no fallPolicy')
+    return
+  end
+  start_clean()
+  Motion.request('walk')
+  Walk.set_velocity(0.1, 0, 0)
+  wait(4)
+  local falls0 = Motion.falls()
+  local a = Sim.truth()
+  local f = force * dir
+  Sim.push(f * math.cos(a.yaw), f * math.sin(a.yaw), 0.2)
+  local t_push, t_fallen, t_detect = Body.get_time(), nil, nil
+  wait_until(function()
+    if not t_fallen and Sim.truth().fallen then t_fallen = Body.get_time() end
+    if not t_detect and Motion.falls() > falls0 then t_detect = motion.fall_time[0] end
+    return t_fallen and t_detect
+  end, 4)
+  local what = dir > 0 and 'forwards' or 'backwards'
+  if not t_fallen then
+    tap(false, string.format('pushed %s (%.0f N for 0.2 s): the robot did not fall (push too weak)', what, force))
+    return
+  end
+  local lag = t_detect and (t_detect - t_fallen) or math.huge
+  note('pushed %s (%.0f N for 0.2 s): fallen (truth) %.2f s after the push; detected %.2f s after truth',
+    what, force, t_fallen - t_push, lag)
+  tap(t_detect ~= nil and lag <= 0.3, string.format('pushed %s: fall detected within 0.3 s (%.2f s)', what, lag))
+  wait(6)
+  local softest, worst, worst_joint = 1, 0, ''
+  for _, jn in ipairs(Body.joint_names()) do
+    softest = math.min(softest, Body.get_hardness(jn))
+    local want = rawget(policy.pose, jn)
+    if want and Body.get_hardness(jn) > 0 then
+      local e = math.abs(Body.get_position(jn) - Body.get_command(jn))
+      if e > worst then worst, worst_joint = e, jn end
+    end
+  end
+  note('pushed %s: 6 s later state %s, falls %d, least hardness %.2f, the pose held within %.4f rad (%s)',
+    what, Motion.state(), Motion.falls() - falls0, softest, worst, worst_joint)
+  tap(Motion.state() == 'falling' and Motion.falls() - falls0 == 1,
+    string.format('pushed %s: stays in falling, no stand-up tried (state %s)', what, Motion.state()))
+  local hold = policy.rest == 'hold'
+  tap(hold and softest >= policy.hardness - 1e-9 or not hold and softest == 0,
+    string.format('pushed %s: the servos %s (least hardness %.2f)', what, hold and 'hold the protective pose'
+      or 'are released', softest))
+end
+
+-- key poses for the arms and the waist (Config/robots/<ROBOT>/keyframes/<name>.lua, default 'wave')
+-- played by a caller through Body commands (Lib/keypose.lua) while the robot stands: no fall, the
+-- feet stay put, the joints follow, and they are the motion's again afterwards
+function scenarios.keypose(file)
+  file = file or 'wave'
+  local keypose = require('keypose')
+  start_clean()
+  local kf, duration = keypose.load(file)
+  local a = Sim.truth()
+  local falls0 = Motion.falls()
+  local lag = keypose.play(file, wait)
+  wait(1)
+  local b = Sim.truth()
+  local moved = math.sqrt((b.x - a.x) ^ 2 + (b.y - a.y) ^ 2)
+  note('keypose %s: %d joints, %.1f s; largest tracking lag %.3f rad; the torso moved %.4f m, state %s',
+    file, #kf.joints, duration, lag, moved, Motion.state())
+  tap(not b.fallen and Motion.falls() == falls0 and Motion.state() == 'stance',
+    string.format('key poses %s (%.1f s) played while standing, no fall', file, duration))
+  tap(moved < 0.02, string.format('the feet stay put (the torso moved %.4f m)', moved))
+  tap(lag < 0.3, string.format('the joints follow the key poses (largest lag %.3f rad)', lag))
+  local taken = false
+  for _, j in ipairs(Body.joint_names()) do taken = taken or Body.taken(j) end
+  tap(not taken, 'every joint is given back at the end')
+end
+
+function scenarios.fallpolicy(force)
+  force = tonumber(force) or 250
+  push_policy(1, force)
+  push_policy(-1, force)
 end
 
 -- kick: the ball's centre `gap` m (default 0.1) ahead of the kicking foot's toe, in line with the

@@ -1,6 +1,7 @@
 -- What each body must reach in the walking scenarios (Tests/motion/sim_scenarios.lua): the command
 -- given and the least measured speed, per robot (ROBOT). The OP3's figures are the platform's
--- reference; the DARwIn-OP's forward goal is issue 12's (>= 0.20 m/s for 30 s).
+-- reference; the DARwIn-OP's forward goal is issue 12's (>= 0.20 m/s for 30 s); the Hubo2+'s are
+-- issue 13's (forward >= 0.25 m/s for 30 s, sideways 0.1 m/s, turning 0.5 rad/s).
 return {
   op3 = {
     forward = { command = 0.35, least = 0.25 },   -- m/s
@@ -15,5 +16,12 @@ return {
     backward = { command = 0.12, least = 0.10 },
     turn = { command = 1.7, least = 1.0 },
     kick = { least = 1.2 },                       -- reaches 1.30-1.38 m (seeds 1-3)
+  },
+  hubo2plus = {
+    forward = { command = 0.30, least = 0.25 },
+    sideways = { command = 0.12, least = 0.10 },
+    backward = { command = 0.12, least = 0.10 },
+    turn = { command = 0.6, least = 0.5 },
+    kick = { least = 0 },                         -- no kick target: not a football robot
   },
 }

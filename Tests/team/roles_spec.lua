@@ -3,6 +3,7 @@
 -- a behavior that hears a teammate over UDP: it defends while the teammate strikes, and takes the
 -- striker's role over when the teammate is lost.
 local shm = require('shm')
+local view = require('Tests.behavior.view')
 local roles = require('Team.roles')
 local position = require('Team.position')
 local Team = require('Team.team')
@@ -110,16 +111,7 @@ describe('roles in the behavior', function()
   local tick = 0
   local function run(seconds, talking)
     for _ = 1, math.floor(seconds / 0.024 + 0.5) do
-      tick = tick + 3
-      sensor.tick[0] = tick
-      sensor.time[0] = sensor.time[0] + 0.024
-      vision.frame[0] = vision.frame[0] + 1
-      vision.time[0] = sensor.time[0]
-      vision.ball_detected[0] = 1
-      vision.ball_position[0], vision.ball_position[1] = 2.0, 0.1
-      vision.goal_posts[0] = 2
-      vision.goal_position[0], vision.goal_position[1] = 6.5, 1.3
-      vision.goal_position[2], vision.goal_position[3] = 6.5, -1.3
+      tick = view.frame(sensor, vision, tick, 2.0, 0.1)
       if talking then
         mate:update(sensor.time[0], { pose = { -0.3, 0.1, 0 }, ball = { 0.0, 0.1, 0, 0 }, penalised = false,
           walk = { 0, 0, 0 } })

@@ -34,7 +34,7 @@ int main() {
     double worst = 0, worst_size = 0;
     while (scenes < 60) {
       // robot somewhere in its half facing roughly forward, ball 0.3..4 m ahead, head anywhere
-      std::vector<double> q = sim::stance_pose(m, p.joints);
+      std::vector<double> q = sim::stance_pose(m, p);
       q[pan] = -1.2 + 2.4 * U(rng);
       q[tilt] = -1.0 + 1.2 * U(rng);
       const double rx = -3 + 3 * U(rng), ry = -2 + 4 * U(rng), yaw = -1 + 2 * U(rng);
@@ -113,7 +113,7 @@ int main() {
     check(worst_size < 0.05, "ball's rendered area within 5% of the projected silhouette's");
 
     // a goal and the lines: looking at the +x goal from the penalty mark
-    std::vector<double> q = sim::stance_pose(m, p.joints);
+    std::vector<double> q = sim::stance_pose(m, p);
     q[tilt] = 0;
     w.place_robot(0, 1.5, 0, 0, q.data());
     w.place_ball(3.3, 0);
@@ -144,7 +144,7 @@ int main() {
       const int cl = m.frame_index(p.camera_frame);
       if (cl >= 0) hide2.push_back(m.frames[cl].link);
       sim::CameraWorker worker(w2, ren, hide2);
-      std::vector<double> q2 = sim::stance_pose(m, p.joints);
+      std::vector<double> q2 = sim::stance_pose(m, p);
       w2.set_command(0, q2.data(), nullptr, nullptr);
       w2.reset();
       w2.place_ball(0.0, 0.3);

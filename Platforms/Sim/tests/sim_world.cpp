@@ -38,26 +38,36 @@ int main() {
       for (int j = 0; j < nj; j++) err = std::max(err, std::fabs(got[j] - q[j]));
       printf("# placed vs hinge angles: max difference %.2e rad\n", err);
       check(err < 1e-9, "joint angles follow the URDF axes (right-hand rule)");
-      // head_tilt positive about -y: the camera looks up (its optical axis rises by the tilt)
+      // each head joint (robot.lua's head group) turns the camera about its URDF axis (link frames
+      // are world-aligned at the zero pose, so that axis is the world's): OP3 head_tilt positive
+      // about -y looks up; the Hubo's NK1/NK2 tilt about +-45 deg axes
+      std::vector<double> z(nj, 0.0);
       sim::Vec3 c0, c1;
       sim::Mat3 R0, R1;
-      std::vector<double> z(nj, 0.0);
       w.place_robot(0, 0, 0, 0, z.data());
       w.camera_pose(0, &c0, &R0);
-      int tilt = -1;
-      for (int j = 0; j < nj; j++) if (p.joints[j] == "head_tilt") tilt = j;
-      z[tilt] = 0.4;
-      w.place_robot(0, 0, 0, 0, z.data());
-      w.camera_pose(0, &c1, &R1);
-      const double rise = std::asin(R1.col(0).z()) - std::asin(R0.col(0).z());
-      const sim::Vec3 ta = m.links[m.joint_link("head_tilt")].axis;
-      check(std::fabs(rise - 0.4 * -ta.y()) < 1e-9, "head_tilt turns the camera's axis about its URDF axis");
+      double herr = 0;
+      int nh = 0;
+      for (const std::string &hn : p.head) {
+        int hj = -1;
+        for (int j = 0; j < nj; j++) if (p.joints[j] == hn) hj = j;
+        if (hj < 0) continue;
+        z.assign(nj, 0.0);
+        z[hj] = 0.4;
+        w.place_robot(0, 0, 0, 0, z.data());
+        w.camera_pose(0, &c1, &R1);
+        const sim::Vec3 ax = m.links[m.joint_link(hn)].axis;
+        const sim::Mat3 want = Eigen::AngleAxisd(0.4, ax.normalized()).toRotationMatrix() * R0;
+        herr = std::max(herr, (R1 - want).norm());
+        nh++;
+      }
+      check(nh == (int)p.head.size() && herr < 1e-9, "each head joint turns the camera about its URDF axis");
     }
 
     // ---- standing: 60 s with the stance commanded
     {
       sim::World w(p, m, 1, 7);
-      std::vector<double> q = sim::stance_pose(m, p.joints);
+      std::vector<double> q = sim::stance_pose(m, p);
       w.set_command(0, q.data(), nullptr, nullptr);
       w.reset();
       sim::Sensors s;

@@ -40,7 +40,7 @@ int main(int argc, char **argv) {
     sim::Model m;
     sim::load_all(&p, &m);
     sim::World w(p, m, nrobots, 1);
-    std::vector<double> q = sim::stance_pose(m, p.joints);
+    std::vector<double> q = sim::stance_pose(m, p);
     for (int r = 0; r < nrobots; r++) w.set_command(r, q.data(), nullptr, nullptr);
     w.reset();
     sim::Renderer ren(p, 1);

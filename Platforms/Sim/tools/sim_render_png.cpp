@@ -42,13 +42,13 @@ int main(int argc, char **argv) {
     sim::Model m;
     sim::load_all(&p, &m);
     sim::World w(p, m, 2, 1);
-    std::vector<double> q = sim::stance_pose(m, p.joints);
+    std::vector<double> q = sim::stance_pose(m, p);
     for (size_t j = 0; j < p.joints.size(); j++) {
       if (p.joints[j] == "head_pan") q[j] = pan;
       if (p.joints[j] == "head_tilt") q[j] = tilt;
     }
     w.place_robot(0, rx, ry, ryaw, q.data());
-    w.place_robot(1, ox, oy, oyaw, sim::stance_pose(m, p.joints).data());
+    w.place_robot(1, ox, oy, oyaw, sim::stance_pose(m, p).data());
     w.place_ball(bx, by);
     sim::Renderer ren(p, 1);
     sim::Camera c;

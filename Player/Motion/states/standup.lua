@@ -6,8 +6,12 @@ local M = {}
 
 function M.make(name)
   local S = {}
-  -- the joints the body's keyframes/<name>.lua names
-  function S.owns(c) return c.keyframes[name].joints end
+  -- the joints the body's keyframes/<name>.lua names (none: a body without stand-ups, which
+  -- never enters this state: falling.lua's fallPolicy)
+  function S.owns(c)
+    local kf = c.keyframes[name]
+    return kf and kf.joints or {}
+  end
   function S.entry(c)
     c:scratch(name).player = keyframe.play(c.keyframes[name], c.t, c.pos, c.h)
   end

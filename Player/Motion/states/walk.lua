@@ -20,7 +20,12 @@ function M.update(c)
   local err = wrap(d.yaw_ref - c.angle[3])
   local lim = p.headingMaxCorrection
   w.va_correction = math.max(-lim, math.min(lim, p.headingGain * err))
-  if c.want ~= 'walk' then w:stop() end
+  -- stopping: no more turning steps for the heading (a residual error would keep the feet from
+  -- ever coming together: the Hubo's side steps leave one)
+  if c.want ~= 'walk' then
+    w:stop()
+    w.va_correction = 0
+  end
   local active = w:advance(c.dt)
   w:joint_angles(c.q, c.sensors, c.dt)
   c:head_angles(c.q)

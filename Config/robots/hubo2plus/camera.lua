@@ -1,0 +1,7 @@
+-- The Hubo2+'s head camera: no public data on it (shared/robots/hubo_reference.txt has no CAMERA),
+-- and nothing of the Hubo needs vision yet; the vision process reads this file, so: a webcam's
+-- field of view (the OP3's C920, chosen) and the head's joints in this body's joint order.
+return {
+  fovy = math.rad(43.3),        -- rad
+  head_joint = { 1, 2 },        -- 0-based indices of NK1, NK2 in the joint order (robot.lua)
+}
