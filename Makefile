@@ -19,7 +19,7 @@ export BUILD SANITIZE
 NATIVE_DIRS := $(sort $(dir $(wildcard Modules/*/Makefile Platforms/*/Makefile Run/*/Makefile)))
 DEPS_STAMP := $(BUILD)/.deps-ok
 
-.PHONY: all deps test clean bench sim sanitize soak $(NATIVE_DIRS)
+.PHONY: all deps test clean bench sim match match4 sanitize soak $(NATIVE_DIRS)
 
 all: $(DEPS_STAMP) $(NATIVE_DIRS)
 
@@ -31,6 +31,9 @@ Platforms/OP/: Modules/dynamixel/
 Run/hubo_emulator_src/: Platforms/Hubo/ Modules/dcm/
 # the robot description parser: linked by the kinematics and the sim
 Modules/kinematics/ Platforms/Sim/: Modules/description/
+# the recorder and the Replay DCM: MCAP files of shm blocks
+Run/recorder/: Modules/dcm/ Modules/mcap/ Modules/shmlog/
+Platforms/Replay/: Modules/mcap/ Modules/shmlog/
 
 $(NATIVE_DIRS): $(DEPS_STAMP)
 	@$(MAKE) --no-print-directory -C $@ all
@@ -50,6 +53,16 @@ test: all
 # One robot in the simulator, headless, a status line per second until Ctrl-C (Run/main.lua --sim).
 sim: all
 	@./run_main --sim
+
+# A whole match in the sim, refereed (Run/referee.lua): 2v2 (match4: 4v4), 2 x HALF s (default 300),
+# e.g. `make match HALF=60`; prints the result, the real-time factor and the CPU per process.
+HALF ?= 300
+SEED ?= 1
+match: all
+	@Tests/bench/match.sh 2 $(HALF) $(SEED)
+
+match4: all
+	@Tests/bench/match.sh 4 $(HALF) $(SEED)
 
 bench: all
 	@Tests/run_benchmarks.sh

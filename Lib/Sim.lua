@@ -8,6 +8,7 @@
 --   Sim.push(fx, fy, duration)       N on the torso, field frame, for duration s of robot time
 --   Sim.press_button(i [, duration]) button i (1 or 2) held for duration s (default 0.1)
 --   Sim.score()  --> goals into the goal at +x, goals into the goal at -x
+--   Sim.of(id)   --> the same functions for robot `id` of this world (a referee: Run/referee.lua)
 --
 -- Field frame: origin at the centre spot, x towards the goal at +x, y left, z up; metres, radians.
 -- A request returns once the sim DCM has applied it (in lockstep mode: on the current tick, before
@@ -21,14 +22,52 @@ local C = shm.C
 local REQUEST = { reset = 1, teleport_robot = 2, teleport_ball = 3, push = 4, button = 5 }
 local TIMEOUT = 2.0   -- s of wall time to wait for the DCM
 
-local sim, sync, sensor
-local function blocks()
-  if not sim then
-    sim = shm.open('sim')
-    sync = shm.open('sync')
-    sensor = shm.open('dcm.sensor')
+-- The blocks of robot `id` (nil: this process's robot). Requests wake this process's own sync
+-- block too: a lockstep DCM waiting on this script's tick sees them at once.
+local function make(id)
+  local R = {}
+  local sim, sync, own_sync, sensor
+  local function blocks()
+    if not sim then
+      local opt = id and { robot = id } or nil
+      sim = shm.open('sim', opt)
+      sync = shm.open('sync', opt)
+      own_sync = id and shm.open('sync') or sync
+      sensor = shm.open('dcm.sensor', opt)
+    end
+    return sim
   end
-  return sim
+  R.blocks = blocks
+
+  function R.request(code, a, b, c, d)
+    local s = blocks()
+    local pid = sensor.dcm_pid[0]
+    if pid == 0 or C.shm_pid_alive(pid) == 0 then
+      return nil, 'no sim DCM is running for robot ' .. (id or shm.robot_id()) .. ' (start ./run_dcm)'
+    end
+    local seq
+    s:write(function(x)
+      x.request[0] = code
+      x.args[0], x.args[1], x.args[2], x.args[3] = a or 0, b or 0, c or 0, d or 0
+      seq = x.request_seq[0] + 1
+      x.request_seq[0] = seq
+    end)
+    -- a DCM in lockstep may be waiting on the participants: wake it
+    for _, y in ipairs(own_sync == sync and { sync } or { sync, own_sync }) do
+      C.shm_fetch_add_u32(y.done_count, 1)
+      C.shm_futex_wake(y.done_count)
+    end
+    local done = ffi.cast('volatile uint32_t *', s.done_seq)
+    local deadline = C.shm_now() + TIMEOUT
+    while true do
+      local d0 = done[0]
+      if d0 == seq then return true end
+      local left = deadline - C.shm_now()
+      if left <= 0 then return nil, 'the sim DCM did not apply the request within ' .. TIMEOUT .. ' s' end
+      C.shm_futex_wait(done, d0, math.min(left, 0.01))
+    end
+  end
+  return R
 end
 
 local function finite(x) return type(x) == 'number' and x == x and x ~= math.huge and x ~= -math.huge end
@@ -42,78 +81,60 @@ local function check_numbers(fname, ...)
   end
 end
 
-local function request(code, a, b, c, d)
-  local s = blocks()
-  local pid = sensor.dcm_pid[0]
-  if pid == 0 or C.shm_pid_alive(pid) == 0 then
-    return nil, 'no sim DCM is running for robot ' .. shm.robot_id() .. ' (start ./run_dcm)'
+-- The functions below, bound to one robot's blocks (R from make()).
+local function bind(S, R)
+  local blocks, request = R.blocks, R.request
+
+  -- The robot's torso and the ball, field frame.
+  function S.truth()
+    local s = blocks()
+    return s:read(function(x)
+      return {
+        x = x.robot[0], y = x.robot[1], z = x.robot[2],
+        yaw = x.robot[3], roll = x.robot[4], pitch = x.robot[5],
+        fallen = x.fallen[0] ~= 0,
+        ball = { x = x.ball[0], y = x.ball[1], z = x.ball[2], vx = x.ball[3], vy = x.ball[4] },
+      }
+    end)
   end
-  local seq
-  s:write(function(x)
-    x.request[0] = code
-    x.args[0], x.args[1], x.args[2], x.args[3] = a or 0, b or 0, c or 0, d or 0
-    seq = x.request_seq[0] + 1
-    x.request_seq[0] = seq
-  end)
-  -- a DCM in lockstep may be waiting on the participants: wake it
-  C.shm_fetch_add_u32(sync.done_count, 1)
-  C.shm_futex_wake(sync.done_count)
-  local done = ffi.cast('volatile uint32_t *', s.done_seq)
-  local deadline = C.shm_now() + TIMEOUT
-  while true do
-    local d0 = done[0]
-    if d0 == seq then return true end
-    local left = deadline - C.shm_now()
-    if left <= 0 then return nil, 'the sim DCM did not apply the request within ' .. TIMEOUT .. ' s' end
-    C.shm_futex_wait(done, d0, math.min(left, 0.01))
+
+  function S.reset() return request(REQUEST.reset) end
+
+  function S.teleport_robot(x, y, yaw)
+    check_numbers('teleport_robot', x, y, yaw or 0)
+    return request(REQUEST.teleport_robot, x, y, yaw or 0)
   end
+
+  function S.teleport_ball(x, y, vx, vy)
+    check_numbers('teleport_ball', x, y, vx or 0, vy or 0)
+    return request(REQUEST.teleport_ball, x, y, vx or 0, vy or 0)
+  end
+
+  function S.push(fx, fy, duration)
+    check_numbers('push', fx, fy, duration)
+    if duration < 0 then error('Sim.push: duration must be >= 0', 2) end
+    return request(REQUEST.push, fx, fy, duration)
+  end
+
+  function S.press_button(i, duration)
+    if i ~= 1 and i ~= 2 then error('Sim.press_button: button must be 1 or 2', 2) end
+    check_numbers('press_button', duration or 0.1)
+    return request(REQUEST.button, i - 1, duration or 0.1)
+  end
+
+  -- Goals scored into the goal at +x and into the goal at -x.
+  function S.score()
+    local s = blocks()
+    local plus, minus = s:read(function(x) return x.score[0], x.score[1] end)
+    return plus, minus
+  end
+
+  -- Simulated seconds per wall second, as measured by the DCM.
+  function S.realtime_factor() return blocks().realtime_factor[0] end
+  return S
 end
 
--- The robot's torso and the ball, field frame.
-function M.truth()
-  local s = blocks()
-  return s:read(function(x)
-    return {
-      x = x.robot[0], y = x.robot[1], z = x.robot[2],
-      yaw = x.robot[3], roll = x.robot[4], pitch = x.robot[5],
-      fallen = x.fallen[0] ~= 0,
-      ball = { x = x.ball[0], y = x.ball[1], z = x.ball[2], vx = x.ball[3], vy = x.ball[4] },
-    }
-  end)
-end
-
-function M.reset() return request(REQUEST.reset) end
-
-function M.teleport_robot(x, y, yaw)
-  check_numbers('teleport_robot', x, y, yaw or 0)
-  return request(REQUEST.teleport_robot, x, y, yaw or 0)
-end
-
-function M.teleport_ball(x, y, vx, vy)
-  check_numbers('teleport_ball', x, y, vx or 0, vy or 0)
-  return request(REQUEST.teleport_ball, x, y, vx or 0, vy or 0)
-end
-
-function M.push(fx, fy, duration)
-  check_numbers('push', fx, fy, duration)
-  if duration < 0 then error('Sim.push: duration must be >= 0', 2) end
-  return request(REQUEST.push, fx, fy, duration)
-end
-
-function M.press_button(i, duration)
-  if i ~= 1 and i ~= 2 then error('Sim.press_button: button must be 1 or 2', 2) end
-  check_numbers('press_button', duration or 0.1)
-  return request(REQUEST.button, i - 1, duration or 0.1)
-end
-
--- Goals scored into the goal at +x and into the goal at -x.
-function M.score()
-  local s = blocks()
-  local plus, minus = s:read(function(x) return x.score[0], x.score[1] end)
-  return plus, minus
-end
-
--- Simulated seconds per wall second, as measured by the DCM.
-function M.realtime_factor() return blocks().realtime_factor[0] end
+bind(M, make(nil))
+function M.of(id) return bind({}, make(id)) end
 
 return M

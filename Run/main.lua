@@ -5,6 +5,8 @@
 --   ./run_main                      motion, vision and behavior
 --   ./run_main motion [vision ...]  a subset
 --   ./run_main --sim [names]        also starts the simulator (./run_dcm) first: one robot, headless
+--   ./run_main --record [DIR]       also records every shm block into MCAP files (Run/recorder; DIR, else
+--                                   Config's recorder.dir)
 --   options: --dcm-arg ARG (repeatable, passed to ./run_dcm), --no-restart, --quiet,
 --            --script NAME=FILE (run FILE, relative to the repository root, as process NAME),
 --            --hang-after S (default 2; 0: off): a process that makes no progress while its input
@@ -26,19 +28,24 @@ local SCRIPT = {
 
 local function usage(msg)
   if msg then io.stderr:write('run_main: ', msg, '\n') end
-  io.stderr:write('usage: ./run_main [--sim] [--dcm-arg ARG]... [--script NAME=FILE]... [--no-restart]',
-    ' [--quiet] [--hang-after S] [motion|vision|behavior]...\n')
+  io.stderr:write('usage: ./run_main [--sim] [--record [DIR]] [--dcm-arg ARG]... [--script NAME=FILE]...',
+    ' [--no-restart] [--quiet] [--hang-after S] [motion|vision|behavior]...\n')
   os.exit(2)
 end
 
 -- ---- arguments
-local opts = { names = {}, sim = false, dcm_args = {}, restart = true, quiet = false, hang_after = 2.0 }
+local opts = { names = {}, sim = false, dcm_args = {}, restart = true, quiet = false, record = false,
+  hang_after = 2.0 }
 do
   local args = { ... }
   local i = 1
   while i <= #args do
     local a = args[i]
     if a == '--sim' then opts.sim = true
+    elseif a == '--record' then
+      opts.record = true
+      local dir = args[i + 1]
+      if dir and dir:sub(1, 1) ~= '-' and not SCRIPT[dir] then opts.record_dir, i = dir, i + 1 end
     elseif a == '--dcm-arg' then
       i = i + 1
       if not args[i] then usage('--dcm-arg needs a value') end
@@ -59,7 +66,8 @@ do
     else usage("unknown process or option '" .. a .. "'") end
     i = i + 1
   end
-  if #opts.names == 0 then opts.names = ALL end
+  -- under Replay the body and its motion are the recording's (Config/platforms/Replay/dcm.lua)
+  if #opts.names == 0 then opts.names = os.getenv('PLATFORM') == 'Replay' and { 'vision', 'behavior' } or ALL end
 end
 
 local function log(fmt, ...)
@@ -116,6 +124,11 @@ end
 if opts.sim then
   children[#children + 1] = { name = 'dcm', argv = { ROOT .. '/run_dcm', unpack(opts.dcm_args) },
     restarts = 0 }
+end
+if opts.record then
+  local argv = { ROOT .. '/build/bin/hrp_record', '--quiet' }
+  if opts.record_dir then argv[3], argv[4] = '--dir', opts.record_dir end
+  children[#children + 1] = { name = 'recorder', argv = argv, restarts = 0 }
 end
 for _, name in ipairs(opts.names) do
   local script = SCRIPT[name]:sub(1, 1) == '/' and SCRIPT[name] or ROOT .. '/' .. SCRIPT[name]
@@ -284,7 +297,7 @@ while true do
       else
         log('%s ended (%s) after %.1f s', c.name, how, ran)
       end
-      if c.name ~= 'dcm' then safe_stance(c.name .. ' down') end
+      if c.name ~= 'dcm' and c.name ~= 'recorder' then safe_stance(c.name .. ' down') end
     end
   end
   if hangs then

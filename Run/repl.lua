@@ -22,6 +22,7 @@ env.blocks = blocks
 
 local Body = require('Body')
 env.Body = Body
+env.history = require('history')
 
 -- Optional modules: bound when present; a module that exists but fails to load is reported.
 local function optional(name)
@@ -90,6 +91,7 @@ hrp REPL (robot id %d, body %s, platform %s)
   Motion.owners()  Body.release('head')   a Body command takes a joint motion drives, until released
   blocks['dcm.sensor']:dump()  dcm_sensor.position[0]  dcm_actuator:set('hardness', 1)
   wait(seconds)       let the robot's clock advance
+  history('dcm.sensor.gyro', 2.0)   times and values of a field over the last 2 s (the recorder's ring)
   p(x)                print a table
   Sim.truth() Sim.reset() Sim.teleport_robot(x, y, yaw) Sim.teleport_ball(x, y) Sim.push(fx, fy, t)
   Motion.request('walk')  Walk.set_velocity(vx, vy, va)  Vision.ball()   (when loaded)

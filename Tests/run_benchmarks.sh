@@ -25,4 +25,5 @@ bench walk_sim Tests/bench/walk_sim.sh
 bench score_given_pose Tests/bench/score_given_pose.sh
 bench standup_op3 env ROBOT=op3 Tests/motion/standup_stats.sh
 bench standup_darwin env ROBOT=darwin Tests/motion/standup_stats.sh
+bench recorder Tests/bench/recorder.sh 20
 bench darwin_score env SCORE_NEED=9 bash Tests/scenarios/darwin_score_test.sh

@@ -68,4 +68,29 @@ return {
     -- behavior.lua's ready_pose); supporters by player number: even ones at y, odd ones at -y
     ready = { defender = { -3.0, 0.0, 0.0 }, supporter = { -2.0, 1.5, 0.0 }, goalkeeper = { -4.2, 0.0, 0.0 } },
   },
+  -- the automatic referee in the simulator (Run/referee.lua, a GameController: Tests/bench/match.sh).
+  -- Humanoid League KidSize numbers where the rules have one; s are simulated seconds.
+  referee = {
+    half_time = 300,           -- s of PLAYING per half (HL: 10 min; match.sh passes shorter ones)
+    initial_time = 2,          -- s in INITIAL before READY (robots beside the touch line)
+    ready_time = 45,           -- s in READY (HL: 45 s to reach the kick-off positions)
+    set_time = 5,              -- s in SET before the kick-off whistle
+    break_time = 5,            -- s of FINISHED at half time before the second half's INITIAL
+    first_kickoff = 1,         -- team (1 or 2, in the teams' order) taking the first kick-off
+    goalkeeper = 1,            -- player number flagged goalKeeper in both teams (0: none)
+    packet_period = 0.5,       -- s between GameController packets (the GameController sends 2 per s)
+    look_period = 0.1,         -- s between the referee's looks at the world
+    penalty_time = 30,         -- s a penalized robot stays off the field (HL standard penalty)
+    penalty_code = 34,         -- HL penalty: PICKUP_OR_INCAPABLE (fallen too long, left the field)
+    fallen_time = 20,          -- s a robot may lie before it is incapable (HL: it must get up itself)
+    outside = 0.3,             -- m the torso is beyond a line: the robot left the field
+    off_field = 0.6,           -- m beyond the touch line a penalized robot waits
+    start_x = 0.8,             -- m from the halfway line of the first robot beside the touch line ...
+    start_spacing = 0.9,       -- m ... and between robots of a team
+    touch = 0.35,              -- m: the robot nearest the ball, this near, touched it when ...
+    touch_dv = 0.15,           -- m/s: ... the ball's velocity changed this much in a look (rolling: 0.06)
+    setplay_prepare = 15,      -- s from a set play's call to the referee's execute
+    setplay_execute = 10,      -- s after execute until normal play (or the ball moved)
+    ball_moved = 0.2,          -- m the ball moves: a kick-off or set play is taken
+  },
 }

@@ -1,0 +1,65 @@
+#!/usr/bin/env bash
+# A whole match, unattended: two teams of PER_TEAM robots in one simulated world (lockstep), each
+# robot its own ROBOT_ID, run_main and site folder (team and player number), refereed by
+# Run/referee.lua (a GameController: packets, return packets, the sim's truth). Prints the events,
+# the result (goals, own goals, falls, penalties), the real-time factor and the CPU per process kind.
+#   Tests/bench/match.sh [PER_TEAM (2)] [HALF_SECONDS (300)] [SEED (1)] [READY_SECONDS (45)]
+# (make match, make match4). The referee's rules are Config/common/game.lua's `referee`; the half and
+# READY's length given here reach it through its own site folder (build/match/<id>/site_referee/game.lua).
+# env: ROBOT_ID (robots ROBOT_ID+270 ..; UDP ports derived from it), logs in build/match/<first id>/.
+# The robots' vision does not tell robots apart: robots of either team are not seen (only bumped into).
+set -u
+cd "$(dirname "$0")/../.." || exit 1
+source Run/env.sh
+N=${1:-2}
+HALF=${2:-300}
+SEED=${3:-1}
+READY=${4:-}
+ID=$(( ${ROBOT_ID:-46000} + 270 ))
+R=$((2 * N))
+DIR="$HRP_ROOT/build/match/$ID"
+mkdir -p "$DIR"
+# ports from the id: GameController and its return port, one team-message port per team
+GC_PORT=$((50000 + (ID % 5000) * 2))
+RET_PORT=$((GC_PORT + 1))
+TEAM_PORT=$((20000 + (ID % 5000) * 2))
+PIDS=()
+cleanup() {
+  for p in "${PIDS[@]}"; do kill -TERM "$p" 2>/dev/null; done
+  sleep 1
+  [ -n "${DCM:-}" ] && kill -TERM "$DCM" 2>/dev/null && wait "$DCM" 2>/dev/null
+  for i in $(seq 0 $((R - 1))); do Run/shm --robot $((ID + i)) remove >/dev/null 2>&1; done
+}
+trap cleanup EXIT
+# every robot's three processes and the referee join before the first tick: the same start every run
+ROBOT_ID=$ID ./run_dcm --lockstep-wait $((3 * R + 1)) --robots "$R" --seed "$SEED" --quiet \
+  >"$DIR/dcm.log" 2>&1 &
+DCM=$!
+sleep 1
+for i in $(seq 0 $((R - 1))); do
+  team=$((i < N ? 1 : 2)); player=$((i < N ? i + 1 : i - N + 1))
+  site="$DIR/site_${team}_${player}"
+  mkdir -p "$site"
+  cp Config/site/vision.lua "$site/"
+  printf 'return { team_number = %d, player_number = %d }\n' "$team" "$player" >"$site/behavior.lua"
+  ROBOT_ID=$((ID + i)) HRP_SITE="$site" HRP_GC_PORT=$GC_PORT HRP_GC_RETURN_PORT=$RET_PORT \
+    HRP_TEAM_PORT=$((TEAM_PORT + team - 1)) ./run_main --quiet >"$DIR/main_${team}_${player}.log" 2>&1 &
+  PIDS+=($!)
+done
+mkdir -p "$DIR/site_referee"
+printf 'return { referee = { half_time = %s%s } }\n' "$HALF" "${READY:+, ready_time = $READY}" \
+  >"$DIR/site_referee/game.lua"
+START=$(date +%s.%N)
+ROBOT_ID=$ID HRP_SITE="$DIR/site_referee" ./run_repl Run/referee.lua "$N" "$GC_PORT" "$RET_PORT" 2>&1 \
+  | tee "$DIR/referee.log"
+STATUS=${PIPESTATUS[0]}
+END=$(date +%s.%N)
+# where the time went: CPU seconds of each kind of process (the robots' processes are run_main's children)
+kids=$(for p in "${PIDS[@]}"; do pgrep -P "$p"; done | tr '\n' ',')
+ps -o times=,args= -p "${kids%,},$DCM" | awk -v wall="$(echo "$END - $START" | bc)" '
+  { k = $2; if ($2 ~ /dcm_sim/) k = "dcm_sim (physics, cameras)"; else if ($3 ~ /Motion/) k = "motion"
+    else if ($3 ~ /Vision/) k = "vision"; else if ($3 ~ /Behavior/) k = "behavior"
+    cpu[k] += $1; all += $1 }
+  END { printf "CPU over %.0f s wall (%.0f%% of one core in all):\n", wall, 100 * all / wall
+        for (k in cpu) printf "  %-28s %7.1f s  %5.1f%%\n", k, cpu[k], 100 * cpu[k] / all }'
+exit "$STATUS"
