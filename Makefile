@@ -2,15 +2,24 @@
 #   make        build every native part (runs `make deps` first if something is missing)
 #   make deps   install what Debian must provide (idempotent)
 #   make test   run every test; ends with one line "N passed, N failed"
-#   make clean  remove build/
+#   make soak   1 hour of play in the sim, memory/fd/shm growth per process (SOAK_SECONDS=600: 10 minutes)
+#   make sanitize  the C/C++ tests and DCM scenarios under ASan+UBSan (SANITIZE=thread: TSan)
+#   make clean  remove build/ (and the sanitizer builds)
 
+# SANITIZE=address,undefined (or thread) builds every native part instrumented into its own folder,
+# build-address-undefined/ (build-thread/), and leaves build/ alone: `make sanitize` runs the tests.
+comma := ,
+ifeq ($(SANITIZE),)
 BUILD := $(CURDIR)/build
-export BUILD
+else
+BUILD := $(CURDIR)/build-$(subst $(comma),-,$(SANITIZE))
+endif
+export BUILD SANITIZE
 # Every folder with a Makefile under Modules/, Platforms/ and Run/ is a native part.
 NATIVE_DIRS := $(sort $(dir $(wildcard Modules/*/Makefile Platforms/*/Makefile Run/*/Makefile)))
 DEPS_STAMP := $(BUILD)/.deps-ok
 
-.PHONY: all deps test clean bench sim match match4 $(NATIVE_DIRS)
+.PHONY: all deps test clean bench sim match match4 sanitize soak $(NATIVE_DIRS)
 
 all: $(DEPS_STAMP) $(NATIVE_DIRS)
 
@@ -60,5 +69,15 @@ match4: all
 bench: all
 	@Tests/run_benchmarks.sh
 
+# One robot playing in the sim (lockstep, camera on) for SOAK_SECONDS of robot time (1 hour; 600: the
+# 10-minute version), game restarts every 3 minutes: memory, fds and shm segments per process.
+SOAK_SECONDS ?= 3600
+soak: all
+	@Tests/soak/soak.sh $(SOAK_SECONDS)
+
+# The C/C++ tests and the DCM scenarios under ASan+UBSan (SANITIZE=thread: TSan), Tests/sanitize.sh.
+sanitize:
+	@SANITIZE=$(or $(SANITIZE),address$(comma)undefined) Tests/sanitize.sh
+
 clean:
-	rm -rf $(BUILD)
+	rm -rf $(BUILD) $(wildcard $(CURDIR)/build-*)

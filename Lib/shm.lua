@@ -24,6 +24,7 @@ int shm_block_open(const shm_schema *schema, const char *block, int robot_id, in
                    shm_block **out, char *err, size_t errlen);
 void shm_block_close(shm_block *b);
 int shm_block_unlink(const char *block, int robot_id);
+int shm_block_replaced(const shm_block *b);
 const shm_field *shm_block_field(const shm_block *b, int i);
 int shm_block_nfields(const shm_block *b);
 void *shm_field_ptr(shm_block *b, const char *field, int *type, int *count);
@@ -200,6 +201,12 @@ end
 -- Waits until the block's completed locked writes differ from `last`; returns the count.
 function Block:wait_write(last, timeout)
   return C.shm_wait_write(self._handle, last or 0, timeout or 1.0)
+end
+
+-- True when the block's name now leads to another segment or none (removed, or recreated with another
+-- layout while this process kept its mapping): what this process reads, nobody else writes any more.
+function Block:replaced()
+  return C.shm_block_replaced(self._handle) == 1
 end
 
 -- All fields as a table (for dumps).

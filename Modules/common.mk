@@ -11,6 +11,20 @@ OBJDIR    = $(BUILD)/obj/$(notdir $(CURDIR))
 
 CC       := gcc
 CXX      := g++
+# Sanitizer builds (make SANITIZE=address,undefined or SANITIZE=thread; the top Makefile puts them in
+# build-<sanitizers>/): the flags go into CC/CXX themselves, so every compile *and* link line,
+# shared libraries included, is instrumented (at the parts' own -O2/-O3); frame pointers keep the
+# reports' stack traces whole; UBSan stops at the first finding so a test fails instead of going on.
+ifneq ($(SANITIZE),)
+SAN_FLAGS := -fsanitize=$(SANITIZE) -fno-omit-frame-pointer
+ifneq ($(findstring undefined,$(SANITIZE)),)
+SAN_FLAGS += -fno-sanitize-recover=undefined
+endif
+CC       := gcc $(SAN_FLAGS)
+CXX      := g++ $(SAN_FLAGS)
+endif
+# never instrumented: a library preloaded before a sanitizer's runtime (the fake camera's shim)
+CC_PLAIN := gcc
 WARN     := -Wall -Wextra -Werror -Wshadow -Wno-unused-parameter
 CFLAGS   += -std=c11 -O2 -g -fPIC $(WARN) -D_GNU_SOURCE -I$(TOP)/Modules -I$(GENDIR) -DHRP_ROOT_DEFAULT='"$(TOP)"'
 CXXFLAGS += -std=c++17 -O2 -g -fPIC $(WARN) -D_GNU_SOURCE -I$(TOP)/Modules -I$(GENDIR) -DHRP_ROOT_DEFAULT='"$(TOP)"'

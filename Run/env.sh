@@ -2,6 +2,9 @@
 HRP_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 export HRP_ROOT
 export PATH="$HRP_ROOT/.venv/bin:$PATH"   # the project's Python (make deps)
+# where ./run_dcm finds the DCMs: build/, or a sanitizer build (make sanitize sets build-address-undefined);
+# the Lua processes always load build/lib (uninstrumented libraries: LuaJIT is not instrumented)
+export HRP_BUILD="${HRP_BUILD:-$HRP_ROOT/build}"
 export LUA_PATH="$HRP_ROOT/Lib/?.lua;$HRP_ROOT/Player/?.lua;$HRP_ROOT/?.lua;;"
 export PLATFORM="${PLATFORM:-Sim}"   # what serves the blocks: Sim, OP (Config/platforms/)
 export ROBOT="${ROBOT:-op3}"          # the body: op3, darwin, ... (Config/robots/)

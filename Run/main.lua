@@ -8,7 +8,9 @@
 --   ./run_main --record [DIR]       also records every shm block into MCAP files (Run/recorder; DIR, else
 --                                   Config's recorder.dir)
 --   options: --dcm-arg ARG (repeatable, passed to ./run_dcm), --no-restart, --quiet,
---            --script NAME=FILE (run FILE, relative to the repository root, as process NAME)
+--            --script NAME=FILE (run FILE, relative to the repository root, as process NAME),
+--            --hang-after S (default 2; 0: off): a process that makes no progress while its input
+--            moves on for S s of robot time is killed and restarted (Run/hang.lua)
 --
 -- A process X is `luajit Player/X/main.lua` (behavior: Player/Behavior/main.lua); one that does not
 -- exist yet is reported and skipped. Status and events go to stdout, one line each.
@@ -27,12 +29,13 @@ local SCRIPT = {
 local function usage(msg)
   if msg then io.stderr:write('run_main: ', msg, '\n') end
   io.stderr:write('usage: ./run_main [--sim] [--record [DIR]] [--dcm-arg ARG]... [--script NAME=FILE]...',
-    ' [--no-restart] [--quiet] [motion|vision|behavior]...\n')
+    ' [--no-restart] [--quiet] [--hang-after S] [motion|vision|behavior]...\n')
   os.exit(2)
 end
 
 -- ---- arguments
-local opts = { names = {}, sim = false, dcm_args = {}, restart = true, quiet = false, record = false }
+local opts = { names = {}, sim = false, dcm_args = {}, restart = true, quiet = false, record = false,
+  hang_after = 2.0 }
 do
   local args = { ... }
   local i = 1
@@ -52,6 +55,10 @@ do
       local name, file = (args[i] or ''):match('^(%w+)=(.+)$')
       if not name then usage('--script needs NAME=FILE') end
       SCRIPT[name] = file
+    elseif a == '--hang-after' then
+      i = i + 1
+      opts.hang_after = tonumber(args[i])
+      if not opts.hang_after or opts.hang_after < 0 then usage('--hang-after needs a number of seconds >= 0') end
     elseif a == '--no-restart' then opts.restart = false
     elseif a == '--quiet' then opts.quiet = true
     elseif a == '-h' or a == '--help' then usage()
@@ -76,6 +83,25 @@ end
 
 proc.block_signals()
 
+local sensor = shm.open('dcm.sensor')
+local stats = shm.open('dcm.stats')
+local motion = shm.open('motion')
+local vision = shm.open('vision')
+local world = shm.open('world')
+local game = shm.open('game')
+local sim = opts.sim and shm.open('sim') or nil
+
+-- hang detection: each process's progress counter against the input it works on
+local hangs
+if opts.hang_after > 0 then
+  local image = shm.open('camera.image')
+  hangs = require('Run.hang').new(opts.hang_after, {
+    motion = { progress = function() return motion.tick[0] end, input = function() return sensor.tick[0] end },
+    vision = { progress = function() return vision.frame[0] end, input = function() return image.frame[0] end },
+    behavior = { progress = function() return game.time[0] end, input = function() return sensor.tick[0] end },
+  })
+end
+
 -- ---- the children
 -- child = { name, argv, pid, started (wall s), restarts, next_start (wall s) }
 local children = {}
@@ -90,6 +116,7 @@ local function start(child)
   end
   child.pid, child.started, child.next_start = pid, shm.C.shm_now(), nil
   by_pid[pid] = child
+  if hangs then hangs:started(child.name, sensor.time[0]) end
   log('%s started (pid %d)', child.name, pid)
   return true
 end
@@ -111,14 +138,6 @@ for _, name in ipairs(opts.names) do
     log('%s: %s does not exist yet: not started', name, SCRIPT[name])
   end
 end
-
-local sensor = shm.open('dcm.sensor')
-local stats = shm.open('dcm.stats')
-local motion = shm.open('motion')
-local vision = shm.open('vision')
-local world = shm.open('world')
-local game = shm.open('game')
-local sim = opts.sim and shm.open('sim') or nil
 
 -- optional name tables (present once the other parts exist)
 local function try_require(name)
@@ -279,6 +298,15 @@ while true do
         log('%s ended (%s) after %.1f s', c.name, how, ran)
       end
       if c.name ~= 'dcm' and c.name ~= 'recorder' then safe_stance(c.name .. ' down') end
+    end
+  end
+  if hangs then
+    local name, stalled = hangs:check(sensor.time[0])
+    for _, c in ipairs(children) do
+      if c.name == name and c.pid then
+        log('%s (pid %d) made no progress for %.1f s of robot time: killing it', name, c.pid, stalled)
+        proc.signal(c.pid, proc.SIGKILL)   -- reaped and restarted above on the next round
+      end
     end
   end
   now = shm.C.shm_now()

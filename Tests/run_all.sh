@@ -60,8 +60,8 @@ for dir in $(find Tests -name '*_spec.lua' -printf '%h\n' | sort -u); do
   run "busted:$dir" luajit /usr/bin/busted --helper=Tests/helper.lua -o TAP --pattern=_spec "$dir"
 done
 
-# 3. C/C++ test programs
-for prog in $(find build/tests -maxdepth 1 -type f -executable 2>/dev/null | sort); do
+# 3. C/C++ test programs (HRP_BUILD: those of another build, e.g. a sanitizer build: Tests/sanitize.sh)
+for prog in $(find "${HRP_BUILD:-build}/tests" -maxdepth 1 -type f -executable 2>/dev/null | sort); do
   run "ctest:$(basename "$prog")" "$prog"
 done
 

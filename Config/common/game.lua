@@ -6,6 +6,10 @@ return {
   gamecontroller = {
     port = 3838,               -- UDP: the GameController's packets (RGme, HL version 12)
     return_port = 3939,        -- UDP: our return packets (RGrt version 2), to the sender's address
+    -- the network interface the GameController's packets come in on (the robot's team network;
+    -- '' = every interface); datagrams from anywhere else never reach the listener
+    interface = 'wlan0',
+    hosts = {},                -- the GameController's addresses ("10.0.0.2"); {}: any host on `interface`
     alive_period = 1.0,        -- s (robot clock) between "alive" return packets
     -- with no GameController packet seen: 'initial' waits there until a packet or the chest button
     -- (a real robot beside a real field); 'playing' starts playing `start_delay` s after start-up
@@ -35,6 +39,8 @@ return {
   team = {
     port_base = 10000,         -- UDP: each team broadcasts on port_base + its team number
     broadcast = '255.255.255.255',
+    interface = 'wlan0',       -- the team network (as gamecontroller.interface)
+    hosts = {},                -- the teammates' addresses; {}: any host on `interface`
     period = 0.5,              -- s (robot clock) between our messages
     lost_after = 3.0,          -- s without a message: the teammate is lost (its role is taken over)
     max_per_step = 32,         -- datagrams read per behavior step (a flood cannot stall the behavior)

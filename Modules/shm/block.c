@@ -18,6 +18,9 @@ _Static_assert(offsetof(shm_header, seq) == 128, "seq must start its own cache l
 
 struct shm_block {
   char name[SHM_NAME_MAX];
+  char segname[128];
+  dev_t dev;                /* the object mapped: a name that now leads elsewhere was replaced */
+  ino_t ino;
   uint8_t *base;
   size_t size;
   shm_header *hdr;
@@ -86,13 +89,16 @@ static int create_segment(const char *segname, const shm_block_decl *d, shm_bloc
                           size_t errlen) {
   int fd = shm_open(segname, O_RDWR | O_CREAT | O_EXCL, 0600);
   if (fd < 0) return -errno;
-  if (ftruncate(fd, (off_t)d->total_size) < 0) {
+  struct stat st;
+  if (ftruncate(fd, (off_t)d->total_size) < 0 || fstat(fd, &st) < 0) {
     int e = errno;
     snprintf(err, errlen, "shm %s: ftruncate: %s", segname, strerror(e));
     close(fd);
     shm_unlink(segname);
     return -e;
   }
+  b->dev = st.st_dev;
+  b->ino = st.st_ino;
   void *p = mmap(NULL, d->total_size, PROT_READ | PROT_WRITE, MAP_SHARED, fd, 0);
   close(fd);
   if (p == MAP_FAILED) {
@@ -214,6 +220,8 @@ static int attach_segment(const char *segname, const shm_block_decl *d, int writ
   }
   b->base = p;
   b->size = (size_t)st.st_size;
+  b->dev = st.st_dev;
+  b->ino = st.st_ino;
   return SEG_OK;
 }
 
@@ -237,8 +245,8 @@ int shm_block_open(const shm_schema *schema, const char *block, int robot_id, in
   shm_block *b = calloc(1, sizeof *b);
   if (!b) { shm_schema_free(own); snprintf(err, errlen, "out of memory"); return -ENOMEM; }
   snprintf(b->name, sizeof b->name, "%s", block);
-  char segname[128];
-  shm_segment_name(robot_id, block, segname, sizeof segname);
+  char *segname = b->segname;
+  shm_segment_name(robot_id, block, segname, sizeof b->segname);
   int create = (flags & SHM_OPEN_CREATE) && d;
   int rc = -EAGAIN;
   for (int attempt = 0; attempt < 5; attempt++) {
@@ -274,6 +282,15 @@ void shm_block_close(shm_block *b) {
   if (!b) return;
   munmap(b->base, b->size);
   free(b);
+}
+
+int shm_block_replaced(const shm_block *b) {
+  int fd = shm_open(b->segname, O_RDONLY, 0);
+  if (fd < 0) return errno == ENOENT ? 1 : -errno;
+  struct stat st;
+  int rc = fstat(fd, &st) == 0 ? (st.st_dev != b->dev || st.st_ino != b->ino) : -errno;
+  close(fd);
+  return rc;
 }
 
 int shm_block_unlink(const char *block, int robot_id) {

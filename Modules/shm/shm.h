@@ -105,6 +105,9 @@ int shm_block_open(const shm_schema *schema, const char *block, int robot_id, in
 void shm_block_close(shm_block *b);
 /* Removes the segment name (existing mappings stay valid). 0, or -ENOENT if absent. */
 int shm_block_unlink(const char *block, int robot_id);
+/* 1 if the block's name now leads to another segment or none (removed, or recreated with another
+ * layout, while this one stayed mapped): reopen it to see what others see. 0 same, <0 -errno. */
+int shm_block_replaced(const shm_block *b);
 
 shm_header *shm_block_header(shm_block *b);
 const char *shm_block_name(const shm_block *b);

@@ -157,6 +157,7 @@ class World {
   void link_pose(int r, int link, Vec3 *pos, Mat3 *rot) const;
 
  private:
+  void release();   // the ODE world, spaces, joints and geometry infos (destructor, failed construction)
   struct GeomInfo { int kind; int robot; int link; int sole; };   // kind: 0 ground/env, 1 ball, 2 robot
   struct Robot {
     const Model *m = nullptr;              // its body (in bodies_)

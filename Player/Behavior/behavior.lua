@@ -150,6 +150,7 @@ function Behavior:step()
     b.score[0], b.score[1] = gc.score[1], gc.score[2]
     b.packets[0] = gc.packets
     b.bad_packets[0] = gc.bad_packets
+    b.rejected[0] = gc.rejected
     b.secondary_state[0] = gc.secondary_state
     b.secondary_team[0], b.secondary_mode[0] = gc.secondary_team, gc.secondary_mode
     b.secondary_time[0] = gc.secondary_time

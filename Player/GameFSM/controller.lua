@@ -7,7 +7,9 @@
 --   local gc = require('GameFSM.controller').new(cfg)  -- cfg: team_number, player_number, gamecontroller
 --   gc:update(t, button_pressed)  -> state name ('initial' ... 'finished'), penalized (bool)
 --   gc:view()                     -> the game as the GameFSM reads it (set plays, kick-off, goalkeeper)
---   gc.packets, gc.bad_packets (malformed, truncated, foreign: ignored), gc.returns, gc.score
+--   gc.packets, gc.bad_packets (malformed, truncated, foreign: ignored), gc.returns, gc.score,
+--   gc.rejected (datagrams from a host not in gamecontroller.hosts: not even parsed)
+-- The socket hears only gamecontroller.interface (Player/GameFSM/udp.lua).
 local packet = require('GameFSM.packet')
 local udp = require('GameFSM.udp')
 
@@ -26,12 +28,13 @@ function M.new(cfg, opts)
       tostring(g.start_without)), 2)
   end
   local sock, err = opts.socket, nil
-  if sock == nil then sock, err = udp.listen(opts.port or g.port) end
+  if sock == nil then sock, err = udp.listen(opts.port or g.port, g.interface) end
   if sock == false then sock = nil end
   return setmetatable({
     cfg = cfg, sock = sock, socket_error = err, team = cfg.team_number, player = cfg.player_number,
     return_port = opts.return_port or g.return_port, sent = opts.sent,
     state = packet.STATE.initial, gc_penalized = false, manual_penalized = false,
+    allowed = udp.allow(g.hosts, 'game.lua gamecontroller.hosts'), rejected = 0,
     packets = 0, bad_packets = 0, foreign_packets = 0, returns = 0, gc_seen = false, gc_host = nil,
     t_start = nil, last_alive = -math.huge, button_prev = false, started = false,
     score = { 0, 0 }, team_colour = 0, kickoff_team = 0, secondary_state = 0, secondary_team = 0,
@@ -93,7 +96,7 @@ function Controller:update(t, button)
     for _ = 1, 64 do -- bounded: a flood cannot stall the behavior
       local data, host = self.sock:receive()
       if not data then break end
-      self:receive(data, host)
+      if self.allowed(host) then self:receive(data, host) else self.rejected = self.rejected + 1 end
     end
   end
   local g = self.cfg.gamecontroller

@@ -98,6 +98,12 @@ local hardness = actuator.hardness
 
 while true do
   local t = Body.wait_tick(tick, 1.0)
+  if not t and (sensor:replaced() or actuator:replaced()) then
+    -- a DCM restarted with another layout (or the blocks removed): the mappings held here are dead;
+    -- run_main starts a fresh process that opens what the DCM serves now
+    io.stderr:write('motion: dcm.sensor/dcm.actuator were replaced under this process: exiting for a restart\n')
+    os.exit(3)
+  end
   if t then
     tick = t
     -- sensors (one consistent snapshot)

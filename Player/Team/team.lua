@@ -2,8 +2,9 @@
 -- team's UDP port (Config/common/game.lua: team.port_base + team number) every `period` s of robot
 -- time, and teammates' messages read back into a fixed table per player number. Another team's
 -- messages (their colour), our own broadcasts heard back, and malformed ones (not a message, no
--- sender, a player number out of range) are ignored and counted; at most `max_per_step` datagrams
--- are read per step and the table never grows past `max_players`.
+-- sender, a player number out of range) are ignored and counted, and so are datagrams from a host
+-- not in `hosts` (when the config lists any); the socket hears only the configured `interface`; at
+-- most `max_per_step` datagrams are read per step and the table never grows past `max_players`.
 --
 --   local team = require('Team.team').new(cfg, opts)   -- cfg: team_number, player_number, team (game.lua)
 --   team:update(t, me)        me = { pose = {x, y, a}, confidence, ball = {x, y, vx, vy} (field) or nil,
@@ -23,11 +24,12 @@ function M.new(cfg, opts)
   local tc = cfg.team
   local port = opts.port or (tc.port_base + cfg.team_number)
   local sock, err = opts.socket, nil
-  if sock == nil then sock, err = udp.listen(port) end
+  if sock == nil then sock, err = udp.listen(port, tc.interface) end
   if sock == false then sock = nil end
   local self = setmetatable({
     cfg = tc, sock = sock, socket_error = err, port = port, player = cfg.player_number,
-    received = 0, foreign = 0, malformed = 0, own = 0, sent = 0, next_send = -math.huge,
+    allowed = udp.allow(tc.hosts, 'game.lua team.hosts'),
+    received = 0, foreign = 0, malformed = 0, own = 0, sent = 0, rejected = 0, next_send = -math.huge,
     colour = 0, slots = {},
   }, Team)
   for k = 1, tc.max_players do
@@ -82,9 +84,9 @@ function Team:update(t, me)
   self.colour = me.colour
   if self.sock then
     for _ = 1, self.cfg.max_per_step do
-      local data = self.sock:receive()
+      local data, host = self.sock:receive()
       if not data then break end
-      self:receive(data, t)
+      if self.allowed(host) then self:receive(data, t) else self.rejected = self.rejected + 1 end
     end
     if t >= self.next_send or t < self.next_send - self.cfg.period then -- due, or the clock restarted
       self.next_send = t + self.cfg.period
@@ -107,8 +109,8 @@ end
 
 function Team:publish(block, t)
   block:write(function(b)
-    b.received[0], b.foreign[0], b.malformed[0], b.own[0], b.sent[0] =
-      self.received, self.foreign, self.malformed, self.own, self.sent
+    b.received[0], b.foreign[0], b.malformed[0], b.own[0], b.sent[0], b.rejected[0] =
+      self.received, self.foreign, self.malformed, self.own, self.sent, self.rejected
     for k = 1, math.min(#self.slots, block:count('time')) do
       local s, i = self.slots[k], k - 1
       b.time[i] = s.t or 0

@@ -16,7 +16,7 @@ check() { if [ "$1" = 0 ]; then ok "$2"; else nok "$2"; fi; }
 DCM_PID=
 start_dcm() {   # start_dcm LOGNAME ARGS...
   local name=$1; shift
-  build/bin/dcm_sim "$@" >"$LOG/$name.log" 2>&1 &
+  "$HRP_BUILD/bin/dcm_sim" "$@" >"$LOG/$name.log" 2>&1 &
   DCM_PID=$!
   for _ in $(seq 100); do
     [ -n "$(luajit -e "local s=require('shm'); local b=s.open('dcm.sensor',{try=true,attach=true}); io.write(b and b.dcm_pid[0]==$DCM_PID and 'y' or '')" 2>/dev/null)" ] && return 0
@@ -98,7 +98,7 @@ t.joints = rev
 return t
 LUA
 DCM_PID=
-HRP_ROOT=$tmp build/bin/dcm_sim --lockstep --robots op3,op3r --seed 1 >"$LOG/bodies.log" 2>&1 &
+HRP_ROOT=$tmp "$HRP_BUILD/bin/dcm_sim" --lockstep --robots op3,op3r --seed 1 >"$LOG/bodies.log" 2>&1 &
 DCM_PID=$!
 sleep 1
 out=$(timeout 60 ./run_repl -e '
@@ -116,7 +116,7 @@ echo "$out" | sed 's/^/# /'
 head -1 "$LOG/bodies.log" | sed 's/^/# /'
 grep -q "op3 $ID, op3r $((ID + 1))" "$LOG/bodies.log" && echo "$out" | grep -Eq 'r2_head_pan 0\.(49|50)[0-9] r2_first -?0\.00[0-9] r1_head_pan -?0\.00[0-9] fallen 0 0'
 check $? "two bodies in one world: each robot id its body's joint order (op3 and op3r)"
-err=$(HRP_ROOT=$tmp timeout 10 build/bin/dcm_sim --robots op3,nobody --quiet 2>&1)
+err=$(HRP_ROOT=$tmp timeout 10 "$HRP_BUILD/bin/dcm_sim" --robots op3,nobody --quiet 2>&1)
 echo "# $err"
 echo "$err" | grep -q "unknown robot 'nobody'"
 check $? "an unknown body in --robots is named"
@@ -137,7 +137,7 @@ if start_dcm realtime --quiet; then
   echo "$out" | sed 's/^/# /'
   echo "$out" | grep -Eq 'err 0\.00[0-9]+ fallen false trips [1-9]'
   check $? "real time: with its Lua side gone the robot holds the stance (watchdog trip counted)"
-  err=$(timeout 10 build/bin/dcm_sim --quiet 2>&1); rc=$?
+  err=$(timeout 10 "$HRP_BUILD/bin/dcm_sim" --quiet 2>&1); rc=$?
   echo "# second DCM: $err"
   [ $rc -ne 0 ] && echo "$err" | grep -q "another DCM (pid $DCM_PID) is running"
   check $? "a second DCM on the same robot id is refused, naming the running one's pid"
@@ -205,13 +205,13 @@ tmp=$(mktemp -d)
 cp -r Config "$tmp/"
 sed 's#<mass value="1.34928"/>##' Config/robots/op3/op3.urdf >"$tmp/Config/robots/op3/op3.urdf"
 cp -r Lib "$tmp/"
-err=$(HRP_ROOT=$tmp HRP_SCHEMA=$HRP_ROOT/Config/shm.schema timeout 10 build/bin/dcm_sim --quiet 2>&1)
+err=$(HRP_ROOT=$tmp HRP_SCHEMA=$HRP_ROOT/Config/shm.schema timeout 10 "$HRP_BUILD/bin/dcm_sim" --quiet 2>&1)
 rc=$?
 echo "# $err"
 [ $rc -ne 0 ] && echo "$err" | grep -q "op3.urdf" && echo "$err" | grep -q "body_link"
 check $? "a robot file with a missing <mass> stops start-up naming file and link"
 rm -f "$tmp/Config/robots/op3/op3.urdf"
-err=$(HRP_ROOT=$tmp timeout 10 build/bin/dcm_sim --quiet 2>&1)
+err=$(HRP_ROOT=$tmp timeout 10 "$HRP_BUILD/bin/dcm_sim" --quiet 2>&1)
 rc=$?
 echo "# $err"
 [ $rc -ne 0 ] && echo "$err" | grep -q "op3.urdf"

@@ -95,6 +95,29 @@ static void test_create_attach(void) {
   shm_schema_free(s);
 }
 
+/* A block removed or recreated while a process keeps its mapping: the process can tell (issue 17:
+ * no process misreads a recreated segment). */
+static void test_replaced(void) {
+  char err[512];
+  shm_schema *s = NULL;
+  shm_schema_load(write_file("a.schema", SCHEMA_A), &s, err, sizeof err);
+  shm_block_unlink("t.a", robot);
+  shm_block *w = NULL, *r = NULL, *again = NULL;
+  int rc = shm_block_open(s, "t.a", robot, SHM_OPEN_CREATE, &w, err, sizeof err);
+  rc |= shm_block_open(s, "t.a", robot, 0, &r, err, sizeof err);
+  check(rc == 0 && shm_block_replaced(w) == 0 && shm_block_replaced(r) == 0,
+        "creator and attacher: the name leads to their segment");
+  shm_block_unlink("t.a", robot);
+  check(shm_block_replaced(r) == 1, "a removed block is seen as replaced by who still maps it");
+  rc = shm_block_open(s, "t.a", robot, SHM_OPEN_CREATE, &again, err, sizeof err);
+  check(rc == 0 && shm_block_replaced(r) == 1 && shm_block_replaced(w) == 1 && shm_block_replaced(again) == 0,
+        "a recreated block: the old mappings are replaced, the new one is not");
+  if (again) shm_block_close(again);
+  shm_block_close(r);
+  shm_block_close(w);
+  shm_schema_free(s);
+}
+
 static void test_layout_mismatch(void) {
   char err[512];
   shm_schema *a = NULL, *b = NULL;
@@ -247,6 +270,7 @@ int main(void) {
   mkdir(dir, 0700);
   test_schema_errors();
   test_create_attach();
+  test_replaced();
   test_layout_mismatch();
   test_seqlock_consistency();
   test_dead_writer();
