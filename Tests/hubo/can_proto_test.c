@@ -267,7 +267,8 @@ static void bus_bookkeeping(void) {
   hcan_net_rx(&n, &e2);
   hcan_net_end_cycle(&n, 3);
   check(!n.b[j3].dead, "it answers in time again: alive");
-  hcan_frame bad = F(0x063, 9);
+  hcan_frame bad = F(0x063, 0);   /* a DLC over 8 set by hand: F() fills only what it was given */
+  bad.dlc = 9;
   check(hcan_net_rx(&n, &bad) == -1, "DLC 9 is refused");
   hcan_frame fault = F(0x153, 8, 0x63, 0x04, 0, 0, 0x63, 0, 0, 0);
   hcan_net_owe(&n, j3, HCAN_R_STATUS);
