@@ -247,7 +247,9 @@ for _, body in ipairs(BODIES) do
       run(20000)
       local grown = collectgarbage('count') - before
       collectgarbage('restart')
-      assert.is_true(grown < 1, string.format('%.1f KiB allocated', grown))
+      -- a per-call allocation of even 16 bytes would be ~300 KiB over 20000 calls; a late side trace
+      -- of the JIT may still allocate a little (1.2 KiB seen once on a loaded machine)
+      assert.is_true(grown < 16, string.format('%.1f KiB allocated in 20000 calls', grown))
     end)
 
     it('arm IK of the chain\'s length reaches hand points made by FK', function()
