@@ -1,3 +1,4 @@
+-- luacheck: std +busted
 -- Run/hang.lua: which process the manager judges hung, on the robot clock.
 local hang = require('Run.hang')
 
