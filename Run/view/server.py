@@ -2,7 +2,7 @@
 """The live view's server (./run_view): serves the page in Run/view/www and streams every shm block of
 the robots named by --ids as Server-Sent Events; camera frames as JPEG and the colour labels as PNG.
 
-    ./run_view [--ids 1,2] [--port 8080] [--bind 127.0.0.1] [--rate 30] [--fps 10]
+    ./run_view [--ids 1,2] [--port 8080] [--bind 127.0.0.1] [--rate 30] [--fps 10] [--max-clients 8]
 
 Blocks are read through their own field tables (Run/shm_read.py), so a field added to
 Config/shm.schema reaches the page with no code. Only blocks that changed since the last sample are
@@ -87,8 +87,9 @@ class Robot:
 class Hub:
     """The sampler and the clients' pending updates."""
 
-    def __init__(self, ids, rate, fps, lut, colors):
+    def __init__(self, ids, rate, fps, lut, colors, max_clients):
         self.robots = [Robot(i) for i in ids]
+        self.max_clients = max_clients
         self.rate, self.fps, self.lut, self.colors = rate, fps, lut, colors
         self.cond = threading.Condition()
         self.clients = []        # each a dict: robot id -> {block: value}
@@ -97,7 +98,10 @@ class Hub:
         self.sample_time = 0.0   # s spent in the last sample (reads, JSON, images)
 
     def add_client(self):
+        """A new client's pending updates (all blocks first), or None when max_clients are connected."""
         with self.cond:
+            if len(self.clients) >= self.max_clients:
+                return None
             pending = {str(r.id): dict(r.state) for r in self.robots}
             self.clients.append(pending)
             return pending
@@ -192,6 +196,7 @@ class Hub:
 def make_handler(hub, meta_json):
     class Handler(BaseHTTPRequestHandler):
         server_version = "hrp-view"
+        timeout = 20   # s a write may block: a client that stops reading is dropped, its slot freed
 
         def log_message(self, *args):   # quiet: one line per request would flood the console
             pass
@@ -225,12 +230,14 @@ def make_handler(hub, meta_json):
             return self.send(404, "text/plain", f"no such page: {path}\n".encode())
 
         def events(self):
-            self.send_response(200)
-            self.send_header("Content-Type", "text/event-stream")
-            self.send_header("Cache-Control", "no-store")
-            self.end_headers()
             pending = hub.add_client()
+            if pending is None:
+                return self.send(503, "text/plain", f"{hub.max_clients} clients are connected already\n".encode())
             try:
+                self.send_response(200)
+                self.send_header("Content-Type", "text/event-stream")
+                self.send_header("Cache-Control", "no-store")
+                self.end_headers()
                 while True:
                     updates, stamp = hub.take(pending, 10.0)
                     if updates is None:
@@ -264,6 +271,7 @@ def parse_args(argv):
                     help="address to listen on (default 127.0.0.1: this machine only; 0.0.0.0: every network)")
     ap.add_argument("--rate", type=float, default=30.0, help="block samples per second (default 30)")
     ap.add_argument("--fps", type=float, default=10.0, help="camera frames per second at most (default 10)")
+    ap.add_argument("--max-clients", type=int, default=8, help="event streams served at once (default 8)")
     a = ap.parse_args(argv)
     try:
         a.ids = [int(x) for x in a.ids.split(",") if x.strip()]
@@ -284,7 +292,7 @@ def main(argv):
         lut = camera.load_lut(lut_path)
     colors = json.loads(meta)["config"]["vision"]["colors"]
     meta_json = json.dumps({"ids": a.ids, "meta": json.loads(meta)}).encode()
-    hub = Hub(a.ids, a.rate, a.fps, lut, colors)
+    hub = Hub(a.ids, a.rate, a.fps, lut, colors, a.max_clients)
     threading.Thread(target=hub.run, daemon=True, name="sampler").start()
     try:
         httpd = ThreadingHTTPServer((a.bind, a.port), make_handler(hub, meta_json))

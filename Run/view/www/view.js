@@ -23,7 +23,7 @@ const fmt = (x, d = 2) => (x === null || x === undefined || !isFinite(x)) ? '–
 const view = {
   ids: [], meta: null, sel: null, blocks: {}, field: null, plots: null, joint: 8,
   lat: { server: [], probe: [] }, lastProbe: {}, cpu: null, frames: 0, messages: 0,
-  cam: { img: null, labels: null, info: null }, dirty: true, connected: false,
+  cam: { img: null, labels: null, info: null }, detections: [], dirty: true, connected: false,
 };
 
 function robotName(i) { return view.meta.config.robot.joints[i] ?? `joint ${i}`; }
@@ -44,6 +44,7 @@ function selectRobot(id) {
   document.querySelectorAll('nav button').forEach(b => b.classList.toggle('sel', b.dataset.id === view.sel));
   Object.values(view.plots).forEach(p => p.clear());
   view.cam = { img: null, labels: null, info: null };
+  view.detections = [];
   view.dirty = true;
 }
 
@@ -76,10 +77,26 @@ function onMessage(ev) {
       }
       view.lastProbe[rid] = blk.bench.k[0];
     }
+    if (rid === view.sel && blk.vision) keepDetection(blk.vision);
     if (rid === view.sel && blk.camera) loadCamera(rid, blk.camera);
     addSamples(rid, blk);
   }
   view.dirty = true;
+}
+
+// The vision's detections of the last frames: the one drawn over a camera frame is that frame's own
+// (the vision block runs ahead of the frames shown).
+function keepDetection(v) {
+  view.detections.push(v);
+  if (view.detections.length > 60) view.detections.shift();
+}
+function detectionFor(info) {
+  let best = null;
+  for (const v of view.detections) {
+    if (v.frame[0] === info.frame) return v;
+    if (Math.abs(v.time[0] - info.time) < 0.02 && (!best || Math.abs(v.time[0] - info.time) < Math.abs(best.time[0] - info.time))) best = v;
+  }
+  return best;
 }
 
 function loadCamera(rid, info) {
@@ -127,13 +144,16 @@ function drawCamera() {
     g.drawImage(cam.labels, 0, 0, c.width, c.height);
     g.globalAlpha = 1; g.imageSmoothingEnabled = true;
   }
-  const v = (view.blocks[view.sel] || {}).vision, kx = c.width / cam.info.width, ky = c.height / cam.info.height;
-  view.camBall = !!(v && v.ball_detected[0] && Math.abs(v.time[0] - cam.info.time) < 0.2);
+  const v = detectionFor(cam.info), kx = c.width / cam.info.width, ky = c.height / cam.info.height;
+  view.camBall = !!(v && v.ball_detected[0]);
   if (view.camBall) {
     g.strokeStyle = '#00e5ff'; g.lineWidth = 2; g.beginPath();
     g.arc(v.ball_image[0] * kx, v.ball_image[1] * ky, Math.max(6, v.ball_radius[0] * kx + 4), 0, 2 * Math.PI); g.stroke();
-    g.font = '12px system-ui'; g.fillStyle = '#00e5ff';
-    g.fillText(`ball ${fmt(Math.hypot(v.ball_position[0], v.ball_position[1]))} m`, v.ball_image[0] * kx + 12, v.ball_image[1] * ky - 10);
+    const text = `ball ${fmt(Math.hypot(v.ball_position[0], v.ball_position[1]))} m`;
+    g.font = '12px system-ui'; const tw = g.measureText(text).width;
+    const tx = Math.min(c.width - tw - 6, v.ball_image[0] * kx + 10), ty = Math.max(16, v.ball_image[1] * ky - 10);
+    g.fillStyle = 'rgba(0,0,0,0.6)'; g.fillRect(tx - 3, ty - 12, tw + 6, 16);
+    g.fillStyle = '#00e5ff'; g.fillText(text, tx, ty);
   }
   $('cam-info').textContent = `frame ${cam.info.frame} · t ${fmt(cam.info.time)} s · head ${fmt(cam.info.head[0] * DEG, 0)}°/${fmt(cam.info.head[1] * DEG, 0)}°` +
     (v ? ` · vision ${fmt(v.fps[0], 1)} fps, posts ${v.goal_posts[0]}` : '');
