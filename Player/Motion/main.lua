@@ -157,6 +157,10 @@ while true do
       m.fall_time[0] = ctl.fall_time
       m.odometry[0], m.odometry[1], m.odometry[2] = w.uTorso[1], w.uTorso[2], w.uTorso[3]
       m.walk_velocity[0], m.walk_velocity[1], m.walk_velocity[2] = w.vel[1], w.vel[2], w.vel[3]
+      -- the walk's plan for the live view (Run/view) and the logs
+      m.zmp[0], m.zmp[1], m.com[0], m.com[1] = w.zmp[1], w.zmp[2], w.com[1], w.com[2]
+      m.left_foot[0], m.left_foot[1], m.left_foot[2] = w.uLeft[1], w.uLeft[2], w.uLeft[3]
+      m.right_foot[0], m.right_foot[1], m.right_foot[2] = w.uRight[1], w.uRight[2], w.uRight[3]
       for i = 1, n do m.owner[i - 1] = ctl.owner[i] end
       m.tick[0] = tick
     end)

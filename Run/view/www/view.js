@@ -23,7 +23,7 @@ const fmt = (x, d = 2) => (x === null || x === undefined || !isFinite(x)) ? '–
 const view = {
   ids: [], meta: null, sel: null, blocks: {}, field: null, plots: null, joint: 8,
   lat: { server: [], probe: [] }, lastProbe: {}, cpu: null, frames: 0, messages: 0,
-  cam: { img: null, labels: null, info: null }, detections: [], dirty: true, connected: false,
+  cam: { img: null, labels: null, info: null }, detections: [], walkTrail: [], dirty: true, connected: false,
 };
 
 function robotName(i) { return view.meta.config.robot.joints[i] ?? `joint ${i}`; }
@@ -45,12 +45,14 @@ function selectRobot(id) {
   Object.values(view.plots).forEach(p => p.clear());
   view.cam = { img: null, labels: null, info: null };
   view.detections = [];
+  view.walkTrail = [];
   view.dirty = true;
 }
 
 function addSamples(rid, blk) {
   if (rid !== view.sel || !blk['dcm.sensor']) return;
   const b = view.blocks[rid], s = b['dcm.sensor'], t = s.time[0];
+  if (blk.motion) keepWalk(blk.motion, t);
   const a = b['dcm.actuator'], v = b.vision, w = b.world, st = b['dcm.stats'];
   view.plots.joint.add(t, [a ? a.command[view.joint] : null, s.position[view.joint]]);
   view.plots.imu.add(t, [s.angle[0] * DEG, s.angle[1] * DEG]);
@@ -195,12 +197,44 @@ function drawJoints() {
   $('joints').innerHTML = rows.join('');
 }
 
+// The walk's plan in the torso frame (x forward: up the canvas): both feet (position and heading),
+// the COM and the ZMP now and over the last 1.5 s (motion block, odometry frame).
+function keepWalk(m, t) {
+  if (!m.zmp) return;
+  const h = view.walkTrail;
+  if (h.length && t < h[h.length - 1].t) h.length = 0;
+  h.push({ t, zmp: m.zmp, com: m.com });
+  while (h.length && h[0].t < t - 1.5) h.shift();
+}
 function drawWalk() {
-  const b = view.blocks[view.sel] || {};
-  const walk = b.walk;
-  $('walk').innerHTML = walk
-    ? Object.entries(walk).map(([k, v]) => `<div>${k}: ${v.map(x => fmt(x, 3)).join(' ')}</div>`).join('')
-    : 'ZMP, COM: not in shm yet (a <code>walk</code> block added to Config/shm.schema shows here)';
+  const c = $('walk'), g = c.getContext('2d'), m = (view.blocks[view.sel] || {}).motion;
+  g.fillStyle = '#181c22'; g.fillRect(0, 0, c.width, c.height);
+  g.font = '11px system-ui'; g.fillStyle = '#8a939e';
+  if (!m || !m.zmp) { g.fillText('no walk fields in the motion block', 8, 20); return; }
+  const o = m.odometry, co = Math.cos(o[2]), si = Math.sin(o[2]), S = 400;
+  const px = p => {   // odometry frame -> torso frame -> canvas (forward up, left to the left)
+    const dx = p[0] - o[0], dy = p[1] - o[1], x = co * dx + si * dy, y = -si * dx + co * dy;
+    return [c.width / 2 - y * S, c.height / 2 - x * S];
+  };
+  g.strokeStyle = '#2c333c'; g.beginPath();
+  g.moveTo(c.width / 2, 0); g.lineTo(c.width / 2, c.height); g.moveTo(0, c.height / 2); g.lineTo(c.width, c.height / 2); g.stroke();
+  g.fillText('10 cm', 6, c.height - 6); g.fillRect(40, c.height - 10, 0.1 * S, 2);
+  const trail = (key, color) => {
+    g.strokeStyle = color; g.lineWidth = 1.2; g.beginPath();
+    view.walkTrail.forEach((s, i) => { const [u, v] = px(s[key]); if (i) g.lineTo(u, v); else g.moveTo(u, v); });
+    g.stroke();
+  };
+  trail('com', 'rgba(95,211,141,0.6)'); trail('zmp', 'rgba(255,107,107,0.6)');
+  for (const f of [m.left_foot, m.right_foot]) {   // a triangle pointing along the foot's heading
+    const [u, v] = px(f), a = f[2] - o[2], fx = -Math.sin(a), fy = -Math.cos(a);
+    g.fillStyle = '#ffd60a'; g.beginPath();
+    g.moveTo(u + fx * 10, v + fy * 10); g.lineTo(u - fx * 6 - fy * 6, v - fy * 6 + fx * 6); g.lineTo(u - fx * 6 + fy * 6, v - fy * 6 - fx * 6);
+    g.closePath(); g.fill();
+  }
+  const [cu, cv] = px(m.com), [zu, zv] = px(m.zmp);
+  g.fillStyle = '#5fd38d'; g.beginPath(); g.arc(cu, cv, 4, 0, 2 * Math.PI); g.fill();
+  g.strokeStyle = '#ff6b6b'; g.lineWidth = 2; g.beginPath();
+  g.moveTo(zu - 4, zv - 4); g.lineTo(zu + 4, zv + 4); g.moveTo(zu + 4, zv - 4); g.lineTo(zu - 4, zv + 4); g.stroke();
 }
 
 function drawRaw() {
@@ -225,9 +259,10 @@ function frame(ts) {
   view.field.draw(robotsForField());
   drawCamera();
   Object.values(view.plots).forEach(p => p.draw());
+  drawWalk();
   if (ts - lastSlow > 250) {   // text panels: 4 Hz is enough to read
     lastSlow = ts;
-    drawState(); drawJoints(); drawWalk(); drawRaw(); drawLink();
+    drawState(); drawJoints(); drawRaw(); drawLink();
   }
 }
 
