@@ -150,6 +150,10 @@ function M.clamp_velocity(p, vx, vy, va)
   return vx, vy, va
 end
 
+-- The duration of one step. The analytic engine takes tStep as it is; an engine that plans on its
+-- own sample grid (Motion.walk_preview) rounds it to whole ticks.
+function Walk:step_time() return self.p.tStep end
+
 function Walk:set_velocity(vx, vy, va)
   local cx, cy, ca = M.clamp_velocity(self.p, vx, vy, va)
   if not cx then return nil, cy end
@@ -160,7 +164,7 @@ end
 function Walk:start()
   if not self.active then
     self.active = true
-    self.t = self.p.tStep -- a new step begins at the next update
+    self.t = self:step_time() -- a new step begins at the next update
     self.stepping = false
     self.support = nil
     self.steps_still = 0
@@ -174,7 +178,7 @@ function Walk:is_active() return self.active end
 -- Swing foot target for the step, given the support foot and the velocity.
 function Walk:step_target(support_u, swing_left, v)
   local p = self.p
-  local T = p.tStep
+  local T = self:step_time()
   local sgn = swing_left and 1 or -1
   local dx = v[1] * T
   -- sideways and turning: the foot on the side of the motion takes the whole step, the other returns
@@ -199,14 +203,15 @@ function Walk:step_target(support_u, swing_left, v)
 end
 
 -- rate-limits the current velocity towards the command over one step
-function Walk:update_velocity()
+function Walk:update_velocity(v, stopping)
   local p = self.p
-  local T = p.tStep
+  local T = self:step_time()
   local c = self.cmd
   local tx, ty, ta = c[1], c[2], c[3]
-  if self.stopping then tx, ty, ta = 0, 0, 0 end
+  if stopping == nil then stopping = self.stopping end
+  if stopping then tx, ty, ta = 0, 0, 0 end
   local acc = p.accLimit
-  local v = self.vel
+  v = v or self.vel
   v[1] = v[1] + clamp(tx - v[1], -acc[1] * T, acc[1] * T)
   v[2] = v[2] + clamp(ty - v[2], -acc[2] * T, acc[2] * T)
   v[3] = v[3] + clamp(ta - v[3], -acc[3] * T, acc[3] * T)
@@ -221,7 +226,7 @@ end
 
 function Walk:begin_step()
   local p = self.p
-  local T = p.tStep
+  local T = self:step_time()
   self.uLeft1, self.uRight1 = self.uLeft2, self.uRight2
   self.uTorso1 = self.uTorso2
   self:update_velocity()
@@ -257,11 +262,31 @@ function Walk:begin_step()
   end
   local mid = interp(0.5, self.uLeft2, self.uRight2)
   self.uTorso2 = pose_global({ p.supportX, 0, 0 }, mid)
-  local t1, t2 = p.phSingle[1] * T, p.phSingle[2] * T
-  lipm.solve(self.uTorso1[1], self.uSupport[1], self.uTorso2[1], T, t1, t2, p.tZmp, self.cx)
-  lipm.solve(self.uTorso1[2], self.uSupport[2], self.uTorso2[2], T, t1, t2, p.tZmp, self.cy)
+  self:plan_com(T, p.phSingle[1] * T, p.phSingle[2] * T)
   self.stats.steps = self.stats.steps + 1
   return true
+end
+
+-- The COM over the step that begins (engine-specific): the analytic engine solves the linear
+-- inverted pendulum for the step's piecewise-linear ZMP, from uTorso1 over uSupport to uTorso2.
+function Walk:plan_com(T, t1, t2)
+  local p = self.p
+  lipm.solve(self.uTorso1[1], self.uSupport[1], self.uTorso2[1], T, t1, t2, p.tZmp, self.cx)
+  lipm.solve(self.uTorso1[2], self.uSupport[2], self.uTorso2[2], T, t1, t2, p.tZmp, self.cy)
+end
+
+-- At stance: the COM over (x, y), the middle of the feet (an engine may bring it there over time).
+function Walk:hold_com(x, y)
+  self.com[1], self.com[2], self.comd[1], self.comd[2] = x, y, 0, 0
+  self.zmp[1], self.zmp[2] = x, y
+end
+
+-- COM position and velocity and the ZMP along x and y at time t of the current step, called once
+-- per tick while walking (an engine may advance its own state here).
+function Walk:com_at(t)
+  local x, xd, zx = lipm.eval(self.cx, t)
+  local y, yd, zy = lipm.eval(self.cy, t)
+  return x, xd, zx, y, yd, zy
 end
 
 -- Advances the walk by dt seconds and computes the foot poses in the torso frame (self.lpose,
@@ -269,7 +294,7 @@ end
 function Walk:advance(dt)
   local p = self.p
   if self.active then
-    local T = p.tStep
+    local T = self:step_time()
     self.t = self.t + dt
     if self.t >= T - 1e-9 then
       self.t = self.t - T
@@ -288,18 +313,16 @@ function Walk:advance(dt)
     local uy = 0.5 * (uL[2] + uR[2]) + sn * p.supportX
     copy3(self.uLeft, uL)
     copy3(self.uRight, uR)
-    self.com[1], self.com[2], self.comd[1], self.comd[2] = ux, uy, 0, 0
-    self.zmp[1], self.zmp[2] = ux, uy
-    set3(self.uTorso, ux, uy, a)
+    self:hold_com(ux, uy, dt)
+    set3(self.uTorso, self.com[1], self.com[2], a)
     self.ph = 0
     self.swing_z = 0
   else
-    local T = p.tStep
+    local T = self:step_time()
     local t = self.t
     local ph = t / T
     self.ph = ph
-    local x, xd, zx = lipm.eval(self.cx, t)
-    local y, yd, zy = lipm.eval(self.cy, t)
+    local x, xd, zx, y, yd, zy = self:com_at(t, dt)
     self.com[1], self.com[2], self.comd[1], self.comd[2] = x, y, xd, yd
     self.zmp[1], self.zmp[2] = zx, zy
     local ph1, ph2 = p.phSingle[1], p.phSingle[2]
@@ -320,6 +343,13 @@ function Walk:advance(dt)
     local a2 = wrap(self.uLeft2[3] + 0.5 * wrap(self.uRight2[3] - self.uLeft2[3]))
     set3(self.uTorso, x, y, wrap(a1 + ph * wrap(a2 - a1)))
   end
+  self:place_feet()
+  return self.active
+end
+
+-- The foot poses in the torso frame (self.lpose, self.rpose) from the COM, the heading and the feet.
+function Walk:place_feet()
+  local p = self.p
   -- torso origin from the COM: subtract the COM offset (torso frame, rotated by the heading)
   local ta = self.uTorso[3]
   local ox, oy = self.com_offset[1] + p.footX, self.com_offset[2]
@@ -335,7 +365,6 @@ function Walk:advance(dt)
   local uL, uR = self.uLeft, self.uRight
   foot_in_torso(self.lpose, uL[1], uL[2], lz, uL[3], tx, ty, tz, ta, tp, tr)
   foot_in_torso(self.rpose, uR[1], uR[2], rz, uR[3], tx, ty, tz, ta, tp, tr)
-  return self.active
 end
 
 -- Support phase weight: 0 in double support, 1 in single support (for feedback and compensation).
