@@ -260,11 +260,40 @@ function Walk:begin_step()
     self.uRight2 = self.uRight1
     self.uSupport = pose_global({ p.supportX, -sY, 0 }, self.uRight1)
   end
+  self:adjust_step()
   local mid = interp(0.5, self.uLeft2, self.uRight2)
   self.uTorso2 = pose_global({ p.supportX, 0, 0 }, mid)
   self:plan_com(T, p.phSingle[1] * T, p.phSingle[2] * T)
   self.stats.steps = self.stats.steps + 1
   return true
+end
+
+-- Step adjustment (capture point): when a push has moved the capture point away from where the walk
+-- plans it, the swing foot of the step that begins lands that much further (stepAdjust.gain beyond
+-- a dead band, at most stepAdjust.max), within the step limits. The error is estimated each tick
+-- from the IMU (Walk:joint_angles): the whole robot tips about its support foot, so the COM is off
+-- by h sin(tilt) and moves at h * tilt rate; the capture point error is that offset plus velocity
+-- over omega = 1 / tZmp.
+function Walk:adjust_step()
+  local p = self.p
+  local sa = rawget(p, 'stepAdjust')
+  local e = self.cp_err
+  if not sa or sa.gain <= 0 or not e then return end
+  local function beyond(v, d) if v > d then return v - d elseif v < -d then return v + d end return 0 end
+  local ox = clamp(sa.gain * beyond(e[1], sa.deadband[1]), -sa.max[1], sa.max[1])
+  local oy = clamp(sa.gain * beyond(e[2], sa.deadband[2]), -sa.max[2], sa.max[2])
+  if ox == 0 and oy == 0 then return end
+  local left = self.support == RIGHT
+  local sup = left and self.uRight1 or self.uLeft1
+  local target = left and self.uLeft2 or self.uRight2
+  local rel = pose_relative(target, sup)
+  -- the offset is in the heading frame (torso); the swing foot's frame is close enough to it
+  local sgn = left and 1 or -1
+  rel[1] = clamp(rel[1] + ox, p.stepLimitX[1], p.stepLimitX[2])
+  rel[2] = sgn * clamp(sgn * (rel[2] + oy), p.stepLimitY[1], p.stepLimitY[2])
+  local adjusted = pose_global(rel, sup)
+  if left then self.uLeft2 = adjusted else self.uRight2 = adjusted end
+  self.stats.adjusted = (self.stats.adjusted or 0) + 1
 end
 
 -- The COM over the step that begins (engine-specific): the analytic engine solves the linear
@@ -499,6 +528,7 @@ function Walk:joint_angles(q, sensors, dt, support)
   gf[1] = gf[1] + alpha * (g[1] - gf[1])
   gf[2] = gf[2] + alpha * (g[2] - gf[2])
   local gx, gy = deadband(gf[1], fb.gyroDeadband[1]), deadband(gf[2], fb.gyroDeadband[2])
+  self:estimate_capture_error(sensors, g)
   local lim = fb.maxCorrection
   local ankx, anky = clamp(fb.ankle[1] * gx, -lim, lim), clamp(fb.ankle[2] * gy, -lim, lim)
   local kny = clamp(fb.knee * gy, -lim, lim)
@@ -538,6 +568,20 @@ function Walk:joint_angles(q, sensors, dt, support)
     if arm.roll then add_rot(self, q, arm.roll, armx, 0) end
   end
   return flags
+end
+
+-- The capture point's error (heading frame, m) from the IMU's tilt and rate (see adjust_step).
+-- Positive pitch tips the top forward (+x), positive roll tips it to the right (-y).
+function Walk:estimate_capture_error(sensors, gyro)
+  local angle = sensors.angle
+  if not angle then return end
+  local p = self.p
+  local h = p.tZmp * p.tZmp * 9.81
+  local e = self.cp_err or { 0, 0 }
+  self.cp_err = e
+  local pitch, roll = angle[2] - p.bodyTilt, angle[1]
+  e[1] = h * (sin(pitch) + p.tZmp * gyro[2])
+  e[2] = -h * (sin(roll) + p.tZmp * gyro[1])
 end
 
 -- Updates the COM offset (whole-body COM minus torso origin, in the heading frame) from joint

@@ -13,6 +13,9 @@ return {
   -- (Player/Motion/walk_preview.lua: window in s, weights of the ZMP error and the COM jerk, lead-in s)
   engine = 'analytic',
   preview = { window = 1.6, Qe = 1.0, R = 1e-6, lead = 0.4 },
+  -- step adjustment (capture point, Player/Motion/walk.lua adjust_step): the next swing foot lands
+  -- gain x the capture point's error beyond the dead band (m), at most max (m), within the step limits
+  stepAdjust = { gain = 0, deadband = { 0.01, 0.01 }, max = { 0.05, 0.05 } },
   -- posture
   bodyHeight = 0.225,         -- m, torso origin (hip yaw anchors, Config/Sim/robot.lua) above the ground
   bodyTilt = 0.08,           -- rad, torso pitch (forward positive)
