@@ -198,19 +198,20 @@ function drawJoints() {
 }
 
 // The walk's plan in the torso frame (x forward: up the canvas): both feet (position and heading),
-// the COM and the ZMP now and over the last 1.5 s (motion block, odometry frame).
+// the COM and the ZMP now and over the last 1.5 s (motion block: walk_feet, walk_com, walk_zmp, in the
+// walk's ground frame, as odometry).
 function keepWalk(m, t) {
-  if (!m.zmp) return;
+  if (!m.walk_zmp) return;
   const h = view.walkTrail;
   if (h.length && t < h[h.length - 1].t) h.length = 0;
-  h.push({ t, zmp: m.zmp, com: m.com });
+  h.push({ t, zmp: m.walk_zmp, com: m.walk_com });
   while (h.length && h[0].t < t - 1.5) h.shift();
 }
 function drawWalk() {
   const c = $('walk'), g = c.getContext('2d'), m = (view.blocks[view.sel] || {}).motion;
   g.fillStyle = '#181c22'; g.fillRect(0, 0, c.width, c.height);
   g.font = '11px system-ui'; g.fillStyle = '#8a939e';
-  if (!m || !m.zmp) { g.fillText('no walk fields in the motion block', 8, 20); return; }
+  if (!m || !m.walk_zmp) { g.fillText('no walk fields in the motion block', 8, 20); return; }
   const o = m.odometry, co = Math.cos(o[2]), si = Math.sin(o[2]), S = 400;
   const px = p => {   // odometry frame -> torso frame -> canvas (forward up, left to the left)
     const dx = p[0] - o[0], dy = p[1] - o[1], x = co * dx + si * dy, y = -si * dx + co * dy;
@@ -225,13 +226,13 @@ function drawWalk() {
     g.stroke();
   };
   trail('com', 'rgba(95,211,141,0.6)'); trail('zmp', 'rgba(255,107,107,0.6)');
-  for (const f of [m.left_foot, m.right_foot]) {   // a triangle pointing along the foot's heading
+  for (const f of [m.walk_feet.slice(0, 3), m.walk_feet.slice(3, 6)]) {   // a triangle pointing along the foot's heading
     const [u, v] = px(f), a = f[2] - o[2], fx = -Math.sin(a), fy = -Math.cos(a);
     g.fillStyle = '#ffd60a'; g.beginPath();
     g.moveTo(u + fx * 10, v + fy * 10); g.lineTo(u - fx * 6 - fy * 6, v - fy * 6 + fx * 6); g.lineTo(u - fx * 6 + fy * 6, v - fy * 6 - fx * 6);
     g.closePath(); g.fill();
   }
-  const [cu, cv] = px(m.com), [zu, zv] = px(m.zmp);
+  const [cu, cv] = px(m.walk_com), [zu, zv] = px(m.walk_zmp);
   g.fillStyle = '#5fd38d'; g.beginPath(); g.arc(cu, cv, 4, 0, 2 * Math.PI); g.fill();
   g.strokeStyle = '#ff6b6b'; g.lineWidth = 2; g.beginPath();
   g.moveTo(zu - 4, zv - 4); g.lineTo(zu + 4, zv + 4); g.moveTo(zu + 4, zv - 4); g.lineTo(zu - 4, zv + 4); g.stroke();
