@@ -18,6 +18,7 @@ function quantile(a, q) {
   const s = [...a].sort((x, y) => x - y);
   return s[Math.min(s.length - 1, Math.floor(q * s.length))];
 }
+const esc = x => String(x).replace(/[&<>"]/g, c => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;' })[c]);
 const fmt = (x, d = 2) => (x === null || x === undefined || !isFinite(x)) ? '–' : Number(x).toFixed(d);
 
 const view = {
@@ -163,7 +164,7 @@ function drawCamera() {
 
 function drawState() {
   const b = view.blocks[view.sel] || {}, S = view.meta.states;
-  const name = (list, i) => (list && list[i] !== undefined) ? list[i] : (i ?? '–');
+  const name = (list, i) => (list && list[i] !== undefined) ? list[i] : '–';
   const rows = [];
   const group = (title, items) => rows.push(`<div class="card"><div class="group">${title}</div>` +
     items.map(([k, v]) => `<div class="row"><span>${k}</span><b>${v}</b></div>`).join('') + '</div>');
@@ -242,7 +243,7 @@ function drawRaw() {
   if (!$('raw-panel').open) return;
   const b = view.blocks[view.sel] || {};
   $('raw').innerHTML = Object.keys(b).sort().map(k => `<div class="blk"><b>${k}</b>` +
-    Object.entries(b[k]).map(([f, v]) => `<div>${f}: ${Array.isArray(v) ? v.slice(0, 12).map(x => typeof x === 'number' && !Number.isInteger(x) ? x.toFixed(3) : x).join(' ') + (v.length > 12 ? ` … (${v.length})` : '') : v}</div>`).join('') + '</div>').join('');
+    Object.entries(b[k]).map(([f, v]) => `<div>${esc(f)}: ${Array.isArray(v) ? v.slice(0, 12).map(x => typeof x === 'number' && !Number.isInteger(x) ? x.toFixed(3) : x).join(' ') + (v.length > 12 ? ` … (${v.length})` : '') : esc(v)}</div>`).join('') + '</div>').join('');
 }
 
 function drawLink() {
