@@ -52,10 +52,10 @@ local function tokenize(src)
       toks[#toks + 1] = { t = 'string', s = i, e = e, v = src:sub(i, e) }
       i = e + 1
     elseif c:match('%d') or (c == '.' and src:sub(i + 1, i + 1):match('%d')) then
-      local s, e = src:find('^0[xX][%x%.]+[pP][%+%-]?%d+', i)
-      if not s then s, e = src:find('^0[xX][%x%.]+', i) end
-      if not s then s, e = src:find('^%d*%.?%d*[eE][%+%-]?%d+', i) end
-      if not s then s, e = src:find('^%d*%.?%d*', i) end
+      local e = select(2, src:find('^0[xX][%x%.]+[pP][%+%-]?%d+', i))
+        or select(2, src:find('^0[xX][%x%.]+', i))
+        or select(2, src:find('^%d*%.?%d*[eE][%+%-]?%d+', i))
+        or select(2, src:find('^%d*%.?%d*', i))
       toks[#toks + 1] = { t = 'number', s = i, e = e, v = src:sub(i, e) }
       i = e + 1
     elseif c:match('[%a_]') then
@@ -119,7 +119,7 @@ end
 local function fields(toks, i, prefix, spans, locals, inside)
   local k, pos = i + 1, 0
   while k <= #toks and toks[k].v ~= '}' do
-    local t, key, vstart = toks[k], nil, nil
+    local t, key, vstart = toks[k], nil, k
     if t.t == 'name' and toks[k + 1] and toks[k + 1].v == '=' and toks[k + 1].t == 'op' then
       key, vstart = t.v, k + 2
     elseif t.t == 'op' and t.v == '[' then

@@ -62,7 +62,8 @@ describe('param_save.edit', function()
   end)
 
   it('keeps comments and layout: only the value text changes', function()
-    local src = '-- the walk\nreturn {\n  tStep = 0.25,   -- s, one step\n  -- lists\n  limits = { 1, 2 }, x = "a",\n' ..
+    local src = '-- the walk\nreturn {\n  tStep = 0.25,   -- s, one step\n  -- lists\n' ..
+      '  limits = { 1, 2 }, x = "a",\n' ..
       '  nested = { deep = { v = 2e-3 } }, ["odd key"] = true,\n}\n'
     assert.equal(src:gsub('0%.25', '0.3'), save.edit(src, { 'tStep' }, 0.3))
     assert.equal(src:gsub('{ 1, 2 }', '{ 3, 4.5 }'), save.edit(src, { 'limits' }, { 3, 4.5 }))
@@ -89,7 +90,8 @@ describe('param_save.write', function()
   setup(function()
     tmp = os.tmpname()
     os.remove(tmp)
-    write('Config/common/vision.lua', 'return {\n  ball = { max_range = 6.0, -- m\n    diameter = 0.14 },\n  lut = "a.lut",\n}\n')
+    write('Config/common/vision.lua',
+      'return {\n  ball = { max_range = 6.0, -- m\n    diameter = 0.14 },\n  lut = "a.lut",\n}\n')
     write('Config/robots/bot/robot.lua', 'return { joints = {} }')
     write('Config/robots/bot/vision.lua', 'return { ball = { diameter = 0.2 } } -- a bigger ball')
     write('Config/platforms/Test/dcm.lua', 'return { }')
