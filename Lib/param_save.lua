@@ -128,7 +128,7 @@ local function fields(toks, i, prefix, spans, locals, inside)
       vstart = close + 2
     else
       pos = pos + 1
-      key, vstart = pos, k
+      key = pos
     end
     local vend = expr_end(toks, vstart)
     if key ~= nil then
