@@ -23,6 +23,7 @@ env.blocks = blocks
 local Body = require('Body')
 env.Body = Body
 env.history = require('history')
+env.param = require('param')
 
 -- Optional modules: bound when present; a module that exists but fails to load is reported.
 local function optional(name)
@@ -92,6 +93,8 @@ hrp REPL (robot id %d, body %s, platform %s)
   blocks['dcm.sensor']:dump()  dcm_sensor.position[0]  dcm_actuator:set('hardness', 1)
   wait(seconds)       let the robot's clock advance
   history('dcm.sensor.gyro', 2.0)   times and values of a field over the last 2 s (the recorder's ring)
+  param('walk.tStep')  param('walk.tStep', 0.3)   any Config value, read / set in the running processes
+  param.save()  param.list('vision.ball')  param.changes()  param.status()
   p(x)                print a table
   Sim.truth() Sim.reset() Sim.teleport_robot(x, y, yaw) Sim.teleport_ball(x, y) Sim.push(fx, fy, t)
   Motion.request('walk')  Walk.set_velocity(vx, vy, va)  Vision.ball()   (when loaded)
