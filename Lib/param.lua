@@ -351,20 +351,6 @@ function M.status()
   return out
 end
 
--- Waits (wall time, default 2 s) until every live follower has applied every change; true if so.
-function M.settled(timeout)
-  local deadline = shm.C.shm_now() + (timeout or 2.0)
-  repeat
-    local all = true
-    for _, p in ipairs(M.status()) do
-      if p.alive and not p.applied then all = false end
-    end
-    if all then return true end
-    shm.C.shm_futex_wait(param_block().seq, param_block().seq[0], 0.005)
-  until shm.C.shm_now() > deadline
-  return false
-end
-
 -- ---- a robot process following the changes
 
 local Follower = {}
