@@ -118,13 +118,8 @@ function Controller:reset(c, cd, cdd)
   self.x[1], self.x[2], self.x[3], self.esum = c or 0, cd or 0, cdd or 0, 0
 end
 
-function Controller:step(ref)
-  local k, sys, x = self.k, self.sys, self.x
-  local p = dot(sys.C, x)
-  self.esum = self.esum + (p - ref(0))
-  local u = -k.Gi * self.esum - dot(k.Gx, x)
-  local Gd = k.Gd
-  for j = 1, k.N do u = u - Gd[j] * ref(j) end
+local function advance(self, u)
+  local sys, x = self.sys, self.x
   local A, B = sys.A, sys.B
   local x1 = A[1][1] * x[1] + A[1][2] * x[2] + A[1][3] * x[3] + B[1] * u
   local x2 = A[2][2] * x[2] + A[2][3] * x[3] + B[2] * u
@@ -132,5 +127,27 @@ function Controller:step(ref)
   x[1], x[2], x[3] = x1, x2, x3
   return x1, x2, x3, dot(sys.C, x)
 end
+
+function Controller:step(ref)
+  local k, x = self.k, self.x
+  self.esum = self.esum + (dot(self.sys.C, x) - ref(0))
+  local u = -k.Gi * self.esum - dot(k.Gx, x)
+  local Gd = k.Gd
+  for j = 1, k.N do u = u - Gd[j] * ref(j) end
+  return advance(self, u)
+end
+
+-- The same with the reference in a ring buffer: ref(j) = buf[(k0 + j) % size] (no closure per tick).
+function Controller:step_ring(buf, k0, size)
+  local k, x = self.k, self.x
+  self.esum = self.esum + (dot(self.sys.C, x) - buf[k0 % size])
+  local u = -k.Gi * self.esum - dot(k.Gx, x)
+  local Gd = k.Gd
+  for j = 1, k.N do u = u - Gd[j] * buf[(k0 + j) % size] end
+  return advance(self, u)
+end
+
+-- New gains (a parameter changed live): the state and the integrated error carry over.
+function Controller:set_gains(sys, gains) self.sys, self.k = sys, gains end
 
 return M
