@@ -4,7 +4,8 @@
 -- messages (their colour), our own broadcasts heard back, and malformed ones (not a message, no
 -- sender, a player number out of range, a pose or ball that is not finite) are ignored and counted,
 -- and so are datagrams from a host not in `hosts` (when the config lists any); the socket hears
--- only the configured `interface`; at most `max_per_step` datagrams are read per step and the table never grows past `max_players`.
+-- only the configured `interface`; at most `max_per_step` datagrams are read per step and the
+-- table never grows past `max_players`.
 --
 --   local team = require('Team.team').new(cfg, opts)   -- cfg: team_number, player_number, team (game.lua)
 --   team:update(t, me)        me = { pose = {x, y, a}, confidence, ball = {x, y, vx, vy} (field) or nil,
