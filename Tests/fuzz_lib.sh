@@ -1,7 +1,7 @@
 # Sourced by the fuzz tests (Tests/**/*fuzz_test.sh): TAP counting, a scratch folder, building the
 # libFuzzer targets and one fuzz run with its figures. A run's length: FUZZ_SECONDS (each target),
 # else the script's default.
-#   source Tests/fuzz_lib.sh; fuzz_init 15       # cd to the repo root, WORK=scratch folder
+#   source Tests/fuzz_lib.sh; fuzz_init 15       # cd to the repo root, WORK=scratch folder, SEEDS=$WORK/seeds
 #   fuzz_build -C Modules/shm fuzz                 # make ARGS: "ok - fuzz targets build" or stop
 #   fuzz_run NAME SEED_DIR CMD...                  # a libFuzzer binary or a Lua harness (same flags)
 #   fuzz_done                                      # "1..N", the exit status
@@ -17,6 +17,8 @@ fuzz_done() { echo "1..$n"; [ "$fails" -eq 0 ]; exit $?; }
 fuzz_init() {
   SECS=${FUZZ_SECONDS:-$1}
   WORK=$(mktemp -d)
+  export SEEDS=$WORK/seeds   # (the seed makers of Lua read it)
+  mkdir -p "$SEEDS"
   FUZZ_CLEANUP=${FUZZ_CLEANUP:-}
   trap 'rm -rf "$WORK"; eval "$FUZZ_CLEANUP"' EXIT
 }

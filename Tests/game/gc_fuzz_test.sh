@@ -5,6 +5,5 @@
 #   FUZZ_SECONDS=600 Tests/game/gc_fuzz_test.sh   for a long run.
 source "$(dirname "$0")/../fuzz_lib.sh"
 fuzz_init 12
-mkdir -p "$WORK/seeds"
-fuzz_run gc_packet "$WORK/seeds" luajit Tests/fuzz/lua_fuzz.lua Tests.game.gc_fuzz -max_len=4096
+fuzz_run gc_packet "$SEEDS" luajit Tests/fuzz/lua_fuzz.lua Tests.game.gc_fuzz -max_len=4096
 fuzz_done

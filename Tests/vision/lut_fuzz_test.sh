@@ -6,13 +6,12 @@
 source "$(dirname "$0")/../fuzz_lib.sh"
 fuzz_init 15
 fuzz_build -C Modules/imageproc fuzz
-C=$WORK/seeds; mkdir -p "$C"
-SEEDS=$C luajit -e '
+luajit -e '
   local imageproc, Config = require("imageproc"), require("Config")
   local dir = os.getenv("SEEDS")
   assert(imageproc.save_lut(dir .. "/colors.lut", imageproc.lut_from_colors(Config.load("vision").colors)))
   assert(imageproc.save_lut(dir .. "/empty.lut", imageproc.new_lut()))' || nok "seed tables"
-head -c 70000 "$C/colors.lut" >"$C/truncated.lut"
-head -c 16 "$C/colors.lut" >"$C/header.lut"
-fuzz_run img_lut "$C" build/fuzz/img_lut_fuzz -max_len=262200
+head -c 70000 "$SEEDS/colors.lut" >"$SEEDS/truncated.lut"
+head -c 16 "$SEEDS/colors.lut" >"$SEEDS/header.lut"
+fuzz_run img_lut "$SEEDS" build/fuzz/img_lut_fuzz -max_len=262200
 fuzz_done
