@@ -146,6 +146,7 @@ typedef struct dcm_guard {
   uint32_t last_ack;
   double ack_time;
   int armed;                     /* a nonzero tick_ack was seen: somebody drives the robot */
+  int watch_pid, watch_fd;       /* the writer watched, its pidfd (-1: none) */
   double last_pos[DCM_NJ_MAX], last_hard[DCM_NJ_MAX], hold[DCM_NJ_MAX];
 } dcm_guard;
 

@@ -181,6 +181,24 @@ static void test_guard(void) {
   check(dcm_guard_apply(&g, 6.21, present, &c) == 1 && g.trips == 2 && g.dead_writer == (int)child,
         "a dead writer trips the watchdog at once, naming its pid");
 
+  /* a writer that died and is not reaped yet (its parent is slow): a zombie is dead too */
+  pid_t zombie = fork();
+  if (zombie == 0) _exit(0);
+  fill(&c, NJ, 0.2, 0.8, 10);
+  c.writer_pid = (uint32_t)getpid();
+  check(dcm_guard_apply(&g, 6.3, present, &c) == 0, "a live writer: commands go through");
+  for (int k = 0; k < 200 && kill(zombie, 0) == 0; k++) {
+    siginfo_t si;
+    si.si_pid = 0;
+    if (waitid(P_PID, (id_t)zombie, &si, WEXITED | WNOHANG | WNOWAIT) == 0 && si.si_pid == zombie) break;
+    usleep(1000);
+  }
+  fill(&c, NJ, 0.2, 0.8, 10);
+  c.writer_pid = (uint32_t)zombie;
+  check(kill(zombie, 0) == 0 && dcm_guard_apply(&g, 6.31, present, &c) == 1 && g.dead_writer == (int)zombie,
+        "an exited writer its parent has not reaped yet trips the watchdog at once");
+  waitpid(zombie, NULL, 0);
+
   /* no watchdog (lockstep): silence is not a fault */
   dcm_guard_init(&g, NJ, 0, 0.3, present, 0);
   fill(&c, NJ, 0.5, 0.8, 3);
