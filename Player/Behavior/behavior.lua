@@ -209,7 +209,11 @@ function Behavior:run()
   local n = math.max(1, math.floor(self.cfg.step_ticks))
   local tick = Body.get_tick()
   local wake = tick
+  -- a block replaced under this process (removed, or recreated with another layout): exit, named,
+  -- for run_main's restart
+  local check_blocks = require('shm_watch').exit_on_replaced('behavior')
   while true do
+    check_blocks()
     if tick >= wake then
       self:step()
       wake = tick + n
