@@ -20,6 +20,7 @@ void dcm_guard_init(dcm_guard *g, int nj, double timeout, double safe_hardness, 
   g->last_ack = tick_ack;
   g->watch_fd = -1;
   for (int j = 0; j < nj; j++) {
+    g->safe_pose[j] = NAN;
     g->last_pos[j] = present[j];
     g->last_hard[j] = 0;
   }
@@ -36,6 +37,11 @@ void dcm_command_read(const dcm_blk_dcm_actuator *a, int nj, dcm_command *out) {
     out->tick_ack = *(volatile uint32_t *)a->tick_ack;
     out->writer_pid = *(volatile uint32_t *)a->writer_pid;
   } while (shm_read_retry(a->blk, seq));
+}
+
+void dcm_guard_set_safe_pose(dcm_guard *g, const double *pose, double ramp) {
+  for (int j = 0; j < g->nj; j++) g->safe_pose[j] = pose ? pose[j] : NAN;
+  g->ramp = ramp > 0 ? ramp : 0;
 }
 
 /* Whether the writer `pid` has ended. A pidfd, kept while the pid stays the writer, says so as
@@ -82,11 +88,17 @@ int dcm_guard_apply(dcm_guard *g, double now, const double *present, dcm_command
       g->trips++;
       g->dead_writer = dead ? (int)c->writer_pid : 0;
       memcpy(g->hold, present, sizeof(double) * (size_t)g->nj);
+      g->trip_time = now;
     }
   }
   if (g->safe) {
+    /* from the pose of the trip into the safe pose: a smooth step over `ramp` s */
+    double s = g->ramp > 0 ? (now - g->trip_time) / g->ramp : 1;
+    s = s < 0 ? 0 : s > 1 ? 1 : s;
+    s = s * s * (3 - 2 * s);
     for (int j = 0; j < g->nj; j++) {
-      c->position[j] = g->hold[j];
+      const double to = g->safe_pose[j];
+      c->position[j] = isfinite(to) ? g->hold[j] + (to - g->hold[j]) * s : g->hold[j];
       if (c->hardness[j] > g->safe_hardness) c->hardness[j] = g->safe_hardness;
     }
   }

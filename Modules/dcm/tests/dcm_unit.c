@@ -187,7 +187,9 @@ static void test_guard(void) {
   fill(&c, NJ, 0.2, 0.8, 10);
   c.writer_pid = (uint32_t)getpid();
   check(dcm_guard_apply(&g, 6.3, present, &c) == 0, "a live writer: commands go through");
-  for (int k = 0; k < 200 && kill(zombie, 0) == 0; k++) {
+  /* until it has exited (left unreaped: WNOWAIT), 5 s at most (a child of an ASan build on a loaded
+   * machine took longer than 0.2 s) */
+  for (int k = 0; k < 5000; k++) {
     siginfo_t si;
     si.si_pid = 0;
     if (waitid(P_PID, (id_t)zombie, &si, WEXITED | WNOHANG | WNOWAIT) == 0 && si.si_pid == zombie) break;
@@ -198,6 +200,25 @@ static void test_guard(void) {
   check(kill(zombie, 0) == 0 && dcm_guard_apply(&g, 6.31, present, &c) == 1 && g.dead_writer == (int)zombie,
         "an exited writer its parent has not reaped yet trips the watchdog at once");
   waitpid(zombie, NULL, 0);
+
+  /* a safe pose: from the pose of the trip into it within the ramp, then held; NaN joints held */
+  dcm_guard_init(&g, NJ, 0.5, 0.3, present, 0);
+  const double pose[NJ] = { 1.1, NAN, 0.3, -0.6 };
+  dcm_guard_set_safe_pose(&g, pose, 0.3);
+  fill(&c, NJ, 0.5, 0.8, 1);
+  dcm_guard_apply(&g, 1.0, present, &c);
+  fill(&c, NJ, 0.5, 0.8, 1);
+  dcm_guard_apply(&g, 1.6, present, &c);   /* silent for 0.6 s: trips, at the pose of the trip */
+  check(g.safe && c.position[0] == 0.1 && c.position[1] == 0.2 && c.hardness[0] == 0.3,
+        "safe pose: the ramp starts at the pose of the trip");
+  fill(&c, NJ, 0.5, 0.8, 1);
+  dcm_guard_apply(&g, 1.75, present, &c);  /* half way: the smooth step's middle */
+  check(fabs(c.position[0] - 0.6) < 1e-9 && c.position[1] == 0.2 && fabs(c.position[3] - (-0.1)) < 1e-9,
+        "half the ramp: half way (a joint without a safe angle held)");
+  fill(&c, NJ, 0.5, 0.8, 1);
+  dcm_guard_apply(&g, 2.5, present, &c);
+  check(c.position[0] == 1.1 && c.position[1] == 0.2 && c.position[2] == 0.3 && c.position[3] == -0.6 &&
+        c.hardness[3] == 0.3, "after the ramp: the safe pose held at the safe hardness");
 
   /* no watchdog (lockstep): silence is not a fault */
   dcm_guard_init(&g, NJ, 0, 0.3, present, 0);
