@@ -36,7 +36,7 @@ for run in $(seq "$RUNS"); do
     ffi.C.kill(a.writer_pid[0], 9)
     local fell_at
     for k = 1, 40 do wait(0.1) if not fell_at and Sim.truth().fallen then fell_at = k * 0.1 end end
-    print(string.format('walked %.2f m, fallen=%s%s', before.x, tostring(fell_at ~= nil),
+    print(string.format('at x = %.2f m, fallen=%s%s', before.x, tostring(fell_at ~= nil),
       fell_at and string.format(' (%.1f s after the kill)', fell_at) or ''))" 2>&1 | tail -1)
   kill -TERM "$MAIN" 2>/dev/null; wait "$MAIN" 2>/dev/null; MAIN=""
   echo "run $run: kill after ${delay} s of walking: $out"

@@ -447,6 +447,23 @@ static void test_config(void) {
   rc = dcm_config_load("nothing", "t", "P", &c, err, sizeof err);
   tap_ok(rc < 0 && strstr(err, "nothing"), "a concern without files is named", err);
 
+  /* a body's safe pose (robot.lua safe_pose), by joint name */
+  setenv("PLATFORM", "P", 1);
+  double pose[3], ramp;
+  write_file("Config/robots/t/robot.lua",
+             "return { joints = { 'a', 'b', 'c' }, safe_pose = { ramp = 0.25, q = { b = -0.5 } } }\n");
+  rc = dcm_safe_pose_load("t", 3, pose, &ramp, err, sizeof err);
+  tap_ok(rc == 0 && ramp == 0.25 && isnan(pose[0]) && pose[1] == -0.5 && isnan(pose[2]),
+         "a body's safe pose by joint name; the joints it does not name are held", err);
+  write_file("Config/robots/t/robot.lua", "return { joints = { 'a', 'b', 'c' }, safe_pose = { ramp = 'x', q = {} } }\n");
+  rc = dcm_safe_pose_load("t", 3, pose, &ramp, err, sizeof err);
+  tap_ok(rc < 0 && strstr(err, "robot.lua") && strstr(err, "safe_pose.ramp"), "a bad safe pose names file and key", err);
+  write_file("Config/robots/t/robot.lua", "return { joints = { 'a', 'b', 'c' } }\n");
+  rc = dcm_safe_pose_load("t", 3, pose, &ramp, err, sizeof err);
+  tap_ok(rc == 0 && ramp == 0 && isnan(pose[0]) && isnan(pose[1]) && isnan(pose[2]),
+         "no safe pose: every joint held where it is", err);
+  unsetenv("PLATFORM");
+
   char cmd[600];
   snprintf(cmd, sizeof cmd, "rm -rf '%s'", g_root);
   if (system(cmd) != 0) fprintf(stderr, "could not remove %s\n", g_root);
