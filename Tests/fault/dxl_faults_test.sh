@@ -123,7 +123,7 @@ first=$(first_goals_after "$t1")
 start_walk
 t2=$(wall); sleep 1
 after=$(goals_after "$t2")
-ok "$([ "$silent" -eq 0 ]; echo $?)" "kill -9 of the DCM: the bus goes quiet (its last goals $(ms "$t0" "$last") ms after the kill signal; $silent goal packets from 0.1 s to 1 s)"
+ok "$([ "$silent" -eq 0 ]; echo $?)" "kill -9 of the DCM: the bus goes quiet (its last goals at $(ms "$t0" "$last") ms from the kill signal; $silent goal packets from 0.1 s to 1 s)"
 ok "$([ -n "$first" ]; echo $?)" "the restarted DCM drives the bus $( [ -n "$first" ] && ms "$t1" "$first" || echo never) ms after its start"
 ok "$([ "$(motion_pid)" = "$pid" ] && kill -0 "$pid" 2>/dev/null; echo $?)" "motion was not restarted (pid $pid -> $(motion_pid))"
 ok "$([ "$after" -gt 20 ]; echo $?)" "motion's walk reaches the servos through the new DCM ($after goal packets/s)"
