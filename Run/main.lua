@@ -286,7 +286,11 @@ end
 
 -- ---- main loop
 local next_status = shm.C.shm_now() + 1
+-- a block replaced under us (removed, or recreated with another layout): read what is there now
+-- (the children holding it exit, naming it, and are restarted: Lib/shm_watch.lua)
+local check_blocks = require('shm_watch').reopen_replaced(log)
 while true do
+  check_blocks()
   local now = shm.C.shm_now()
   local wait = next_status - now
   for _, c in ipairs(children) do

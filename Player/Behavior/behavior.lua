@@ -224,7 +224,11 @@ function Behavior:run()
   local participant = lockstep.join()
   local tick = Body.get_tick()
   local wake = tick
+  -- a block replaced under this process (removed, or recreated with another layout): exit, named,
+  -- for run_main's restart
+  local check_blocks = require('shm_watch').exit_on_replaced('behavior')
   while true do
+    check_blocks()
     if tick >= wake then
       live:poll()
       self:step()

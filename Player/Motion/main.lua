@@ -101,14 +101,13 @@ local tick = -1 -- the current tick is handled first (the lockstep waits for it)
 local pos, gyro, angle, acc = ctl.pos, ctl.gyro, ctl.angle, ctl.acc
 local hardness = actuator.hardness
 
+-- a DCM restarted with another layout, or any block removed or recreated: the mappings held here
+-- are dead; exit naming the block, and run_main starts a fresh process that opens what is there now
+local check_blocks = require('shm_watch').exit_on_replaced('motion')
+
 while true do
   local t = Body.wait_tick(tick, 1.0)
-  if not t and (sensor:replaced() or actuator:replaced()) then
-    -- a DCM restarted with another layout (or the blocks removed): the mappings held here are dead;
-    -- run_main starts a fresh process that opens what the DCM serves now
-    io.stderr:write('motion: dcm.sensor/dcm.actuator were replaced under this process: exiting for a restart\n')
-    os.exit(3)
-  end
+  check_blocks()
   if t then
     tick = t
     -- sensors (one consistent snapshot)

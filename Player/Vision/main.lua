@@ -83,6 +83,10 @@ params_live:on('camera.fps', function(_, fps) cam_settings.fps = fps end)
 local vision = shm.open('vision')
 local sensor = shm.open('dcm.sensor')
 local sync = shm.open('sync')
+-- the sim camera's block is read in C (Modules/camera); opened here too, so that its replacement is seen
+if cam.driver == 'sim' then shm.open('camera.image') end
+-- a block replaced under this process (removed, or recreated with another layout): exit, named, for a restart
+local check_blocks = require('shm_watch').exit_on_replaced('vision')
 local njoint = sensor:count('position')
 
 ffi.cdef [[ long sysconf(int name); ]]
@@ -205,6 +209,7 @@ local function lockstep_on() return sync.lockstep[0] == 1 end
 local next_wake = 0
 
 while true do
+  check_blocks()
   if lockstep_on() and cam.driver == 'sim' then
     -- lockstep: at each tick we are due, take the frame the DCM published for it (if any) and
     -- report done. After a frame the next one cannot come for 1/fps, so the DCM is told not to
