@@ -4,6 +4,7 @@
 
 #include <ctype.h>
 #include <errno.h>
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -169,11 +170,29 @@ void shmlog_encode(const shmlog_block *b, const uint8_t *seg, uint8_t *out) {
   }
 }
 
+/* Every NaN of a float field becomes the one quiet NaN: a recording is input from outside, and this
+   LuaJIT reads some NaN payloads (e.g. the float bits ff900001) through the FFI as a wild object that
+   crashes the reader (found by fuzzing the team messages). */
+static void canonical_nans(uint8_t *p, int type, int count) {
+  for (int k = 0; k < count; k++) {
+    if (type == SHM_F64) {
+      double v;
+      memcpy(&v, p + 8 * k, 8);
+      if (v != v) { v = NAN; memcpy(p + 8 * k, &v, 8); }
+    } else {
+      float v;
+      memcpy(&v, p + 4 * k, 4);
+      if (v != v) { v = NAN; memcpy(p + 4 * k, &v, 4); }
+    }
+  }
+}
+
 int shmlog_decode(const shmlog_block *b, const uint8_t *msg, size_t len, uint8_t *seg) {
   if (len != b->cdr_size || len < 4 || msg[1] != 0x01) return -EINVAL;
   for (int i = 0; i < b->nfields; i++) {
     const shmlog_field *f = &b->field[i];
     memcpy(seg + f->shm_offset, msg + 4 + f->cdr_offset, (size_t)TYPE_SIZES[f->type] * (size_t)f->count);
+    if (f->type == SHM_F64 || f->type == SHM_F32) canonical_nans(seg + f->shm_offset, f->type, f->count);
   }
   return 0;
 }

@@ -56,7 +56,8 @@ const char *shmlog_type_name(int type);
 
 /* Encodes the fields from a copy of the segment (seg: its first byte) into out (cdr_size bytes). */
 void shmlog_encode(const shmlog_block *b, const uint8_t *seg, uint8_t *out);
-/* Decodes a message into the segment copy or the segment itself; -EINVAL if the size is wrong. */
+/* Decodes a message into the segment copy or the segment itself; -EINVAL if the size is wrong. Every
+   NaN in a float field is written as the one quiet NaN (a log is outside input). */
 int shmlog_decode(const shmlog_block *b, const uint8_t *msg, size_t len, uint8_t *seg);
 
 /* ---- the camera's compressed frame: sensor_msgs/msg/CompressedImage (what Foxglove shows) */

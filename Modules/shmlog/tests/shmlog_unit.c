@@ -67,6 +67,20 @@ int main(void) {
   }
   check(same, "every value round-trips bit for bit (NaN, -inf, 1e-300, a u32 above 2^31)");
   check(shmlog_decode(&lb, enc, lb.cdr_size - 1, copy) < 0, "a message of the wrong size is refused");
+  /* NaN payloads from a log (signalling, with bits set) come out as the one quiet NaN */
+  {
+    const uint64_t snan64 = 0x7ff0000000000001ull;
+    const uint32_t snan32 = 0xff900001u;
+    memcpy(enc + 4 + 16 + 8, &snan64, 8); /* position[1] */
+    memcpy(enc + 4 + 52 + 4, &snan32, 4); /* gain[1] */
+    check(shmlog_decode(&lb, enc, lb.cdr_size, copy) == 0, "decodes a message with NaN payloads");
+    double quiet64 = NAN, got64;
+    float quiet32 = NAN, got32;
+    memcpy(&got64, copy + lb.field[2].shm_offset + 8, 8);
+    memcpy(&got32, copy + lb.field[5].shm_offset + 4, 4);
+    check(memcmp(&got64, &quiet64, 8) == 0 && memcmp(&got32, &quiet32, 4) == 0,
+          "NaN payloads in float64 and float32 fields become the quiet NaN");
+  }
 
   check(shmlog_parse("t.rec", lb.def, strlen(lb.def), &parsed, err, sizeof err) == 0, "definition parses back");
   check(shmlog_diff(&parsed, &lb, msg, sizeof msg) == 0 && parsed.cdr_size == lb.cdr_size, "no difference");
