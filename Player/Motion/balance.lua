@@ -31,9 +31,8 @@
 -- gets wrong slowly (a COM model error, a lean, a steady push), not a step's own ZMP swing: while
 -- walking the swing from foot to foot is in the error at the gait's frequency, so walking has its
 -- own gains and a longer low-pass (walkGain, walkFilterTime) that leave it out. Gains are per axis
--- { x, y } (the walk's ground frame): sideways, a walking robot's measured ZMP sits at the edge of
--- the support foot for part of each step (it cannot go further), so a lateral integral winds up on
--- the saturated error (seen on the Hubo2+: 30 mm of shift and a fall): walkGain[2] = 0 there.
+-- { x, y } (the walk's ground frame): sideways the error of a walking robot is mostly the sway from
+-- foot to foot, its measured ZMP held at the support foot's edge for part of each step.
 -- zmpGain = 0 switches it off (bodies with no F/T on their real hardware: their sim would have
 -- them, the robot would not).
 local cos, sin = math.cos, math.sin
