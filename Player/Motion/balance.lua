@@ -13,7 +13,7 @@
 --   b.zmp, b.err, b.contact -- the measured ZMP, its error, true when a foot carries weight
 --   b:reset()
 -- Config (the walk config's `balance`): zmpGain, walkGain ({ x, y }, 1/s), leakTime, maxShift (per
--- axis), filterTime, walkFilterTime, minForce, sensorHeight; see the law below.
+-- axis), maxRate (m/s), filterTime, walkFilterTime, minForce, sensorHeight; see the law below.
 --
 -- Per foot (6 values: fx fy fz mx my mz, the wrench the foot exerts on the leg about the sensor's
 -- origin, foot frame; a foot flat on the ground): the centre of pressure relative to the point on
@@ -33,6 +33,11 @@
 -- own gains and a longer low-pass (walkGain, walkFilterTime) that leave it out. Gains are per axis
 -- { x, y } (the walk's ground frame): sideways the error of a walking robot is mostly the sway from
 -- foot to foot, its measured ZMP held at the support foot's edge for part of each step.
+-- The shift moves at most maxRate: a short push tips the robot onto its toes (the cart-table model
+-- no longer holds: its foot turns), the error is large at once, and a fast shift back is itself a
+-- push on the ZMP towards the toes (measured on the Hubo2+, the largest short push survived
+-- standing, 275 N x 0.1 s with the feedback off: 94 N on without the limit, 244 N at 0.02 m/s, 269 N
+-- at 0.01 m/s).
 -- zmpGain = 0 switches it off (bodies with no F/T on their real hardware: their sim would have
 -- them, the robot would not).
 local cos, sin = math.cos, math.sin
@@ -41,7 +46,7 @@ local M = {}
 local Balance = {}
 Balance.__index = Balance
 
-local KEYS = { 'leakTime', 'maxShift', 'filterTime', 'walkFilterTime', 'minForce', 'sensorHeight' }
+local KEYS = { 'leakTime', 'maxShift', 'maxRate', 'filterTime', 'walkFilterTime', 'minForce', 'sensorHeight' }
 local PAIRS = { 'zmpGain', 'walkGain' }
 
 -- Checks the walk config's `balance` table; returns it or raises an error naming `files` and the key.
@@ -125,9 +130,12 @@ function Balance:update(dt, ft, uL, uR, zmp_ref, walking)
     ef[2] = ef[2] + alpha * (err[2] - ef[2])
   end
   if not self.contact then gx, gy = 0, 0 end
-  local lim = bp.maxShift
-  shift[1] = clamp(shift[1] * (1 - decay) - gx * ef[1] * dt, -lim, lim)
-  shift[2] = clamp(shift[2] * (1 - decay) - gy * ef[2] * dt, -lim, lim)
+  -- the rate limit on the net change (integral and leak together: a leak faster than the limit
+  -- would hold the shift at maxRate * leakTime)
+  local lim, step = bp.maxShift, bp.maxRate * dt
+  local x, y = shift[1], shift[2]
+  shift[1] = clamp(x + clamp(-x * decay - gx * ef[1] * dt, -step, step), -lim, lim)
+  shift[2] = clamp(y + clamp(-y * decay - gy * ef[2] * dt, -step, step), -lim, lim)
   return shift
 end
 

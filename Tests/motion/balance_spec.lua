@@ -5,8 +5,8 @@
 local balance = require('Motion.balance')
 
 local function params(over)
-  local b = { zmpGain = { 2, 2 }, walkGain = { 1, 0 }, leakTime = 2, maxShift = 0.03, filterTime = 0.3,
-    walkFilterTime = 1,    minForce = 40, sensorHeight = 0.1 }
+  local b = { zmpGain = { 2, 2 }, walkGain = { 1, 0 }, leakTime = 2, maxShift = 0.03, maxRate = 1,
+    filterTime = 0.3,    walkFilterTime = 1,    minForce = 40, sensorHeight = 0.1 }
   for k, v in pairs(over or {}) do b[k] = v end
   return { tZmp = 0.26, balance = b }
 end

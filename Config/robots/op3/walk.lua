@@ -57,6 +57,7 @@ return {
     walkGain = { 0.0, 0.0 }, -- 1/s, walking (the step's ZMP swing filtered out: walkFilterTime)
     leakTime = 2.0,          -- s: the shift decays with this time constant
     maxShift = 0.01,         -- m, per axis
+    maxRate = 0.01,          -- m/s: the shift moves no faster (a short push: balance.lua)
     filterTime = 0.3,        -- s: low-pass on the ZMP error, standing
     walkFilterTime = 1.0,    -- s: walking (two steps)
     minForce = 3.0,          -- N: a foot carries weight above this Fz (10% of the body's weight)
