@@ -71,7 +71,7 @@ local function start(vx, push)
   if push then
     local a = Sim.truth()
     Sim.push(push * math.cos(a.yaw), push * math.sin(a.yaw), 60)
-    wait(5) -- the feedback's time to act (its shift moves 10 mm/s at most) and the robot's to lean
+    wait(8) -- the feedback's time to act (its shift moves 4 mm/s at most) and the robot's to lean
   end
 end
 

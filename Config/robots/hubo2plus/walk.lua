@@ -74,7 +74,8 @@ return {
                              -- y error RMS 67 mm off, 61 with { 1, 0 }, 62 with { 1, 1 })
     leakTime = 2.0,          -- s: the shift decays with this time constant
     maxShift = 0.03,         -- m, per axis
-    maxRate = 0.01,          -- m/s: the shift moves no faster (a short push: balance.lua)
+    maxRate = 0.004,         -- m/s: the shift moves no faster (a short push: balance.lua; a walk
+                             -- stopping into stance: the torso still within 5 mm over 1 s)
     filterTime = 0.3,        -- s: low-pass on the ZMP error, standing
     walkFilterTime = 1.0,    -- s: walking (two steps)
     minForce = 40.0,         -- N: a foot carries weight above this Fz (10% of the body's weight)
