@@ -36,7 +36,8 @@
 -- The shift moves at most maxRate: a short push tips the robot onto its toes (the cart-table model
 -- no longer holds: its foot turns), the error is large at once, and a fast shift back is itself a
 -- push on the ZMP towards the toes (measured on the Hubo2+, the largest short push survived
--- standing, 275 N x 0.1 s with the feedback off: 94 N on without the limit, 256 N at 0.01 m/s).
+-- standing, 275 N x 0.1 s with the feedback off: 94 N on without the limit, 256 N at 0.01 m/s,
+-- 269 N at 0.004 m/s).
 -- zmpGain = 0 switches it off (bodies with no F/T on their real hardware: their sim would have
 -- them, the robot would not).
 local cos, sin = math.cos, math.sin
