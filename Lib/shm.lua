@@ -92,6 +92,35 @@ Block.__index = Block
 
 local cache = {}
 
+-- Maps segment `name` of `robot` into block table b (new or, for reopen, in use): handle and
+-- field pointers. nil, err on failure.
+local function bind(b, name, robot, opts)
+  local flags = opts.raw and OPEN_NOSCHEMA or (opts.attach and 0 or OPEN_CREATE)
+  local rc = C.shm_block_open(opts.raw and nil or get_schema(), name, robot, flags, handle_out, errbuf, 512)
+  if rc < 0 then return nil, ffi.string(errbuf) end
+  local handle = ffi.gc(handle_out[0], C.shm_block_close)
+  local fields, order = {}, {}
+  for i = 0, C.shm_block_nfields(handle) - 1 do
+    local f = C.shm_block_field(handle, i)
+    local fname = ffi.string(f.name)
+    if Block[fname] then
+      return nil, "shm block '" .. name .. "': field name '" .. fname .. "' clashes with a method"
+    end
+    local ptr = ffi.cast(CTYPES[f.type], C.shm_field_ptr(handle, fname, nil, nil))
+    fields[fname] = { ptr = ptr, count = f.count, type = TYPE_NAMES[f.type] }
+    order[#order + 1] = fname
+  end
+  for _, fname in ipairs(rawget(b, '_order') or {}) do rawset(b, fname, nil) end
+  for fname, f in pairs(fields) do rawset(b, fname, f.ptr) end
+  rawset(b, '_handle', handle)
+  rawset(b, '_name', name)
+  rawset(b, '_robot', robot)
+  rawset(b, '_opts', opts)
+  rawset(b, '_fields', fields)
+  rawset(b, '_order', order)
+  return b
+end
+
 -- Opens (creating if needed) block `name` of robot opts.robot (default ROBOT_ID).
 -- opts.attach: only attach to an existing segment; opts.raw: take the layout from the segment
 -- itself (tools), not from the schema. Errors name the block and what is wrong.
@@ -100,31 +129,24 @@ function M.open(name, opts)
   local robot = opts.robot or M.robot_id()
   local key = robot .. '/' .. name .. (opts.raw and '/raw' or '')
   if cache[key] then return cache[key] end
-  local flags = opts.raw and OPEN_NOSCHEMA or (opts.attach and 0 or OPEN_CREATE)
-  local rc = C.shm_block_open(opts.raw and nil or get_schema(), name, robot, flags, handle_out, errbuf, 512)
-  if rc < 0 then
-    if opts.try then return nil, ffi.string(errbuf) end
-    error(ffi.string(errbuf), 2)
+  local b, err = bind(setmetatable({}, Block), name, robot, opts)
+  if not b then
+    if opts.try then return nil, err end
+    error(err, 2)
   end
-  local handle = ffi.gc(handle_out[0], C.shm_block_close)
-  local b = setmetatable({}, Block)
-  rawset(b, '_handle', handle)
-  rawset(b, '_name', name)
-  rawset(b, '_robot', robot)
-  local fields, order = {}, {}
-  for i = 0, C.shm_block_nfields(handle) - 1 do
-    local f = C.shm_block_field(handle, i)
-    local fname = ffi.string(f.name)
-    if Block[fname] then error("shm block '" .. name .. "': field name '" .. fname .. "' clashes with a method", 2) end
-    local ptr = ffi.cast(CTYPES[f.type], C.shm_field_ptr(handle, fname, nil, nil))
-    fields[fname] = { ptr = ptr, count = f.count, type = TYPE_NAMES[f.type] }
-    order[#order + 1] = fname
-    rawset(b, fname, ptr)
-  end
-  rawset(b, '_fields', fields)
-  rawset(b, '_order', order)
   cache[key] = b
   return b
+end
+
+-- The blocks this process has open (shm.open's, of any robot) whose segment was replaced under it
+-- (Block:replaced): a list sorted by name, empty if none.
+function M.replaced()
+  local list = {}
+  for _, b in pairs(cache) do
+    if b:replaced() then list[#list + 1] = b end
+  end
+  table.sort(list, function(a, b) return a._name < b._name end)
+  return list
 end
 
 -- A function returning block `name`, opened at its first call (modules that are loaded before
@@ -207,6 +229,14 @@ end
 -- layout while this process kept its mapping): what this process reads, nobody else writes any more.
 function Block:replaced()
   return C.shm_block_replaced(self._handle) == 1
+end
+
+-- Maps the block again, in place (this table; every field pointer renewed: a pointer taken from it
+-- before stays on the old segment), onto what its name holds now (a segment created if none).
+-- For a process that reads fields through the table (a supervisor); true, or nil, err.
+function Block:reopen()
+  local ok, err = bind(self, self._name, self._robot, self._opts)
+  return ok and true, err
 end
 
 -- All fields as a table (for dumps).

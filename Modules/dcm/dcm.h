@@ -146,17 +146,26 @@ typedef struct dcm_guard {
   uint32_t last_ack;
   double ack_time;
   int armed;                     /* a nonzero tick_ack was seen: somebody drives the robot */
+  int watch_pid, watch_fd;       /* the writer watched, its pidfd (-1: none) */
+  double safe_pose[DCM_NJ_MAX];  /* rad, where the safe state moves each joint (NaN: held where it is) */
+  double ramp, trip_time;        /* s to move into the safe pose; robot time of the trip */
   double last_pos[DCM_NJ_MAX], last_hard[DCM_NJ_MAX], hold[DCM_NJ_MAX];
 } dcm_guard;
 
 /* present: the pose held until the first commands (nj rad). */
 void dcm_guard_init(dcm_guard *g, int nj, double timeout, double safe_hardness, const double *present,
                     uint32_t tick_ack);
+/* The safe state's pose: on a trip the joints move from where they are to pose (nj rad; NaN: that
+ * joint is held where it is; NULL: every joint, the default) within `ramp` s (smoothly), and hold it. */
+void dcm_guard_set_safe_pose(dcm_guard *g, const double *pose, double ramp);
+/* The safe pose of body `robot` (its robot.lua, the Config layers of $PLATFORM): `safe_pose = { ramp = s,
+ * q = { joint = rad, ... } }`; a joint not named (or no safe_pose at all) is NaN: held where it is. */
+int dcm_safe_pose_load(const char *robot, int nj, double *pose, double *ramp, char *err, size_t errlen);
 /* Copies a robot's commands out of dcm.actuator (a torn read is retried). */
 void dcm_command_read(const dcm_blk_dcm_actuator *a, int nj, dcm_command *out);
 /* Checks commands in place at robot time `now`: NaN / inf -> the last good value (counted),
- * hardness clamped; on a watchdog trip holds `present` (the sensed pose, rad) at the safe
- * hardness until tick_ack moves again. Returns 1 while in the safe state. */
+ * hardness clamped; on a watchdog trip holds `present` (the sensed pose, rad), or moves from it into
+ * the safe pose, at the safe hardness until tick_ack moves again. Returns 1 while in the safe state. */
 int dcm_guard_apply(dcm_guard *g, double now, const double *present, dcm_command *c);
 
 /* ---------------------------------------------------------------- lockstep */

@@ -3,6 +3,7 @@
 #include "dcm.h"
 
 #include <errno.h>
+#include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
@@ -148,6 +149,9 @@ static void idle(void *ctx, int alone) {
   c->drv->idle(c->hw, c->d, alone);
 }
 
+/* each robot's safe pose (robot.lua safe_pose), read with the configuration, before any I/O */
+static struct { double pose[DCM_NJ_MAX], ramp; int has; } g_safe[DCM_ROBOTS_MAX];
+
 static int setup(dcm *d, const dcm_driver *drv, void *hw, char *err, size_t errlen) {
   int rc = drv->configure(hw, d, err, errlen);
   if (rc < 0) return rc;
@@ -160,6 +164,10 @@ static int setup(dcm *d, const dcm_driver *drv, void *hw, char *err, size_t errl
       snprintf(err, errlen, "robot '%s': %d joints (1 to %d)", d->robot[r].name, d->robot[r].nj, DCM_NJ_MAX);
       return -EINVAL;
     }
+    if ((rc = dcm_safe_pose_load(d->robot[r].name, d->robot[r].nj, g_safe[r].pose, &g_safe[r].ramp, err, errlen)) < 0)
+      return rc;
+    g_safe[r].has = 0;
+    for (int j = 0; j < d->robot[r].nj; j++) g_safe[r].has |= isfinite(g_safe[r].pose[j]);
   }
   if ((rc = open_blocks(d, err, errlen)) < 0) return rc;
   /* open: a missing bus is waited for (the adapter is plugged in later) */
@@ -198,6 +206,7 @@ int dcm_main(dcm *d, const dcm_driver *drv, void *hw, char *err, size_t errlen) 
     dcm_robot *R = &d->robot[r];
     dcm_guard_init(&R->guard, R->nj, d->lockstep ? 0 : d->watchdog, d->safe_hardness, R->sensor.position,
                    *R->actuator.tick_ack);
+    dcm_guard_set_safe_pose(&R->guard, g_safe[r].pose, g_safe[r].ramp);
   }
   write_stats(d, drv, hw);
   if (d->lockstep) dcm_lockstep_start(&d->sync, d->tick);
@@ -223,8 +232,8 @@ int dcm_main(dcm *d, const dcm_driver *drv, void *hw, char *err, size_t errlen) 
       const int was_safe = R->guard.safe;
       dcm_guard_apply(&R->guard, d->time, R->sensor.position, &R->cmd);
       if (R->guard.safe && !was_safe && R->guard.dead_writer)
-        dcm_log(d, "robot %d: watchdog: the writer (pid %d) died: holding the pose at hardness %.2f", R->id,
-                R->guard.dead_writer, d->safe_hardness);
+        dcm_log(d, "robot %d: watchdog: the writer (pid %d) died: %s at hardness %.2f", R->id,
+                R->guard.dead_writer, g_safe[r].has ? "into the safe pose" : "holding the pose", d->safe_hardness);
       else if (R->guard.safe && !was_safe)
         dcm_log(d, "robot %d: watchdog: no new tick_ack for %.2f s: holding the pose at hardness %.2f", R->id,
                 d->watchdog, d->safe_hardness);

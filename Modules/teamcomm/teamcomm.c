@@ -2,6 +2,7 @@
 #include "teamcomm.h"
 #include "robocup.pb-c.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -133,10 +134,16 @@ static void *arena_alloc(void *data, size_t size) {
 
 static void arena_free(void *data, void *ptr) { (void)data; (void)ptr; } /* all at once: used = 0 */
 
+/* A received float as LuaJIT may see it: a NaN becomes the one quiet NaN. LuaJIT keeps its own
+ * values' types in NaN bit patterns, and it converts a float to a number without looking, so a NaN
+ * with a chosen payload (e.g. bits ff900001) would reach Lua as a table or a string at a wild
+ * address: one datagram would crash the behavior (found by Tests/team/teamcomm_fuzz_test.sh). */
+static float canon(float x) { return isnan(x) ? NAN : x; }
+
 static void vec3_get(float *f, const PbVec3 *v) {
-  f[0] = v ? v->x : 0.f;
-  f[1] = v ? v->y : 0.f;
-  f[2] = v ? v->z : 0.f;
+  f[0] = v ? canon(v->x) : 0.f;
+  f[1] = v ? canon(v->y) : 0.f;
+  f[2] = v ? canon(v->z) : 0.f;
 }
 
 static int mat3_get(float *f, const PbMat3 *m) {
@@ -147,9 +154,13 @@ static int mat3_get(float *f, const PbMat3 *m) {
   return 1;
 }
 
+/* An enum value this side does not know (a newer message, or garbage) reads as unknown (0), so a
+ * decoded message is always one tc_encode takes (found by Tests/team/teamcomm_fuzz_test.sh). */
+static int32_t known(int v, int max) { return v >= 0 && v <= max ? v : 0; }
+
 static void robot_get(tc_robot *r, const PbRobot *p) {
   r->player_id = p->player_id;
-  r->team = (int32_t)p->team;
+  r->team = known((int)p->team, TC_TEAM_RED);
   r->has_position = p->position != NULL;
   vec3_get(r->position, p->position);
   r->has_covariance = mat3_get(r->covariance, p->covariance);
@@ -191,10 +202,10 @@ int tc_decode(const uint8_t *buf, size_t len, tc_message *m, char *err, size_t e
   }
   if (msg->kick_target) {
     m->has_kick_target = 1;
-    m->kick_target[0] = msg->kick_target->x;
-    m->kick_target[1] = msg->kick_target->y;
+    m->kick_target[0] = canon(msg->kick_target->x);
+    m->kick_target[1] = canon(msg->kick_target->y);
   }
-  m->state = (int32_t)msg->state;
+  m->state = known((int)msg->state, TC_STATE_PENALISED);
   tc_arena.used = 0; /* nothing of the arena is kept */
   return 0;
 }

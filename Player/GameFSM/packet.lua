@@ -42,6 +42,7 @@ M.PENALTY_NONE = 0
 M.SECONDARY = { [0] = 'normal', 'penalty_shootout', 'overtime', 'timeout', 'direct_free_kick',
   'indirect_free_kick', 'penalty_kick', 'corner_kick', 'goal_kick', 'throw_in' }
 M.MODES = { [0] = 'preparation', 'placing', 'end' }
+M.SET_PLAY_FIRST = 4 -- secondary states from direct_free_kick on are set plays: info[2] is their mode
 M.RETURN_HEADER = 'RGrt'
 M.RETURN_VERSION = 2
 M.RETURN_SIZE = 8
@@ -63,7 +64,9 @@ local function robot_info(s, off)
   }
 end
 
--- Parses one datagram; returns a table or nil and a reason ('short', 'header', 'version', 'state').
+-- Parses one datagram; returns a table or nil and a reason ('short', 'header', 'version', 'long',
+-- 'state', 'secondary_state', 'secondary_mode': a value the protocol does not define, refused
+-- rather than read as something else).
 function M.parse(s)
   if type(s) ~= 'string' then return nil, 'type' end
   if #s < M.SIZE then return nil, 'short' end
@@ -78,6 +81,10 @@ function M.parse(s)
     secondary_time = i16(s, 22), teams = {},
   }
   if p.state > 4 then return nil, 'state' end
+  if p.secondary_state > #M.SECONDARY then return nil, 'secondary_state' end
+  if p.secondary_state >= M.SET_PLAY_FIRST and p.secondary_state_info[2] > #M.MODES then
+    return nil, 'secondary_mode'
+  end
   for t = 1, 2 do
     local base = 24 + (t - 1) * M.TEAM_SIZE
     local team = {

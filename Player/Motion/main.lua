@@ -20,6 +20,7 @@ local Motion = require('Motion')
 local WalkAPI = require('Walk')
 local kin = require('kinematics')
 local control = require('Motion.control')
+local param = require('param')
 
 ffi.cdef [[ int getpid(void); ]]
 
@@ -92,19 +93,21 @@ local function apply_param()
   motion.param_ack[0] = motion.param_seq[0]
 end
 
+-- every Config value live (Lib/param.lua): the changes made from the REPL land here once per tick
+local params_live = param.follow('motion')
+
 local participant = lockstep.join()
 local tick = -1 -- the current tick is handled first (the lockstep waits for it)
 local pos, gyro, angle, acc, ft = ctl.pos, ctl.gyro, ctl.angle, ctl.acc, ctl.ft
 local hardness = actuator.hardness
 
+-- a DCM restarted with another layout, or any block removed or recreated: the mappings held here
+-- are dead; exit naming the block, and run_main starts a fresh process that opens what is there now
+local check_blocks = require('shm_watch').exit_on_replaced('motion')
+
 while true do
   local t = Body.wait_tick(tick, 1.0)
-  if not t and (sensor:replaced() or actuator:replaced()) then
-    -- a DCM restarted with another layout (or the blocks removed): the mappings held here are dead;
-    -- run_main starts a fresh process that opens what the DCM serves now
-    io.stderr:write('motion: dcm.sensor/dcm.actuator were replaced under this process: exiting for a restart\n')
-    os.exit(3)
-  end
+  check_blocks()
   if t then
     tick = t
     -- sensors (one consistent snapshot)
@@ -129,6 +132,7 @@ while true do
         end
       end
     end
+    params_live:poll()
     if motion.param_seq[0] ~= last_param then
       last_param = motion.param_seq[0]
       apply_param()

@@ -2,9 +2,10 @@
 -- team's UDP port (Config/common/game.lua: team.port_base + team number) every `period` s of robot
 -- time, and teammates' messages read back into a fixed table per player number. Another team's
 -- messages (their colour), our own broadcasts heard back, and malformed ones (not a message, no
--- sender, a player number out of range) are ignored and counted, and so are datagrams from a host
--- not in `hosts` (when the config lists any); the socket hears only the configured `interface`; at
--- most `max_per_step` datagrams are read per step and the table never grows past `max_players`.
+-- sender, a player number out of range, a pose or ball that is not finite) are ignored and counted,
+-- and so are datagrams from a host not in `hosts` (when the config lists any); the socket hears
+-- only the configured `interface`; at most `max_per_step` datagrams are read per step and the
+-- table never grows past `max_players`.
 --
 --   local team = require('Team.team').new(cfg, opts)   -- cfg: team_number, player_number, team (game.lua)
 --   team:update(t, me)        me = { pose = {x, y, a}, confidence, ball = {x, y, vx, vy} (field) or nil,
@@ -41,10 +42,26 @@ end
 
 local TEAM_OF_COLOUR = { [0] = 'blue', [1] = 'red' } -- the GameController's fieldPlayerColour
 
+local function finite(v, n)
+  for i = 1, n do
+    local x = v[i]
+    if x ~= x or x == math.huge or x == -math.huge then return false end
+  end
+  return true
+end
+
+-- A message the table can take: a sender in range, and a pose and ball of finite numbers (a NaN or
+-- an infinity would spread from the table into the roles and the world model).
+local function usable(m, max_players)
+  if not m or not m.has_pose or m.player_id < 1 or m.player_id > max_players then return false end
+  if m.pose and not finite(m.pose, 3) then return false end
+  return not m.ball or (finite(m.ball, 2) and finite(m.ball_velocity, 2))
+end
+
 -- Takes one datagram at robot time t; true if it was a teammate's message.
 function Team:receive(data, t)
   local m = message.decode(data)
-  if not m or not m.has_pose or m.player_id < 1 or m.player_id > self.cfg.max_players then
+  if not usable(m, self.cfg.max_players) then
     self.malformed = self.malformed + 1
     return false
   end

@@ -16,6 +16,7 @@ local camera = require('camera')
 local kinematics = require('kinematics')
 local lockstep = require('lockstep')
 local pipeline = require('Vision.pipeline')
+local param = require('param')
 
 local args = { ... }
 local opts = { report = 0 }
@@ -67,9 +68,25 @@ if not cam then
   os.exit(1)
 end
 
+-- every Config value live (Lib/param.lua): the detectors read vision.ball / vision.goal at every
+-- frame; what the pipeline derives at its creation (label and block images, the LUT) is rebuilt
+local params_live = param.follow('vision')
+local function rebuild(key)
+  local fresh, perr = pipeline.new(vcfg, ccfg, model)
+  if fresh then vp = fresh else log('%s: pipeline not rebuilt: %s', key, perr) end
+end
+for _, key in ipairs({ 'vision.scale', 'vision.block', 'vision.lut', 'vision.colors', 'camera.fovy' }) do
+  params_live:on(key, rebuild)
+end
+params_live:on('camera.fps', function(_, fps) cam_settings.fps = fps end)
+
 local vision = shm.open('vision')
 local sensor = shm.open('dcm.sensor')
 local sync = shm.open('sync')
+-- the sim camera's block is read in C (Modules/camera); opened here too, so that its replacement is seen
+if cam.driver == 'sim' then shm.open('camera.image') end
+-- a block replaced under this process (removed, or recreated with another layout): exit, named, for a restart
+local check_blocks = require('shm_watch').exit_on_replaced('vision')
 local njoint = sensor:count('position')
 
 ffi.cdef [[ long sysconf(int name); ]]
@@ -146,6 +163,7 @@ end
 
 -- one frame (or a camera error), never raising
 local function step(timeout)
+  params_live:poll()
   local frame, msg, code = cam:grab(timeout)
   if not frame then
     camera_error(msg, code)
@@ -191,6 +209,7 @@ local function lockstep_on() return sync.lockstep[0] == 1 end
 local next_wake = 0
 
 while true do
+  check_blocks()
   if lockstep_on() and cam.driver == 'sim' then
     -- lockstep: at each tick we are due, take the frame the DCM published for it (if any) and
     -- report done. After a frame the next one cannot come for 1/fps, so the DCM is told not to

@@ -3,7 +3,7 @@
  *
  *   dxl_emulator [--link PATH] [--protocol 1|2] [--ids A-B] [--baud N] [--timing]
  *                [--drop P] [--corrupt P] [--delay S] [--dead ID]... [--tau S] [--seed N]
- *                [--stdin] [--realtime] [--quiet] [--sim-id N]
+ *                [--stdin] [--realtime] [--quiet] [--sim-id N] [--trace FILE]
  *
  * --protocol 1 (default): a DARwIn-OP chain: MX-28 servos (ids 1-20) and the CM-730 (id 200).
  * --protocol 2: an OP3 chain: XM430-W350 servos (ids 1-20) and the OpenCR (id 200).
@@ -18,6 +18,10 @@
  *   and the physics world moves them: goals, torque enables and hardness registers go to the sim
  *   DCM's robot N (dcm.actuator), present positions, speeds, loads, IMU and buttons come from its
  *   dcm.sensor (dxl_sim.h); --protocol, --ids, --tau and the stdin IMU commands do not apply.
+ * --trace FILE: what the servos receive, one line per change, wall-clock (CLOCK_REALTIME) seconds
+ *   first: "T ID torque V" and "T ID hardness V" (MX torque limit, XM position P gain), and "T goals N"
+ *   for a packet that changed the goals of N servos (Tests/fault/dxl_faults_test.sh times the
+ *   DCM's safe state and the commands' return with it).
  * Prints "dxl_emulator: ready <pty>" on stderr when the port can be opened.
  */
 #include "dynamixel/dynamixel.h"
@@ -67,6 +71,8 @@ static int buttons;
 static unsigned long n_rx, n_tx, n_dropped, n_corrupted, n_bad;
 static int sim_mode;
 static dxl_sim sim;
+static FILE *trace;        /* --trace */
+static int goals_changed;  /* servos whose goal the packet being handled changed */
 
 /* ---------------------------------------------------------------- control tables */
 
@@ -309,16 +315,46 @@ static void do_read(device *d, int addr, int len, int reply) {
   if (reply) emit(d, 0, d->t + addr, (size_t)len);
 }
 
+static double wall_s(void) {
+  struct timespec ts;
+  clock_gettime(CLOCK_REALTIME, &ts);
+  return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
+}
+
+/* --trace: a servo's goal, torque enable and hardness registers (MX torque limit, XM P gain) */
+typedef struct { long goal; int torque, hard; } servo_regs;
+static servo_regs regs_of(const device *d) {
+  servo_regs r = { 0, 0, 0 };
+  if (d->kind == MX28) { r.goal = dxl_get16(d->t + 30); r.torque = d->t[24]; r.hard = dxl_get16(d->t + 34); }
+  else if (d->kind == XM430) { r.goal = (int32_t)dxl_get32(d->t + 116); r.torque = d->t[64]; r.hard = dxl_get16(d->t + 84); }
+  return r;
+}
+static void trace_change(const device *d, servo_regs was) {
+  servo_regs now = regs_of(d);
+  if (now.torque != was.torque) fprintf(trace, "%.6f %d torque %d\n", wall_s(), d->id, now.torque);
+  if (now.hard != was.hard) fprintf(trace, "%.6f %d hardness %d\n", wall_s(), d->id, now.hard);
+  if (now.goal != was.goal) goals_changed++;
+}
+
 static void do_write(device *d, int addr, const uint8_t *data, int len, int reply) {
   int ok = addr >= 0 && len > 0 && addr + len <= TABLE && writable(d->kind, addr, len);
   if (ok) {
+    servo_regs was = regs_of(d);
     memcpy(d->t + addr, data, (size_t)len);
     /* a new goal while torque is off makes the servo hold where it is (as the real ones) */
+    if (trace) trace_change(d, was);
   }
   if (reply && status_level(d) >= 2) emit(d, ok ? 0 : err_access(), NULL, 0);
 }
 
+static void handle_packet(const dxl_packet *p);
 static void handle(const dxl_packet *p) {
+  goals_changed = 0;
+  handle_packet(p);
+  if (trace && goals_changed) fprintf(trace, "%.6f goals %d\n", wall_s(), goals_changed);
+}
+
+static void handle_packet(const dxl_packet *p) {
   n_rx++;
   if (sim_mode) update_sim(0);
   else update_motion(now_s());
@@ -410,7 +446,7 @@ static void on_signal(int s) { (void)s; stop = 1; }
 static void usage(void) {
   fprintf(stderr, "usage: dxl_emulator [--link PATH] [--protocol 1|2] [--ids A-B] [--baud N] [--timing]\n"
                   "       [--drop P] [--corrupt P] [--delay S] [--dead ID]... [--tau S] [--seed N] [--stdin] [--realtime] [--quiet]\n"
-                  "       [--sim-id N]  (the sim DCM's robot N behind the body's devices: $ROBOT)\n");
+                  "       [--sim-id N]  (the sim DCM's robot N behind the body's devices: $ROBOT) [--trace FILE]\n");
 }
 
 int main(int argc, char **argv) {
@@ -436,6 +472,11 @@ int main(int argc, char **argv) {
     else if (!strcmp(o, "--quiet")) quiet = 1;
     else if (!strcmp(o, "--realtime")) realtime = 1;
     else if (!strcmp(o, "--sim-id") && v) { sim_id = atoi(v); sim_mode = 1; i++; }
+    else if (!strcmp(o, "--trace") && v) {
+      if (!(trace = fopen(v, "w"))) { fprintf(stderr, "dxl_emulator: --trace %s: %s\n", v, strerror(errno)); return 2; }
+      setvbuf(trace, NULL, _IOLBF, 0);   /* a line each: readable while the emulator runs */
+      i++;
+    }
     else { usage(); return 2; }
   }
   if ((protocol != 1 && protocol != 2) || baud <= 0 || id_lo < 0 || id_hi > 252 || id_lo > id_hi ||
@@ -557,5 +598,6 @@ int main(int argc, char **argv) {
   close(s);
   close(m);
   if (sim_mode) dxl_sim_close(&sim);
+  if (trace) fclose(trace);
   return 0;
 }

@@ -78,6 +78,22 @@ describe('GameController packet', function()
     assert.are.same({ nil, 'long' }, { packet.parse(s .. 'x') })
     assert.are.same({ nil, 'state' }, { packet.parse(s:sub(1, 9) .. '\9' .. s:sub(11)) })
   end)
+
+  -- found by Tests/game/gc_fuzz_test.sh: a free kick with mode 255 was taken, its mode read as none
+  -- (our set play "taken" forever); a secondary state past throw-in was read as normal play
+  it('rejects secondary states and set-play modes the protocol does not define', function()
+    local function with(sec, mode)
+      return gc_packet(3, 0, { secondary_state = sec, secondary_state_info = { 7, mode, 0, 0 } })
+    end
+    assert.are.same({ nil, 'secondary_mode' }, { packet.parse(with(4, 255)) })
+    assert.are.same({ nil, 'secondary_mode' }, { packet.parse(with(9, 3)) })
+    assert.are.same({ nil, 'secondary_state' }, { packet.parse(with(10, 0)) })
+    assert.is_table(packet.parse(with(9, 2)))
+    assert.is_table(packet.parse(with(3, 200))) -- a timeout's info holds no mode
+    local c = no_socket()
+    assert.is_false(c:receive(with(4, 255)))
+    assert.are.same({ 1, 0 }, { c.bad_packets, c.packets })
+  end)
 end)
 
 describe('GameController follower', function()

@@ -111,4 +111,50 @@ describe('shm', function()
     assert.is_false(new:replaced())
     shm.unlink("world", robot)
   end)
+
+  it('lists the replaced blocks a process holds and maps one again in place (Block:reopen)', function()
+    local robot = shm.robot_id() + 50002
+    local w = shm.open('world', { robot = robot })
+    local g = shm.open('game', { robot = robot })
+    w.ball_time[0] = 4.5
+    local function names()
+      local list = {}
+      for _, b in ipairs(shm.replaced()) do if b._robot == robot then list[#list + 1] = b:name() end end
+      return list
+    end
+    assert.are.same({}, names())
+    shm.C.shm_block_unlink('world', robot) -- removed by someone else: this process's cache keeps it
+    assert.are.same({ 'world' }, names())
+    local old_ptr = w.ball_time
+    assert.is_true(w:reopen())
+    assert.are.same({}, names())
+    assert.are.equal(0, w.ball_time[0])         -- the new segment
+    assert.are.equal(4.5, old_ptr[0])           -- a pointer taken before stays on the old one
+    w.ball_time[0] = 1.25
+    assert.are.equal(1.25, shm.open('world', { robot = robot, raw = true }).ball_time[0])
+    assert.is_false(g:replaced())
+    shm.unlink('world', robot)
+    shm.unlink('game', robot)
+  end)
+
+  it('shm_watch: a process exits naming the replaced block; a supervisor maps it again', function()
+    local watch = require('shm_watch')
+    local robot = shm.robot_id() + 50003
+    local v = shm.open('vision', { robot = robot })
+    local said
+    local check = watch.exit_on_replaced('vision', { period = 0, robot = robot, exit = function(msg) said = msg end })
+    check()
+    assert.is_nil(said)
+    shm.C.shm_block_unlink('vision', robot)
+    check()
+    assert.are.equal('vision: shm block(s) vision replaced under this process (removed or recreated): ' ..
+      'exiting for a restart', said)
+    local logged = {}
+    local reopen = watch.reopen_replaced(function(fmt, ...) logged[#logged + 1] = string.format(fmt, ...) end,
+      { period = 0, robot = robot })
+    reopen()
+    assert.are.same({ 'shm block vision was replaced: mapped again' }, logged)
+    assert.is_false(v:replaced())
+    shm.unlink('vision', robot)
+  end)
 end)

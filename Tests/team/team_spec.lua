@@ -60,10 +60,18 @@ describe('team communication', function()
     send(message.encode({ player_id = 12, team = 'blue', pose = { 1, 1, 0 } })) -- out of range
     send('')                                                                     -- no sender at all
     send(string.rep('\10\0', 1500))                                              -- too long
+    -- found by Tests/team/teamcomm_fuzz_test.sh: a NaN pose was taken into the table
+    send(message.encode({ player_id = 5, team = 'blue', pose = { 0 / 0, 1, 0 } }))     -- not a number
+    send(message.encode({ player_id = 6, team = 'blue', pose = { 1, 1, 0 }, ball = { math.huge, 0 } }))
+    -- a NaN whose payload LuaJIT would read as a table at a wild address (the pose's x: 1.5's bytes
+    -- replaced by the float ff900001): decoded as NaN, ignored
+    local hostile = message.encode({ player_id = 7, team = 'blue', pose = { 1.5, 1, 0 } })
+    local at = assert(hostile:find('\0\0\192\63', 1, true))
+    send(hostile:sub(1, at - 1) .. '\1\0\144\255' .. hostile:sub(at + 4))
     send(message.encode({ player_id = 4, team = 'blue', pose = { 2, 2, 0 } }))  -- a teammate
     a:update(11.0, me(-1.0, nil))
     assert.are.equal(f0 + 1, a.foreign)
-    assert.are.equal(m0 + 5, a.malformed)
+    assert.are.equal(m0 + 8, a.malformed)
     assert.are.equal(r0 + 1, a.received)
     local players = {}
     for _, s in ipairs(a:mates(11.0)) do players[#players + 1] = s.player end

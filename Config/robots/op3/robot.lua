@@ -30,6 +30,19 @@ return {
     rleg = { 'r_hip_yaw', 'r_hip_roll', 'r_hip_pitch', 'r_knee', 'r_ank_pitch', 'r_ank_roll' },
     rarm = { 'r_sho_pitch', 'r_sho_roll', 'r_el' },
   },
+  -- the DCM's safe state when motion dies or stops answering (Modules/dcm/guard.c): from the pose of
+  -- the trip into this crouch within `ramp` s, held at the platform's safe_hardness; joints not named
+  -- stay where they were. Both feet flat under the hips, the torso 0.22 m above the soles (the walk
+  -- stands at 0.25), tilted 0.08 rad forward: the legs' IK of that stance (Lib/kinematics.lua).
+  safe_pose = {
+    ramp = 0.3,
+    q = {
+      l_hip_yaw = -0.005, l_hip_roll = -0.062, l_hip_pitch = -0.732, l_knee = 1.495, l_ank_pitch = 0.844,
+      l_ank_roll = -0.062,
+      r_hip_yaw = 0.005, r_hip_roll = 0.062, r_hip_pitch = 0.732, r_knee = -1.495, r_ank_pitch = -0.844,
+      r_ank_roll = 0.062,
+    },
+  },
   -- joint limits, rad { min, max }: kept inside the mechanical ranges
   -- 6-axis force/torque at the ankles (dcm.sensor.ft), the sim's instruments: the real OP3 has none,
   -- so on PLATFORM=OP these slots read 0

@@ -181,6 +181,45 @@ static void test_guard(void) {
   check(dcm_guard_apply(&g, 6.21, present, &c) == 1 && g.trips == 2 && g.dead_writer == (int)child,
         "a dead writer trips the watchdog at once, naming its pid");
 
+  /* a writer that died and is not reaped yet (its parent is slow): a zombie is dead too */
+  pid_t zombie = fork();
+  if (zombie == 0) _exit(0);
+  fill(&c, NJ, 0.2, 0.8, 10);
+  c.writer_pid = (uint32_t)getpid();
+  check(dcm_guard_apply(&g, 6.3, present, &c) == 0, "a live writer: commands go through");
+  /* until it has exited (left unreaped: WNOWAIT), 5 s at most (a child of an ASan build on a loaded
+   * machine took longer than 0.2 s) */
+  for (int k = 0; k < 5000; k++) {
+    siginfo_t si;
+    si.si_pid = 0;
+    if (waitid(P_PID, (id_t)zombie, &si, WEXITED | WNOHANG | WNOWAIT) == 0 && si.si_pid == zombie) break;
+    usleep(1000);
+  }
+  fill(&c, NJ, 0.2, 0.8, 10);
+  c.writer_pid = (uint32_t)zombie;
+  check(kill(zombie, 0) == 0 && dcm_guard_apply(&g, 6.31, present, &c) == 1 && g.dead_writer == (int)zombie,
+        "an exited writer its parent has not reaped yet trips the watchdog at once");
+  waitpid(zombie, NULL, 0);
+
+  /* a safe pose: from the pose of the trip into it within the ramp, then held; NaN joints held */
+  dcm_guard_init(&g, NJ, 0.5, 0.3, present, 0);
+  const double pose[NJ] = { 1.1, NAN, 0.3, -0.6 };
+  dcm_guard_set_safe_pose(&g, pose, 0.3);
+  fill(&c, NJ, 0.5, 0.8, 1);
+  dcm_guard_apply(&g, 1.0, present, &c);
+  fill(&c, NJ, 0.5, 0.8, 1);
+  dcm_guard_apply(&g, 1.6, present, &c);   /* silent for 0.6 s: trips, at the pose of the trip */
+  check(g.safe && c.position[0] == 0.1 && c.position[1] == 0.2 && c.hardness[0] == 0.3,
+        "safe pose: the ramp starts at the pose of the trip");
+  fill(&c, NJ, 0.5, 0.8, 1);
+  dcm_guard_apply(&g, 1.75, present, &c);  /* half way: the smooth step's middle */
+  check(fabs(c.position[0] - 0.6) < 1e-9 && c.position[1] == 0.2 && fabs(c.position[3] - (-0.1)) < 1e-9,
+        "half the ramp: half way (a joint without a safe angle held)");
+  fill(&c, NJ, 0.5, 0.8, 1);
+  dcm_guard_apply(&g, 2.5, present, &c);
+  check(c.position[0] == 1.1 && c.position[1] == 0.2 && c.position[2] == 0.3 && c.position[3] == -0.6 &&
+        c.hardness[3] == 0.3, "after the ramp: the safe pose held at the safe hardness");
+
   /* no watchdog (lockstep): silence is not a fault */
   dcm_guard_init(&g, NJ, 0, 0.3, present, 0);
   fill(&c, NJ, 0.5, 0.8, 3);
@@ -407,6 +446,23 @@ static void test_config(void) {
   tap_ok(rc < 0 && strstr(err, "nobody"), "an unknown robot is named", err);
   rc = dcm_config_load("nothing", "t", "P", &c, err, sizeof err);
   tap_ok(rc < 0 && strstr(err, "nothing"), "a concern without files is named", err);
+
+  /* a body's safe pose (robot.lua safe_pose), by joint name */
+  setenv("PLATFORM", "P", 1);
+  double pose[3], ramp;
+  write_file("Config/robots/t/robot.lua",
+             "return { joints = { 'a', 'b', 'c' }, safe_pose = { ramp = 0.25, q = { b = -0.5 } } }\n");
+  rc = dcm_safe_pose_load("t", 3, pose, &ramp, err, sizeof err);
+  tap_ok(rc == 0 && ramp == 0.25 && isnan(pose[0]) && pose[1] == -0.5 && isnan(pose[2]),
+         "a body's safe pose by joint name; the joints it does not name are held", err);
+  write_file("Config/robots/t/robot.lua", "return { joints = { 'a', 'b', 'c' }, safe_pose = { ramp = 'x', q = {} } }\n");
+  rc = dcm_safe_pose_load("t", 3, pose, &ramp, err, sizeof err);
+  tap_ok(rc < 0 && strstr(err, "robot.lua") && strstr(err, "safe_pose.ramp"), "a bad safe pose names file and key", err);
+  write_file("Config/robots/t/robot.lua", "return { joints = { 'a', 'b', 'c' } }\n");
+  rc = dcm_safe_pose_load("t", 3, pose, &ramp, err, sizeof err);
+  tap_ok(rc == 0 && ramp == 0 && isnan(pose[0]) && isnan(pose[1]) && isnan(pose[2]),
+         "no safe pose: every joint held where it is", err);
+  unsetenv("PLATFORM");
 
   char cmd[600];
   snprintf(cmd, sizeof cmd, "rm -rf '%s'", g_root);

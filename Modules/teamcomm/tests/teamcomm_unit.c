@@ -93,6 +93,40 @@ int main(void) {
   check(tc_decode(buf, (size_t)n, &d, err, sizeof err) == 0 && d.pose.player_id == 3,
         "and the next message decodes again");
 
+  /* found by Tests/team/teamcomm_fuzz_test.sh: a NaN's payload reached Lua, where LuaJIT read the
+   * bits ff900001 as a table at a wild address (a crash); every NaN decodes to the one quiet NaN */
+  uint32_t hostile = 0xff900001u, quiet = 0x7fc00000u, got[4];
+  memcpy(&m.pose.position[0], &hostile, 4);
+  memcpy(&m.ball[1], &hostile, 4);
+  memcpy(&m.walk_command[2], &hostile, 4);
+  memcpy(&m.kick_target[0], &hostile, 4);
+  n = tc_encode(&m, buf, sizeof buf, err, sizeof err);
+  rc = tc_decode(buf, (size_t)n, &d, err, sizeof err);
+  memcpy(&got[0], &d.pose.position[0], 4);
+  memcpy(&got[1], &d.ball[1], 4);
+  memcpy(&got[2], &d.walk_command[2], 4);
+  memcpy(&got[3], &d.kick_target[0], 4);
+  check(rc == 0 && got[0] == quiet && got[1] == quiet && got[2] == quiet && got[3] == quiet,
+        "a NaN with a payload decodes to the quiet NaN (pose, ball, walk, kick target)");
+
+  /* found by the same fuzzer: a state or team value beyond the enum was passed on as it was (a
+   * message tc_encode refuses, a number where Lua expects a name); both read as unknown now */
+  m.pose.position[0] = 1.0f;
+  n = tc_encode(&m, buf, sizeof buf, err, sizeof err);
+  tap_ok(n > 2 && buf[n - 2] == 0x40, "the state is the last field (tag 0x40)", NULL);
+  buf[n - 1] = 0x3f;   /* state 63 */
+  rc = tc_decode(buf, (size_t)n, &d, err, sizeof err);
+  check(rc == 0 && d.state == TC_STATE_UNKNOWN, "a state beyond the enum reads as unknown");
+  tc_message bad_team;
+  memset(&bad_team, 0, sizeof bad_team);
+  bad_team.has_pose = 1;
+  bad_team.pose.team = TC_TEAM_RED;
+  n = tc_encode(&bad_team, buf, sizeof buf, err, sizeof err);   /* pose { team = 2 }: 0a 02 20 02 */
+  tap_ok(n == 4 && buf[2] == 0x20, "a pose holding only its team", NULL);
+  buf[3] = 0x09;
+  rc = tc_decode(buf, (size_t)n, &d, err, sizeof err);
+  check(rc == 0 && d.has_pose && d.pose.team == TC_TEAM_UNKNOWN, "a team beyond the enum reads as unknown");
+
   check(tc_message_size() == sizeof(tc_message), "tc_message_size");
   return tap_done();
 }
