@@ -28,3 +28,4 @@ bench standup_darwin env ROBOT=darwin Tests/motion/standup_stats.sh
 bench recorder Tests/bench/recorder.sh 20
 bench darwin_score env SCORE_NEED=9 bash Tests/scenarios/darwin_score_test.sh
 bench hil_walk_op3 bash Tests/hil/dxl_sim_walk.sh
+bench hubo_balance_push bash Tests/motion/hubo_balance_test.sh push

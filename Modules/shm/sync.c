@@ -72,7 +72,18 @@ uint32_t shm_read_begin(const shm_block *b) {
   for (unsigned spins = 0;; spins++) {
     uint32_t s = __atomic_load_n(seq, __ATOMIC_ACQUIRE);
     if (!(s & 1u)) return s;
-    if (spins % 256 == 255) sched_yield(); else cpu_relax();
+    if (spins % 256 != 255) {
+      cpu_relax();
+    } else if (spins < 16 * 256) {
+      sched_yield();
+    } else {
+      /* still mid-write: the writer was preempted, maybe by this reader. Under SCHED_FIFO a
+       * reader above the writer's priority never lets it run on this CPU by yielding (seen: an
+       * emulator at FIFO 30 spinning on the sim DCM's block, the DCM at FIFO 20, the other CPU
+       * busy: neither moved again), so sleep a little */
+      struct timespec ts = { 0, 20000 };
+      nanosleep(&ts, NULL);
+    }
   }
 }
 

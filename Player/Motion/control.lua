@@ -24,6 +24,7 @@ local Walk = require('Motion.walk')
 local WalkPreview = require('Motion.walk_preview')
 local keyframe = require('Motion.keyframe')
 local Kick = require('Motion.kick')
+local balance = require('Motion.balance')
 
 local abs = math.abs
 
@@ -108,7 +109,7 @@ function M.new(opts)
   local n = #robot.joints
   local c = setmetatable({
     robot = robot, p = params, model = opts.model, n = n,
-    q = {}, h = {}, pos = {}, gyro = { 0, 0, 0 }, angle = { 0, 0, 0 }, acc = { 0, 0, 9.81 },
+    q = {}, h = {}, pos = {}, gyro = { 0, 0, 0 }, angle = { 0, 0, 0 }, acc = { 0, 0, 9.81 }, ft = {},
     t = 0, dt = robot.period, want = 'stand', falls = 0, fall_time = -1, tilt = 0,
     vel_cmd = { 0, 0, 0 }, head = { 0, 0 },
     hold_q = {}, hold_h = {}, owned = {}, taken = {}, taken_q = {}, write = {}, owner = {}, touch = {},
@@ -118,8 +119,10 @@ function M.new(opts)
     c.q[i], c.h[i], c.pos[i], c.taken_q[i] = 0, 0, 0, 0
     c.owned[i], c.taken[i], c.write[i], c.owner[i] = false, false, false, 0
   end
-  c.sensors = { gyro = c.gyro, position = c.pos, angle = c.angle, acc = c.acc }
+  for k = 1, 24 do c.ft[k] = 0 end
+  c.sensors = { gyro = c.gyro, position = c.pos, angle = c.angle, acc = c.acc, ft = c.ft }
   c.walk = M.walk_engine(params, opts.walk_files).new(params, opts.model):bind(robot, opts.walk_files)
+  c.balance = balance.new(params, opts.walk_files)
   c.kick = Kick.new(c.walk)
   c.ji = c.walk.ji
   c.roles = roles(c, robot)
@@ -221,6 +224,14 @@ function Ctl:set_hardness(legs, arms, head)
   for _, i in ipairs(r.legs) do h[i] = legs end
   for _, i in ipairs(r.arms) do h[i] = arms end
   for _, i in ipairs(r.head) do h[i] = head end
+end
+
+-- Balance feedback (Player/Motion/balance.lua) for the walk's next advance(): the feet's F/T
+-- (self.ft) against the ZMP the walk planned for the tick just done, into the walk's COM shift.
+function Ctl:balance_update()
+  local w = self.walk
+  local s = self.balance:update(self.dt, self.ft, w.uLeft, w.uRight, w.zmp, w:is_active())
+  w.com_shift[1], w.com_shift[2] = s[1], s[2]
 end
 
 -- Head angles requested by behavior (motion.head_command) into q: pan, tilt.

@@ -7,8 +7,8 @@
 -- velocity, head_command, param_* (walk parameter changes and config re-reads), taken and
 -- taken_command (joints a caller took with Body.set_command & co.: written with the caller's
 -- command until Body.release or a request whose state owns them). Outputs: state, walking, fallen,
--- falls, fall_time, odometry, walk_velocity, the walk's COM, ZMP, feet and capture error, owner
--- (per joint: 0 held, 1 motion, 2 a caller), tick.
+-- falls, fall_time, odometry, walk_velocity, the walk's COM, ZMP, feet and capture error, zmp and
+-- zmp_contact (balance), owner (per joint: 0 held, 1 motion, 2 a caller), tick.
 -- Only the joints the current state owns (or a caller took) are written: the others hold whatever
 -- the actuator block has (Player/Motion/control.lua).
 local ffi = require('ffi')
@@ -98,7 +98,7 @@ local params_live = param.follow('motion')
 
 local participant = lockstep.join()
 local tick = -1 -- the current tick is handled first (the lockstep waits for it)
-local pos, gyro, angle, acc = ctl.pos, ctl.gyro, ctl.angle, ctl.acc
+local pos, gyro, angle, acc, ft = ctl.pos, ctl.gyro, ctl.angle, ctl.acc, ctl.ft
 local hardness = actuator.hardness
 
 -- a DCM restarted with another layout, or any block removed or recreated: the mappings held here
@@ -116,6 +116,7 @@ while true do
       gyro[1], gyro[2], gyro[3] = s.gyro[0], s.gyro[1], s.gyro[2]
       angle[1], angle[2], angle[3] = s.angle[0], s.angle[1], s.angle[2]
       acc[1], acc[2], acc[3] = s.accelerometer[0], s.accelerometer[1], s.accelerometer[2]
+      for k = 1, 24 do ft[k] = s.ft[k - 1] end
       return s.time[0]
     end)
     -- what others did to the joints motion does not drive, and which joints a caller took
@@ -168,6 +169,9 @@ while true do
       local e = w.cp_err
       m.capture_error[0], m.capture_error[1] = e and e[1] or 0, e and e[2] or 0
       m.walk_steps[0], m.steps_adjusted[0] = w.stats.steps, w.stats.adjusted or 0
+      local b = ctl.balance
+      m.zmp[0], m.zmp[1], m.zmp[2], m.zmp[3] = b.zmp[1], b.zmp[2], w.zmp[1], w.zmp[2]
+      m.zmp[4], m.zmp[5], m.zmp_contact[0] = b.shift[1], b.shift[2], b.contact and 1 or 0
       for i = 1, n do m.owner[i - 1] = ctl.owner[i] end
       m.tick[0] = tick
     end)

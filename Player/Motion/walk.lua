@@ -6,9 +6,11 @@
 -- support: to the COM's end point midway between the feet) and the linear inverted pendulum is
 -- solved analytically for it along x and y (Player/Motion/lipm.lua). During the step the swing foot
 -- follows a quintic in the ground plane and a smooth lift. The torso origin is placed so that the
--- whole-body centre of mass (from the mass model) follows the planned COM; leg IK gives the angles.
+-- whole-body centre of mass (from the mass model) follows the planned COM (plus `com_shift`, the
+-- balance feedback's: Player/Motion/balance.lua); leg IK gives the angles.
 -- Feedback (all gains in the config): torso rate (gyro) on ankles, knees, hips and arms; torso
--- angle estimated from the support leg's measured joint angles (proprioception) on the hips.
+-- angle estimated from the support leg's measured joint angles (proprioception) on the hips; the
+-- feet's F/T sensors through `com_shift` (Player/Motion/balance.lua, called by the motion states).
 --
 -- Frames: poses u = {x, y, a} in the walk's ground frame (odometry: starts at 0 where the walk
 -- was created). Feet are the foot frames of Lib/kinematics (sole point below the ankle).
@@ -102,6 +104,7 @@ function M.new(params, model)
   w.stats = { steps = 0 }
   w.vel_eff = { 0, 0, 0 }
   w.va_correction = 0      -- rad/s added to the turning of each step (heading feedback)
+  w.com_shift = { 0, 0 }   -- m, ground frame: added to the planned COM (balance feedback, Motion.balance)
   w:reset()
   return w
 end
@@ -388,8 +391,8 @@ function Walk:place_feet()
   local ta = self.uTorso[3]
   local ox, oy = self.com_offset[1] + p.footX, self.com_offset[2]
   local c, s = cos(ta), sin(ta)
-  local tx = self.com[1] - (c * ox - s * oy)
-  local ty = self.com[2] - (s * ox + c * oy)
+  local tx = self.com[1] - (c * ox - s * oy) + self.com_shift[1]
+  local ty = self.com[2] - (s * ox + c * oy) + self.com_shift[2]
   self.torso_x, self.torso_y = tx, ty
   local lz, rz = 0, 0
   if self.active then

@@ -19,16 +19,18 @@ stop_all() {
 trap 'stop_all; rm -rf "$T"' EXIT
 # wait_log FILE PATTERN: up to 20 s
 wait_log() { for _ in $(seq 200); do grep -q "$2" "$1" 2>/dev/null && return 0; sleep 0.1; done; return 1; }
-# measure NAME PLATFORM ID SECONDS VX|stand: hil_walk.lua against robot ID, truth from SIM_ID; its TAP
-# renumbered into this script's, the tracking figures "RMS MAX" into $T/NAME.track
+# measure NAME PLATFORM ID SECONDS VX|stand [STAND]: hil_walk.lua against robot ID, truth from SIM_ID
+# (STAND s standing before the walk); its TAP renumbered into this script's, the tracking figures
+# "RMS MAX" into $T/NAME.track
 measure() {
-  PLATFORM=$2 ROBOT_ID=$3 SIM_ID=$SIM_ID timeout 300 ./run_repl Tests/hil/hil_walk.lua "$4" "$5" >"$LOGDIR/$1.log" 2>&1
+  PLATFORM=$2 ROBOT_ID=$3 SIM_ID=$SIM_ID timeout 300 ./run_repl Tests/hil/hil_walk.lua "$4" "$5" ${6:+"$6"} \
+    >"$LOGDIR/$1.log" 2>&1
   while IFS= read -r line; do
     if [[ $line =~ ^(not\ ok|ok)\ [0-9]+\ -\ (.*)$ ]]; then
       ok "$([ "${BASH_REMATCH[1]}" = ok ]; echo $?)" "$1: ${BASH_REMATCH[2]}"
     elif [[ $line == \#* ]]; then echo "$line"; fi
   done <"$LOGDIR/$1.log"
-  grep -q '^ok .*without a fall' "$LOGDIR/$1.log" || tail -n 5 "$LOGDIR/$1.log" | sed 's/^/#   /'
+  grep -q '^not ok' "$LOGDIR/$1.log" && tail -n 5 "$LOGDIR/$1.log" | sed 's/^/#   /'
   awk '/^tracking /{print $2, $3}' "$LOGDIR/$1.log" >"$T/$1.track"
 }
 # start_sim NAME: the sim DCM (real time, no camera) serving SIM_ID; at SCHED_FIFO where allowed, as

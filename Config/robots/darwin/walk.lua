@@ -59,6 +59,20 @@ return {
     torsoTimeConstant = 0.05,   -- s
     maxCorrection = 0.3,        -- rad, per joint
   },
+  -- balance on the ankle F/T sensors (Player/Motion/balance.lua): off (zmpGain = 0): the real DARwIn-OP
+  -- has no F/T sensors (its sim's ft slots are the simulator's instruments only); the other numbers
+  -- are the body's, for a run with it switched on in the sim (Walk.set('balance.zmpGain', { 2, 2 }))
+  balance = {
+    zmpGain = { 0.0, 0.0 },  -- 1/s, standing, { x, y }: COM shift rate per m of ZMP error; 0 off
+    walkGain = { 0.0, 0.0 }, -- 1/s, walking (the step's ZMP swing filtered out: walkFilterTime)
+    leakTime = 2.0,          -- s: the shift decays with this time constant
+    maxShift = 0.01,         -- m, per axis
+    maxRate = 0.01,          -- m/s: the shift moves no faster (a short push: balance.lua)
+    filterTime = 0.3,        -- s: low-pass on the ZMP error, standing
+    walkFilterTime = 1.0,    -- s: walking (two steps)
+    minForce = 3.0,          -- N: a foot carries weight above this Fz (10% of the body's weight)
+    sensorHeight = 0.0335,   -- m: the sensor's origin (the ankle roll axis) above the sole
+  },
   -- kick (Player/Motion/kick.lua): the body's and the kicking leg's phases side by side; the
   -- OP3's structure (torso back and arms back through a short swing at the servos' speed limit, the
   -- foot lifted before it draws back, the ball met while the leg heads for the return phase's

@@ -65,6 +65,22 @@ return {
     torsoTimeConstant = 0.05,   -- s
     maxCorrection = 0.2,        -- rad, per joint
   },
+  -- balance on the ankle F/T sensors (Player/Motion/balance.lua; the FFT boards of can.lua): the
+  -- measured ZMP of both feet against the walk's, fed back into a shift of the COM
+  balance = {
+    zmpGain = { 2.0, 2.0 },  -- 1/s, standing, { x, y }: COM shift rate per m of ZMP error (integral)
+    walkGain = { 1.0, 0.0 }, -- 1/s, walking (the step's ZMP swing filtered out: walkFilterTime); not
+                             -- sideways: no measured gain there (hubo_balance_test walking 0.25 m/s:
+                             -- y error RMS 67 mm off, 61 with { 1, 0 }, 62 with { 1, 1 })
+    leakTime = 2.0,          -- s: the shift decays with this time constant
+    maxShift = 0.03,         -- m, per axis
+    maxRate = 0.004,         -- m/s: the shift moves no faster (a short push: balance.lua; a walk
+                             -- stopping into stance: the torso still within 5 mm over 1 s)
+    filterTime = 0.3,        -- s: low-pass on the ZMP error, standing
+    walkFilterTime = 1.0,    -- s: walking (two steps)
+    minForce = 40.0,         -- N: a foot carries weight above this Fz (10% of the body's weight)
+    sensorHeight = 0.106,    -- m: the sensor's origin (the ankle roll axis) above the sole
+  },
   -- kick (Player/Motion/kick.lua): the OP3's structure with its distances scaled to the longer
   -- legs and its phases slowed to the drives' speeds. Not tuned and not a target: a 45 kg robot
   -- does not play KickSize football; kept so that the kick states have their data.

@@ -57,6 +57,20 @@ return {
     torsoTimeConstant = 0.05,   -- s
     maxCorrection = 0.3,        -- rad, per joint
   },
+  -- balance on the ankle F/T sensors (Player/Motion/balance.lua): off (zmpGain = 0): the real OP3
+  -- has no F/T sensors (its sim's ft slots are the simulator's instruments only); the other numbers
+  -- are the body's, for a run with it switched on in the sim (Walk.set('balance.zmpGain', { 2, 2 }))
+  balance = {
+    zmpGain = { 0.0, 0.0 },  -- 1/s, standing, { x, y }: COM shift rate per m of ZMP error; 0 off
+    walkGain = { 0.0, 0.0 }, -- 1/s, walking (the step's ZMP swing filtered out: walkFilterTime)
+    leakTime = 2.0,          -- s: the shift decays with this time constant
+    maxShift = 0.01,         -- m, per axis
+    maxRate = 0.01,          -- m/s: the shift moves no faster (a short push: balance.lua)
+    filterTime = 0.3,        -- s: low-pass on the ZMP error, standing
+    walkFilterTime = 1.0,    -- s: walking (two steps)
+    minForce = 3.0,          -- N: a foot carries weight above this Fz (10% of the body's weight)
+    sensorHeight = 0.0305,   -- m: the sensor's origin (the ankle roll axis) above the sole
+  },
   -- kick (Player/Motion/kick.lua): the body's and the kicking leg's phases side by side.
   -- Tuned in the sim (Tests/motion/kick_tune.sh: cross-entropy search over both feet, ball gaps
   -- 0.08/0.12 m and lateral offsets, penalised for a fall, a capture point beyond 5 cm of the

@@ -12,7 +12,10 @@ function M.entry(c)
   local d = c:scratch('stance')
   d.q0, d.h0, d.qs = d.q0 or {}, d.h0 or {}, d.qs or {}
   -- after a stand-up or a relax, the walk starts over at stance around where the torso is
-  if w:is_active() or c.prev ~= 'walk' then w:reset(w.uTorso) end
+  if w:is_active() or c.prev ~= 'walk' then
+    w:reset(w.uTorso)
+    c.balance:reset()
+  end
   -- from the last commands after a motion of ours, else (start, limp, lying) from the measured pose
   local prev = c.prev
   local from_cmd = prev == 'walk' or prev == 'kick_left' or prev == 'kick_right' or prev == 'standup_front'
@@ -30,6 +33,7 @@ function M.update(c)
   local q0, h0, qs = d.q0, d.h0, d.qs
   -- the whole body's pose for the mass model: the held joints (a waist) where they are
   for i = 1, c.n do qs[i] = c.q[i] end
+  c:balance_update()
   w:advance(c.dt)
   w:joint_angles(qs, c.sensors, c.dt)
   c:head_angles(qs)

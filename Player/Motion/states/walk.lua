@@ -26,6 +26,7 @@ function M.update(c)
     w:stop()
     w.va_correction = 0
   end
+  c:balance_update()
   local active = w:advance(c.dt)
   w:joint_angles(c.q, c.sensors, c.dt)
   c:head_angles(c.q)
