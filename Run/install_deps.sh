@@ -10,7 +10,7 @@ DEBIAN_PACKAGES=(
   libode-dev libeigen3-dev libopencv-dev
   libusb-1.0-0-dev liburdfdom-dev libreadline-dev
   clang libclang-rt-14-dev
-  libpng-dev libzstd-dev python3 python3-venv
+  libpng-dev libzstd-dev zlib1g-dev python3 python3-venv
   protobuf-c-compiler libprotobuf-c-dev protobuf-compiler libprotobuf-dev
   chromium                      # the live view's tests drive it headless (Tests/view, Playwright)
 )

@@ -194,6 +194,9 @@ static int mkdirs(const char *dir) {
 
 extern "C" int rec_writer_start(rec_writer **out, const rec_opts *o, const rec_blocks *bs, rec_queue *q,
                                 const rec_doc *docs, int ndocs, char *err, size_t errlen) {
+  // the colour conversion and JPEG run on the writer's own thread: OpenCV's thread pool for a
+  // 640x480 conversion only added hand-offs and wake-ups (seen in perf) on a machine the robot needs
+  cv::setNumThreads(1);
   rec_writer *w = new rec_writer();
   w->o = *o;
   w->bs = bs;
