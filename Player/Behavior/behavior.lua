@@ -203,14 +203,17 @@ function Behavior:close()
   self.team:close()
 end
 
--- The process loop: one step per `step_ticks` ticks, reporting to the lockstep.
+-- The process loop: one step per `step_ticks` ticks, reporting to the lockstep. In lockstep a step
+-- comes after motion and vision finished the tick (Lib/lockstep.lua's stages): it reads this tick's
+-- odometry and detections, never a mix that depends on who ran first, so a run and its replay agree.
 function Behavior:run()
-  local participant = lockstep.join()
+  local participant = lockstep.join({ after = true })
   local n = math.max(1, math.floor(self.cfg.step_ticks))
   local tick = Body.get_tick()
   local wake = tick
   while true do
-    if tick >= wake then
+    if tick >= wake or participant:due(tick) then
+      participant:settle(tick)
       self:step()
       wake = tick + n
       participant:done(tick, wake)
