@@ -267,7 +267,7 @@ void sim_published(void *hw, dcm *d) {
   Sim &s = *static_cast<Sim *>(hw);
   s.prof.lap(Profile::kPublish);
   if (s.worker)
-    for (SimRobot &x : s.rob) x.frames.hand_over(*s.worker, d->tick);
+    for (SimRobot &x : s.rob) x.frames.hand_over(*s.worker, d->tick, !d->lockstep);
   s.prof.lap(Profile::kHandOver);
 }
 
