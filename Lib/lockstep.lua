@@ -53,9 +53,9 @@ function M.join(opts)
 end
 
 function M._setup(sync, slot)
-  -- A DCM held at tick 0 for its first participants (dcm_sim --lockstep-wait N: until N have
-  -- joined) steps once (done_tick 0 >= 0) and then waits for us at tick 1: wait for that, so that
-  -- everybody's first work lands on the same tick whoever came first.
+  -- A DCM held for its first participants (--lockstep-wait N) publishes its first tick only once N
+  -- have joined: wait for it, so that everybody's first work lands on that tick whoever came first
+  -- (and each stage finds the lower ones there).
   if sync.lockstep[0] == 1 then
     local deadline = C.shm_now() + 60.0
     local word = ffi.cast('volatile uint32_t *', sync.tick)
