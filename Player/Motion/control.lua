@@ -21,6 +21,7 @@
 local fsm = require('fsm')
 local Motion = require('Motion')
 local Walk = require('Motion.walk')
+local WalkPreview = require('Motion.walk_preview')
 local keyframe = require('Motion.keyframe')
 local Kick = require('Motion.kick')
 
@@ -88,6 +89,18 @@ function M.keyframe_body(robot, model, ji)
   return { index = ji, mirror = mirror }
 end
 
+-- The walk engine the walk config's `engine` names (read when the motion process starts).
+local ENGINES = { analytic = Walk, preview = WalkPreview }
+function M.walk_engine(params, files)
+  local name = rawget(params, 'engine') or 'analytic'
+  local engine = ENGINES[name]
+  if not engine then
+    error(string.format("%s: key 'engine' must be 'analytic' or 'preview', got '%s'", files or 'walk config',
+      tostring(name)), 2)
+  end
+  return engine
+end
+
 -- opts: robot (Config robot table), params (walk config, read live), model (kinematics),
 -- initial (state name, default 'stance'), walk_files (the walk config's files, for errors).
 function M.new(opts)
@@ -106,7 +119,7 @@ function M.new(opts)
     c.owned[i], c.taken[i], c.write[i], c.owner[i] = false, false, false, 0
   end
   c.sensors = { gyro = c.gyro, position = c.pos, angle = c.angle, acc = c.acc }
-  c.walk = Walk.new(params, opts.model):bind(robot, opts.walk_files)
+  c.walk = M.walk_engine(params, opts.walk_files).new(params, opts.model):bind(robot, opts.walk_files)
   c.kick = Kick.new(c.walk)
   c.ji = c.walk.ji
   c.roles = roles(c, robot)

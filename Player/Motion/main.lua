@@ -7,7 +7,8 @@
 -- velocity, head_command, param_* (walk parameter changes and config re-reads), taken and
 -- taken_command (joints a caller took with Body.set_command & co.: written with the caller's
 -- command until Body.release or a request whose state owns them). Outputs: state, walking, fallen,
--- falls, fall_time, odometry, walk_velocity, owner (per joint: 0 held, 1 motion, 2 a caller), tick.
+-- falls, fall_time, odometry, walk_velocity, the walk's COM, ZMP, feet and capture error, owner
+-- (per joint: 0 held, 1 motion, 2 a caller), tick.
 -- Only the joints the current state owns (or a caller took) are written: the others hold whatever
 -- the actuator block has (Player/Motion/control.lua).
 local ffi = require('ffi')
@@ -157,6 +158,12 @@ while true do
       m.fall_time[0] = ctl.fall_time
       m.odometry[0], m.odometry[1], m.odometry[2] = w.uTorso[1], w.uTorso[2], w.uTorso[3]
       m.walk_velocity[0], m.walk_velocity[1], m.walk_velocity[2] = w.vel[1], w.vel[2], w.vel[3]
+      m.walk_com[0], m.walk_com[1], m.walk_zmp[0], m.walk_zmp[1] = w.com[1], w.com[2], w.zmp[1], w.zmp[2]
+      m.walk_feet[0], m.walk_feet[1], m.walk_feet[2] = w.uLeft[1], w.uLeft[2], w.uLeft[3]
+      m.walk_feet[3], m.walk_feet[4], m.walk_feet[5] = w.uRight[1], w.uRight[2], w.uRight[3]
+      local e = w.cp_err
+      m.capture_error[0], m.capture_error[1] = e and e[1] or 0, e and e[2] or 0
+      m.walk_steps[0], m.steps_adjusted[0] = w.stats.steps, w.stats.adjusted or 0
       for i = 1, n do m.owner[i - 1] = ctl.owner[i] end
       m.tick[0] = tick
     end)

@@ -150,6 +150,10 @@ function M.clamp_velocity(p, vx, vy, va)
   return vx, vy, va
 end
 
+-- The duration of one step. The analytic engine takes tStep as it is; an engine that plans on its
+-- own sample grid (Motion.walk_preview) rounds it to whole ticks.
+function Walk:step_time() return self.p.tStep end
+
 function Walk:set_velocity(vx, vy, va)
   local cx, cy, ca = M.clamp_velocity(self.p, vx, vy, va)
   if not cx then return nil, cy end
@@ -160,7 +164,7 @@ end
 function Walk:start()
   if not self.active then
     self.active = true
-    self.t = self.p.tStep -- a new step begins at the next update
+    self.t = self:step_time() -- a new step begins at the next update
     self.stepping = false
     self.support = nil
     self.steps_still = 0
@@ -174,7 +178,7 @@ function Walk:is_active() return self.active end
 -- Swing foot target for the step, given the support foot and the velocity.
 function Walk:step_target(support_u, swing_left, v)
   local p = self.p
-  local T = p.tStep
+  local T = self:step_time()
   local sgn = swing_left and 1 or -1
   local dx = v[1] * T
   -- sideways and turning: the foot on the side of the motion takes the whole step, the other returns
@@ -199,14 +203,15 @@ function Walk:step_target(support_u, swing_left, v)
 end
 
 -- rate-limits the current velocity towards the command over one step
-function Walk:update_velocity()
+function Walk:update_velocity(v, stopping)
   local p = self.p
-  local T = p.tStep
+  local T = self:step_time()
   local c = self.cmd
   local tx, ty, ta = c[1], c[2], c[3]
-  if self.stopping then tx, ty, ta = 0, 0, 0 end
+  if stopping == nil then stopping = self.stopping end
+  if stopping then tx, ty, ta = 0, 0, 0 end
   local acc = p.accLimit
-  local v = self.vel
+  v = v or self.vel
   v[1] = v[1] + clamp(tx - v[1], -acc[1] * T, acc[1] * T)
   v[2] = v[2] + clamp(ty - v[2], -acc[2] * T, acc[2] * T)
   v[3] = v[3] + clamp(ta - v[3], -acc[3] * T, acc[3] * T)
@@ -221,7 +226,7 @@ end
 
 function Walk:begin_step()
   local p = self.p
-  local T = p.tStep
+  local T = self:step_time()
   self.uLeft1, self.uRight1 = self.uLeft2, self.uRight2
   self.uTorso1 = self.uTorso2
   self:update_velocity()
@@ -255,13 +260,62 @@ function Walk:begin_step()
     self.uRight2 = self.uRight1
     self.uSupport = pose_global({ p.supportX, -sY, 0 }, self.uRight1)
   end
+  self:adjust_step()
   local mid = interp(0.5, self.uLeft2, self.uRight2)
   self.uTorso2 = pose_global({ p.supportX, 0, 0 }, mid)
-  local t1, t2 = p.phSingle[1] * T, p.phSingle[2] * T
-  lipm.solve(self.uTorso1[1], self.uSupport[1], self.uTorso2[1], T, t1, t2, p.tZmp, self.cx)
-  lipm.solve(self.uTorso1[2], self.uSupport[2], self.uTorso2[2], T, t1, t2, p.tZmp, self.cy)
+  self:plan_com(T, p.phSingle[1] * T, p.phSingle[2] * T)
   self.stats.steps = self.stats.steps + 1
   return true
+end
+
+-- Step adjustment (capture point): when a push has moved the capture point away from where the walk
+-- plans it, the swing foot of the step that begins lands that much further (stepAdjust.gain beyond
+-- a dead band, at most stepAdjust.max), within the step limits. The error is estimated each tick
+-- from the IMU (Walk:joint_angles): the whole robot tips about its support foot, so the COM is off
+-- by h sin(tilt) and moves at h * tilt rate; the capture point error is that offset plus velocity
+-- over omega = 1 / tZmp.
+function Walk:adjust_step()
+  local p = self.p
+  local sa = rawget(p, 'stepAdjust')
+  local e = self.cp_err
+  if not sa or sa.gain <= 0 or not e then return end
+  local function beyond(v, d) if v > d then return v - d elseif v < -d then return v + d end return 0 end
+  local ox = clamp(sa.gain * beyond(e[1], sa.deadband[1]), -sa.max[1], sa.max[1])
+  local oy = clamp(sa.gain * beyond(e[2], sa.deadband[2]), -sa.max[2], sa.max[2])
+  if ox == 0 and oy == 0 then return end
+  local left = self.support == RIGHT
+  local sup = left and self.uRight1 or self.uLeft1
+  local target = left and self.uLeft2 or self.uRight2
+  local rel = pose_relative(target, sup)
+  -- the offset is in the heading frame (torso); the swing foot's frame is close enough to it
+  local sgn = left and 1 or -1
+  rel[1] = clamp(rel[1] + ox, p.stepLimitX[1], p.stepLimitX[2])
+  rel[2] = sgn * clamp(sgn * (rel[2] + oy), p.stepLimitY[1], p.stepLimitY[2])
+  local adjusted = pose_global(rel, sup)
+  if left then self.uLeft2 = adjusted else self.uRight2 = adjusted end
+  self.stats.adjusted = (self.stats.adjusted or 0) + 1
+end
+
+-- The COM over the step that begins (engine-specific): the analytic engine solves the linear
+-- inverted pendulum for the step's piecewise-linear ZMP, from uTorso1 over uSupport to uTorso2.
+function Walk:plan_com(T, t1, t2)
+  local p = self.p
+  lipm.solve(self.uTorso1[1], self.uSupport[1], self.uTorso2[1], T, t1, t2, p.tZmp, self.cx)
+  lipm.solve(self.uTorso1[2], self.uSupport[2], self.uTorso2[2], T, t1, t2, p.tZmp, self.cy)
+end
+
+-- At stance: the COM over (x, y), the middle of the feet (an engine may bring it there over time).
+function Walk:hold_com(x, y)
+  self.com[1], self.com[2], self.comd[1], self.comd[2] = x, y, 0, 0
+  self.zmp[1], self.zmp[2] = x, y
+end
+
+-- COM position and velocity and the ZMP along x and y at time t of the current step, called once
+-- per tick while walking (an engine may advance its own state here).
+function Walk:com_at(t)
+  local x, xd, zx = lipm.eval(self.cx, t)
+  local y, yd, zy = lipm.eval(self.cy, t)
+  return x, xd, zx, y, yd, zy
 end
 
 -- Advances the walk by dt seconds and computes the foot poses in the torso frame (self.lpose,
@@ -269,7 +323,7 @@ end
 function Walk:advance(dt)
   local p = self.p
   if self.active then
-    local T = p.tStep
+    local T = self:step_time()
     self.t = self.t + dt
     if self.t >= T - 1e-9 then
       self.t = self.t - T
@@ -288,18 +342,16 @@ function Walk:advance(dt)
     local uy = 0.5 * (uL[2] + uR[2]) + sn * p.supportX
     copy3(self.uLeft, uL)
     copy3(self.uRight, uR)
-    self.com[1], self.com[2], self.comd[1], self.comd[2] = ux, uy, 0, 0
-    self.zmp[1], self.zmp[2] = ux, uy
-    set3(self.uTorso, ux, uy, a)
+    self:hold_com(ux, uy, dt)
+    set3(self.uTorso, self.com[1], self.com[2], a)
     self.ph = 0
     self.swing_z = 0
   else
-    local T = p.tStep
+    local T = self:step_time()
     local t = self.t
     local ph = t / T
     self.ph = ph
-    local x, xd, zx = lipm.eval(self.cx, t)
-    local y, yd, zy = lipm.eval(self.cy, t)
+    local x, xd, zx, y, yd, zy = self:com_at(t, dt)
     self.com[1], self.com[2], self.comd[1], self.comd[2] = x, y, xd, yd
     self.zmp[1], self.zmp[2] = zx, zy
     local ph1, ph2 = p.phSingle[1], p.phSingle[2]
@@ -320,6 +372,13 @@ function Walk:advance(dt)
     local a2 = wrap(self.uLeft2[3] + 0.5 * wrap(self.uRight2[3] - self.uLeft2[3]))
     set3(self.uTorso, x, y, wrap(a1 + ph * wrap(a2 - a1)))
   end
+  self:place_feet()
+  return self.active
+end
+
+-- The foot poses in the torso frame (self.lpose, self.rpose) from the COM, the heading and the feet.
+function Walk:place_feet()
+  local p = self.p
   -- torso origin from the COM: subtract the COM offset (torso frame, rotated by the heading)
   local ta = self.uTorso[3]
   local ox, oy = self.com_offset[1] + p.footX, self.com_offset[2]
@@ -335,7 +394,6 @@ function Walk:advance(dt)
   local uL, uR = self.uLeft, self.uRight
   foot_in_torso(self.lpose, uL[1], uL[2], lz, uL[3], tx, ty, tz, ta, tp, tr)
   foot_in_torso(self.rpose, uR[1], uR[2], rz, uR[3], tx, ty, tz, ta, tp, tr)
-  return self.active
 end
 
 -- Support phase weight: 0 in double support, 1 in single support (for feedback and compensation).
@@ -470,6 +528,7 @@ function Walk:joint_angles(q, sensors, dt, support)
   gf[1] = gf[1] + alpha * (g[1] - gf[1])
   gf[2] = gf[2] + alpha * (g[2] - gf[2])
   local gx, gy = deadband(gf[1], fb.gyroDeadband[1]), deadband(gf[2], fb.gyroDeadband[2])
+  self:estimate_capture_error(sensors, g)
   local lim = fb.maxCorrection
   local ankx, anky = clamp(fb.ankle[1] * gx, -lim, lim), clamp(fb.ankle[2] * gy, -lim, lim)
   local kny = clamp(fb.knee * gy, -lim, lim)
@@ -509,6 +568,20 @@ function Walk:joint_angles(q, sensors, dt, support)
     if arm.roll then add_rot(self, q, arm.roll, armx, 0) end
   end
   return flags
+end
+
+-- The capture point's error (heading frame, m) from the IMU's tilt and rate (see adjust_step).
+-- Positive pitch tips the top forward (+x), positive roll tips it to the right (-y).
+function Walk:estimate_capture_error(sensors, gyro)
+  local angle = sensors.angle
+  if not angle then return end
+  local p = self.p
+  local h = p.tZmp * p.tZmp * 9.81
+  local e = self.cp_err or { 0, 0 }
+  self.cp_err = e
+  local pitch, roll = angle[2] - p.bodyTilt, angle[1]
+  e[1] = h * (sin(pitch) + p.tZmp * gyro[2])
+  e[2] = -h * (sin(roll) + p.tZmp * gyro[1])
 end
 
 -- Updates the COM offset (whole-body COM minus torso origin, in the heading frame) from joint

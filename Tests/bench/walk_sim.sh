@@ -1,15 +1,20 @@
 #!/usr/bin/env bash
-# Benchmark: the walk in the simulator (lockstep), figures only (never fails on them):
+# Benchmark: the walk in the simulator (lockstep), a table per body and walk engine, figures only
+# (never fails on them):
 #  - top forward, sideways and turning speeds sustained for 30 s without a fall (measured from the
-#    sim's truth; commands stepped up until a fall; the limits are raised for the search)
-#  - the largest sideways push (N x 0.1 s) survived while walking, with and without gyro feedback
-# usage: Tests/bench/walk_sim.sh [speed|push]...
+#    sim's truth; commands stepped up from 0.8x the body's configured limit until a fall; the limits
+#    are raised by half for the search)
+#  - the largest sideways and forward pushes (N x 0.1 s) survived while walking, with and without the
+#    gyro feedback
+#  - the motion tick's compute time (median, p99) in LuaJIT, robot-free
+# The engine is chosen through a site overlay (walk.lua: engine = ...) beside the venue's own files.
+# usage: [ROBOTS="op3 darwin hubo2plus"] [ENGINES="analytic preview"] Tests/bench/walk_sim.sh [speed|push|tick]...
 set -u
 cd "$(dirname "$0")/../.."
 source Run/env.sh
 BASE_ID=${ROBOT_ID:-8300}
 WHAT=("$@")
-[ ${#WHAT[@]} -eq 0 ] && WHAT=(speed push)
+[ ${#WHAT[@]} -eq 0 ] && WHAT=(speed push tick)
 LOG="$HRP_ROOT/build/test-logs/bench"
 mkdir -p "$LOG"
 n=0
@@ -23,22 +28,63 @@ run() {
     >"$LOG/main_$label.log" 2>&1 &
   local pid=$!
   for _ in $(seq 200); do grep -q 'motion started' "$LOG/main_$label.log" 2>/dev/null && break; sleep 0.1; done
-  ROBOT_ID=$id WALK_PARAMS="$params" timeout 1200 ./run_repl Tests/motion/sim_scenarios.lua "$@" \
+  ROBOT_ID=$id WALK_PARAMS="$params" timeout 1800 ./run_repl Tests/motion/sim_scenarios.lua "$@" \
     >"$LOG/$label.log" 2>&1
   kill -TERM "$pid" 2>/dev/null; wait "$pid" 2>/dev/null
   Run/shm --robot "$id" remove >/dev/null 2>&1
-  grep -E '^(speed|pushmax) |^# (speed|pushmax)' "$LOG/$label.log"
+  grep -E '^(speed|pushmax) ' "$LOG/$label.log" | tail -1
 }
-RAISE='velLimitX=-0.3,0.6;velLimitY=-0.3,0.3;velLimitA=-2.5,2.5;stepLimitX=-0.1,0.16;stepLimitY=0.08,0.25;stepLimitA=-0.05,1.3'
-for w in "${WHAT[@]}"; do
-  case $w in
-    speed)
-      run speed_x "$RAISE" speed x 0.35 0.4 0.45 0.5 0.55
-      run speed_y "$RAISE" speed y 0.12 0.15 0.18 0.21 0.24
-      run speed_a "$RAISE" speed a 1.7 2.0 2.3 2.5 ;;
-    push)
-      run push_gyro "" pushmax with-gyro-feedback
-      run push_nogyro 'feedback.ankle=0,0;feedback.knee=0;feedback.hip=0,0;feedback.arm=0,0' \
-        pushmax without-gyro-feedback ;;
-  esac
+# the body's limits, raised for the search, and the commands to try (from its walk config)
+limits() {
+  luajit -e "
+    local p = require('Config').load('walk')
+    local function r(v) return string.format('%.3g', v) end
+    local function seq(top) local s = {} for k = 8, 14 do s[#s + 1] = r(top * k / 10) end return table.concat(s, ' ') end
+    print(string.format('velLimitX=%s,%s;velLimitY=%s,%s;velLimitA=%s,%s;stepLimitX=%s,%s;stepLimitY=%s,%s;stepLimitA=%s,%s',
+      r(p.velLimitX[1] * 1.5), r(p.velLimitX[2] * 1.5), r(p.velLimitY[1] * 1.5), r(p.velLimitY[2] * 1.5),
+      r(p.velLimitA[1] * 1.5), r(p.velLimitA[2] * 1.5), r(p.stepLimitX[1] * 1.5), r(p.stepLimitX[2] * 1.5),
+      r(p.stepLimitY[1]), r(p.stepLimitY[2] * 1.5), r(p.stepLimitA[1]), r(p.stepLimitA[2] * 1.5)))
+    print(seq(p.velLimitX[2])) print(seq(p.velLimitY[2])) print(seq(p.velLimitA[2]))"
+}
+NOFB='feedback.ankle=0,0;feedback.knee=0;feedback.hip=0,0;feedback.arm=0,0'
+declare -A FIG
+ROBOT_LIST=(${ROBOTS:-op3})
+ENGINE_LIST=(${ENGINES:-analytic preview})
+for robot in "${ROBOT_LIST[@]}"; do
+  for engine in "${ENGINE_LIST[@]}"; do
+    site="$HRP_ROOT/build/bench-site-$engine"
+    rm -rf "$site"; mkdir -p "$site"
+    cp Config/site/*.lua "$site/"
+    echo "return { engine = '$engine' }  -- Tests/bench/walk_sim.sh" >"$site/walk.lua"
+    export ROBOT=$robot HRP_SITE=$site
+    mapfile -t L < <(limits)
+    k="$robot $engine"
+    echo "# $k"
+    for w in "${WHAT[@]}"; do
+      case $w in
+        speed)
+          FIG[$k x]=$(run "${robot}_${engine}_speed_x" "${L[0]}" speed x ${L[1]} | awk '{print $3}')
+          FIG[$k y]=$(run "${robot}_${engine}_speed_y" "${L[0]}" speed y ${L[2]} | awk '{print $3}')
+          FIG[$k a]=$(run "${robot}_${engine}_speed_a" "${L[0]}" speed a ${L[3]} | awk '{print $3}') ;;
+        push)
+          FIG[$k ps]=$(run "${robot}_${engine}_push_side" "" pushmax gyro side | awk '{print $4}')
+          FIG[$k pf]=$(run "${robot}_${engine}_push_fwd" "" pushmax gyro forward | awk '{print $4}')
+          FIG[$k ps0]=$(run "${robot}_${engine}_push_side_nofb" "$NOFB" pushmax nofb side | awk '{print $4}')
+          FIG[$k pf0]=$(run "${robot}_${engine}_push_fwd_nofb" "$NOFB" pushmax nofb forward | awk '{print $4}') ;;
+        tick)
+          read -r med p99 < <(luajit Tests/bench/motion_tick.lua 20000 | sed -nE 's/.*median ([0-9.]+) us, p99 ([0-9.]+) us.*/\1 \2/p')
+          FIG[$k tick]="$med / $p99" ;;
+      esac
+    done
+  done
+done
+unset HRP_SITE
+echo
+echo "| body | engine | forward m/s | sideways m/s | turning rad/s | side push N s (fb / no fb) | forward push N s (fb / no fb) | motion tick us (median / p99) |"
+echo "|---|---|---|---|---|---|---|---|"
+for robot in "${ROBOT_LIST[@]}"; do
+  for engine in "${ENGINE_LIST[@]}"; do
+    k="$robot $engine"
+    echo "| $robot | $engine | ${FIG[$k x]:--} | ${FIG[$k y]:--} | ${FIG[$k a]:--} | ${FIG[$k ps]:--} / ${FIG[$k ps0]:--} | ${FIG[$k pf]:--} / ${FIG[$k pf0]:--} | ${FIG[$k tick]:--} |"
+  done
 done

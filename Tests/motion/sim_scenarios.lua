@@ -405,18 +405,26 @@ function scenarios.kick(side, gap)
 end
 
 -- largest sideways push (N for 0.1 s) survived while walking at 0.2 m/s forward
-function scenarios.pushmax(label)
-  local lo, hi = 0, 40
+-- pushmax [LABEL] [side|forward]: bisects the largest push (N x 0.1 s on the torso, sideways to the left
+-- or forwards) survived while walking forward at 0.2 m/s (the Hubo: the walk config's velLimitX / 2)
+function scenarios.pushmax(label, dir)
+  -- the search's upper end scales with the body's mass (40 N for a 3 kg robot)
+  local lo, hi = 0, 13 * require('kinematics').load().mass
+  local v = math.min(0.2, Walk.get('velLimitX')[2] / 2)
   -- survived if survived at four moments of the gait cycle (each step's start, middle), both sides
   local function survives(f)
     for k = 0, 3 do
       start_clean()
       Motion.request('walk')
-      Walk.set_velocity(0.2, 0, 0)
-      wait(3 + k * 0.125)
+      Walk.set_velocity(v, 0, 0)
+      wait(3 + k * Walk.get('tStep') / 2)
       local a = Sim.truth()
       local falls0 = Motion.falls()
-      Sim.push(-f * math.sin(a.yaw), f * math.cos(a.yaw), 0.1)
+      if dir == 'forward' then
+        Sim.push(f * math.cos(a.yaw), f * math.sin(a.yaw), 0.1)
+      else
+        Sim.push(-f * math.sin(a.yaw), f * math.cos(a.yaw), 0.1)
+      end
       local fell = wait_until(function() return Sim.truth().fallen or Motion.falls() > falls0 end, 3)
       if fell then return false end
     end
@@ -426,9 +434,10 @@ function scenarios.pushmax(label)
     local mid = 0.5 * (lo + hi)
     if survives(mid) then lo = mid else hi = mid end
   end
-  note('pushmax %s: largest sideways push survived while walking: %.1f N x 0.1 s = %.2f N s', label or '', lo,
-    lo * 0.1)
-  print(string.format('pushmax %s %.3f', label or '', lo * 0.1))
+  dir = dir or 'side'
+  note('pushmax %s %s: largest push survived while walking at %.2f m/s: %.1f N x 0.1 s = %.2f N s', label or '',
+    dir, v, lo, lo * 0.1)
+  print(string.format('pushmax %s %s %.3f', label or '', dir, lo * 0.1))
 end
 
 -- the README's REPL example: a head command from Body while the robot walks really moves the head

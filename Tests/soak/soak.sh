@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Soak: one robot playing in the sim in lockstep (all processes, camera on) for SECONDS of robot time
 # (default 3600), the game restarted every SOAK_RESTART s (default 180). Prints, per process, resident
-# memory, open file descriptors and mapped shm segments after the warm-up and at the end, and checks:
-# no process died or was restarted, fds and segments did not grow, RSS grew by at most SOAK_RSS_KB
-# (default 4096 KB) per process. `make soak` (1 hour), `make soak SOAK_SECONDS=600` (10 minutes).
+# memory, open file descriptors and mapped shm segments after the warm-up, half-way and at the end, and
+# checks: no process died or was restarted, fds and segments did not grow, RSS grew by at most
+# SOAK_RSS_KB (default 4096 KB) per process and by at most half that in the second half (a leak grows
+# on; a warm-up does not). `make soak` (1 hour), `make soak SOAK_SECONDS=600` (10 minutes).
 #   Tests/soak/soak.sh [SECONDS]   env: ROBOT_ID (uses ROBOT_ID+90), SOAK_RESTART, SOAK_RSS_KB
 set -u
 cd "$(dirname "$0")/../.."
@@ -40,11 +41,13 @@ grep -q 'ended (' "$LOGDIR/main.log"
 check $? "no process ended or was restarted ($(grep -c 'ended (' "$LOGDIR/main.log") ended)"
 for name in dcm motion vision behavior; do
   s=$(grep "^proc $name start" "$LOGDIR/soak.out"); e=$(grep "^proc $name end" "$LOGDIR/soak.out")
+  m=$(grep "^proc $name mid" "$LOGDIR/soak.out")
   v() { echo "$1" | sed -nE "s/.* $2=([0-9-]+).*/\1/p"; }
   [ -n "$s" ] && [ -n "$e" ] || { check 1 "$name sampled at start and end"; continue; }
-  rs=$(v "$s" rss_kb); re=$(v "$e" rss_kb); fs=$(v "$s" fds); fe=$(v "$e" fds); ss=$(v "$s" shm); se=$(v "$e" shm)
-  [ "$(v "$s" pid)" = "$(v "$e" pid)" ] && [ "$fe" -le "$fs" ] && [ "$se" -le "$ss" ] && [ $((re - rs)) -le "$RSS_BOUND" ]
-  check $? "$name: RSS $rs -> $re KB ($((re - rs)) KB, bound $RSS_BOUND), fds $fs -> $fe, shm segments $ss -> $se"
+  rs=$(v "$s" rss_kb); re=$(v "$e" rss_kb); rm=$(v "$m" rss_kb); rm=${rm:-$rs}; fs=$(v "$s" fds); fe=$(v "$e" fds); ss=$(v "$s" shm); se=$(v "$e" shm)
+  [ "$(v "$s" pid)" = "$(v "$e" pid)" ] && [ "$fe" -le "$fs" ] && [ "$se" -le "$ss" ] && [ $((re - rs)) -le "$RSS_BOUND" ] &&
+    [ $((re - rm)) -le $((RSS_BOUND / 2)) ]
+  check $? "$name: RSS $rs -> $rm -> $re KB ($((re - rs)) KB, bound $RSS_BOUND; second half $((re - rm)) KB, bound $((RSS_BOUND / 2))), fds $fs -> $fe, shm segments $ss -> $se"
 done
 a=$(sed -nE 's/^segments start ([0-9]+).*/\1/p' "$LOGDIR/soak.out"); b=$(sed -nE 's/^segments end ([0-9]+).*/\1/p' "$LOGDIR/soak.out")
 [ -n "$a" ] && [ "$a" = "$b" ]

@@ -1,8 +1,8 @@
 -- The soak's GameController and sampler (run by ./run_repl inside the sim's lockstep, Tests/soak/soak.sh):
 --   ./run_repl Tests/soak/soak_play.lua SECONDS RESTART_EVERY GC_PORT MAIN_PID
 -- Plays SECONDS of robot time; every RESTART_EVERY s the game restarts (INITIAL, READY, SET, PLAYING, the
--- ball and the robot put back). Samples each of run_main's children (the DCM too) after the warm-up and
--- at the end: resident memory, open file descriptors, mapped hrp shm segments; prints one line per
+-- ball and the robot put back). Samples each of run_main's children (the DCM too) after the warm-up,
+-- half-way and at the end: resident memory, open file descriptors, mapped hrp shm segments; prints one line per
 -- process and phase ("proc motion start pid=.. rss_kb=.. fds=.. shm=..") and the robot's progress.
 -- luacheck: globals Sim wait arg shm Body motion game
 local packet = require('GameFSM.packet')
@@ -68,7 +68,10 @@ restart_game()
 play_for(math.min(30, seconds / 4))
 sample('start')
 local games, walked, falls0 = 1, 0, motion.falls[0]
+local mid_sampled = false
 while Body.get_time() - t_start < seconds do
+  -- A sample half-way tells a plateau (JIT traces, heap warm-up) from a leak that grows all the time.
+  if not mid_sampled and Body.get_time() - t_start >= seconds / 2 then sample('mid') mid_sampled = true end
   local left = seconds - (Body.get_time() - t_start)
   play_for(math.min(every, left))
   if motion.walking[0] == 1 then walked = walked + 1 end

@@ -6,6 +6,14 @@ return {
   tStep = 0.25,              -- s, one step
   tZmp = 0.165,              -- s, sqrt(COM height / g) of the linear inverted pendulum
   phSingle = { 0.1, 0.9 },   -- phase of the step where single support begins and ends
+  -- engine (read at the motion process's start): 'analytic', the COM solved step by step
+  -- (Player/Motion/walk.lua), or 'preview', ZMP preview control over the planned steps
+  -- (Player/Motion/walk_preview.lua: window in s, weights of the ZMP error and the COM jerk, lead-in s)
+  engine = 'analytic',
+  preview = { window = 1.6, Qe = 1.0, R = 1e-6, lead = 0.4 },
+  -- step adjustment (capture point, Player/Motion/walk.lua adjust_step): the next swing foot lands
+  -- gain x the capture point's error beyond the dead band (m), at most max (m), within the step limits
+  stepAdjust = { gain = 0, deadband = { 0.01, 0.01 }, max = { 0.05, 0.05 } },
   -- posture
   bodyHeight = 0.25,         -- m, torso origin (between the hip yaw joints: the URDF's body_link) above the ground
   bodyTilt = 0.08,           -- rad, torso pitch (forward positive)
