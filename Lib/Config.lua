@@ -269,6 +269,30 @@ function M.optional(tbl, key, default)
   return v
 end
 
+-- The layer files of a concern that exist, lowest first: { { abs = path, file = shown name }, ... }
+-- (Lib/param_save.lua writes a changed value into one of them).
+function M.layers(concern, opts)
+  local robot, platform = resolve(opts)
+  local out = {}
+  for _, l in ipairs(layers(concern, robot, platform)) do
+    if exists(l.abs) then out[#out + 1] = { abs = l.abs, file = l.file, default = l.default } end
+  end
+  return out
+end
+
+-- The concerns this process has loaded for ROBOT / PLATFORM, sorted (Lib/param.lua applies live
+-- changes to them: every module holding such a table sees the change).
+function M.loaded()
+  local robot, platform = M.robot(), M.platform()
+  local out = {}
+  for key in pairs(cache) do
+    local c, r, p = key:match('^(.-)|(.-)|(.*)$')
+    if r == robot and p == platform then out[#out + 1] = c end
+  end
+  table.sort(out)
+  return out
+end
+
 -- Forget cached files (tests; re-reading a file edited at run time).
 function M.reload() cache = {} bases = {} end
 

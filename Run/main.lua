@@ -90,6 +90,9 @@ local vision = shm.open('vision')
 local world = shm.open('world')
 local game = shm.open('game')
 local sim = opts.sim and shm.open('sim') or nil
+-- live parameter changes (Lib/param.lua) last as long as this run: a process it restarts applies
+-- them again, a new run_main starts from the config files (param.save() keeps a change)
+require('param').reset()
 
 -- hang detection: each process's progress counter against the input it works on
 local hangs

@@ -23,6 +23,8 @@ env.blocks = blocks
 local Body = require('Body')
 env.Body = Body
 env.history = require('history')
+env.param = require('param')
+env.replay = require('replay')
 
 -- Optional modules: bound when present; a module that exists but fails to load is reported.
 local function optional(name)
@@ -92,6 +94,9 @@ hrp REPL (robot id %d, body %s, platform %s)
   blocks['dcm.sensor']:dump()  dcm_sensor.position[0]  dcm_actuator:set('hardness', 1)
   wait(seconds)       let the robot's clock advance
   history('dcm.sensor.gyro', 2.0)   times and values of a field over the last 2 s (the recorder's ring)
+  param('walk.tStep')  param('walk.tStep', 0.3)   any Config value, read / set in the running processes
+  param.save()  param.list('vision.ball')  param.changes()  param.status()
+  replay.pause() replay.resume() replay.step(n) replay.seek(t) replay.speed(x) replay.status()   (PLATFORM=Replay)
   p(x)                print a table
   Sim.truth() Sim.reset() Sim.teleport_robot(x, y, yaw) Sim.teleport_ball(x, y) Sim.push(fx, fy, t)
   Motion.request('walk')  Walk.set_velocity(vx, vy, va)  Vision.ball()   (when loaded)
@@ -120,6 +125,7 @@ if args[1] == '-e' or (args[1] and args[1] ~= '-i') then
   end
   if not chunk then io.stderr:write('repl: ', err, '\n') finish(1) end
   participant = lockstep.join({ observer = true })
+  env.replay.participant = participant
   local ok, res = run_chunk(chunk)
   if not ok then io.stderr:write(tostring(res), '\n') finish(1) end
   finish(0)

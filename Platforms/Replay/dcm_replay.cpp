@@ -1,14 +1,19 @@
 // dcm_replay: the Replay platform's DCM -- a recording served back into the shm blocks tick by tick (see
 // replay_log.h), a driver of the DCM library, so the Lua processes run unchanged on recorded data, in
-// real time, faster (--speed) or in lockstep.
-//   PLATFORM=Replay ./run_dcm --log FILE [--speed X] [--lockstep] [--lockstep-wait N] [--quiet]
-// At the end of the log (or at damage, which is reported) it stops.
+// real time, faster (--speed) or in lockstep; paused, stepped, sought and sped up from the REPL through
+// the `replay` block (replay_control.h, Lib/replay.lua).
+//   PLATFORM=Replay ./run_dcm --log FILE [--speed X] [--lockstep] [--lockstep-wait N] [--paused] [--quiet]
+// At the end of the log (or at damage, which is reported) it stops, unless paused (then it holds the last
+// tick, and a seek can go back).
+#include "replay_control.h"
 #include "replay_log.h"
 #include "dcm/dcm.h"
 
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+
+#include <unistd.h>
 
 #include <cerrno>
 #include <cstdio>
@@ -21,6 +26,11 @@ namespace {
 struct replay_hw {
   const char *path = nullptr;
   double speed = 0;                       // from the command line (0: the config's)
+  double recorded_period = 0;             // s, the recorded robot's tick
+  int start_paused = 0;                   // --paused: hold the first tick
+  int serve_current = 0;                  // a seek read the next tick to serve: read() serves it
+  int end_reported = 0;
+  replay_control ctl;
   char serve[REPLAY_BLOCKS_MAX][DCM_NAME_MAX];
   int nserve = 0;
   char leave[SHMLOG_FIELDS_MAX][DCM_NAME_MAX];
@@ -59,6 +69,7 @@ int configure(void *hw, dcm *d, char *err, size_t n) {
     d->robot[0].nj = nj;
     snprintf(d->robot[0].name, sizeof d->robot[0].name, "%s", dcm_config_robot(rc));
     d->period = period / speed;
+    h->recorded_period = period;
     d->simulated = 1;
   }
   dcm_config_free(rc);
@@ -97,12 +108,17 @@ int open_log(void *hw, dcm *d, char *err, size_t n) {
   const char *serve[REPLAY_BLOCKS_MAX], *leave[SHMLOG_FIELDS_MAX];
   for (int i = 0; i < h->nserve; i++) serve[i] = h->serve[i];
   for (int i = 0; i < h->nleave; i++) leave[i] = h->leave[i];
-  return replay_log_open(&h->L, h->path, d->schema, d->robot[0].id, serve, h->nserve, leave, h->nleave,
-                         h->camera_field, decode_frame, h, err, n);
+  int rc = replay_log_open(&h->L, h->path, d->schema, d->robot[0].id, serve, h->nserve, leave, h->nleave,
+                           h->camera_field, decode_frame, h, err, n);
+  if (rc == 0) rc = replay_control_open(&h->ctl, d->schema, d->robot[0].id, h->recorded_period / d->period, err, n);
+  if (rc == 0) h->ctl.paused = h->start_paused;
+  return rc;
 }
 
 void report_end(replay_hw *h, dcm *d) {
   const replay_log *L = &h->L;
+  if (h->end_reported) return;
+  h->end_reported = 1;
   if (L->damage[0])
     fprintf(stderr, "dcm_replay: %s: damaged: %s; replayed %llu ticks up to t=%.3f s\n", h->path, L->damage,
             (unsigned long long)L->ticks, L->time);
@@ -128,13 +144,48 @@ void write(void *, dcm *) {}   // commands go nowhere: the robot's body is the r
 
 void read(void *hw, dcm *d) {
   replay_hw *h = static_cast<replay_hw *>(hw);
+  if (h->serve_current) {
+    h->serve_current = 0;
+    replay_log_serve(&h->L);
+    return;
+  }
   const int rc = replay_log_next(&h->L);
   if (rc > 0) {
+    h->end_reported = 0;
     replay_log_serve(&h->L);
     return;
   }
   report_end(h, d);
-  dcm_stop(d);
+  if (!h->ctl.paused) dcm_stop(d);   // paused: the last tick stays, a seek may go back
+}
+
+// Between two cycles: the REPL's commands. While paused the clock is held here (no tick is published,
+// so every process waits as for a stopped DCM); a step lets cycles through one by one, a seek reads up to
+// its tick so that the next cycle serves it.
+void published(void *hw, dcm *d) {
+  replay_hw *h = static_cast<replay_hw *>(hw);
+  replay_control *c = &h->ctl;
+  replay_control_poll(c);
+  const int held = replay_control_holds(c);
+  if (held) {
+    replay_control_publish(c, &h->L, 1);
+    while (!*d->stop && replay_control_holds(c))
+      if (!replay_control_poll(c)) usleep(2000);
+  }
+  if (c->speed_changed) {
+    c->speed_changed = 0;
+    d->period = d->pacer.period = h->recorded_period / c->speed;
+  }
+  if (c->seek_pending) {
+    c->seek_pending = 0;
+    if (replay_log_seek(&h->L, c->seek_to) > 0) h->serve_current = 1;
+    else fprintf(stderr, "dcm_replay: seek to %.3f s: no tick to serve%s%s\n", c->seek_to,
+                 h->L.damage[0] ? ": " : "", h->L.damage);
+  }
+  if (c->paused && c->steps > 0) c->steps--;
+  // real time: the deadlines start again from now (the hold is no overrun)
+  if (held) d->pacer.deadline = d->pacer.clock.now(d->pacer.clock.ctx);
+  replay_control_publish(c, &h->L, 0);
 }
 
 // The recorded sensors, but the tick and the pid, which are this DCM's
@@ -151,10 +202,15 @@ void publish(void *hw, dcm *d, int, const dcm_blk_dcm_sensor *s) {
   d->time = h->L.time;
 }
 
-void close_log(void *hw, dcm *) { replay_log_close(&static_cast<replay_hw *>(hw)->L); }
+void close_log(void *hw, dcm *) {
+  replay_hw *h = static_cast<replay_hw *>(hw);
+  replay_control_close(&h->ctl);
+  replay_log_close(&h->L);
+}
 
 int usage() {
-  fprintf(stderr, "usage: dcm_replay --log FILE [--speed X] [--lockstep] [--lockstep-wait N] [--cycles N] [--quiet]\n");
+  fprintf(stderr, "usage: dcm_replay --log FILE [--speed X] [--lockstep] [--lockstep-wait N] [--cycles N] [--paused] "
+                  "[--quiet]\n");
   return 2;
 }
 
@@ -169,6 +225,7 @@ int main(int argc, char **argv) {
     const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : nullptr;
     if (!strcmp(a, "--quiet")) { D.quiet = 1; continue; }
     if (!strcmp(a, "--lockstep")) { D.lockstep = 1; continue; }
+    if (!strcmp(a, "--paused")) { H.start_paused = 1; continue; }
     if (!v) return usage();
     if (!strcmp(a, "--log")) H.path = v;
     else if (!strcmp(a, "--speed")) H.speed = atof(v);
@@ -179,7 +236,7 @@ int main(int argc, char **argv) {
   }
   if (!H.path) return usage();
   if (H.speed < 0) return usage();
-  static const dcm_driver drv = { configure, open_log, enable, write, read, publish, nullptr, nullptr, nullptr,
+  static const dcm_driver drv = { configure, open_log, enable, write, read, publish, nullptr, nullptr, published,
                                   close_log };
   char err[1024];
   const int rc = dcm_main(&D, &drv, &H, err, sizeof err);

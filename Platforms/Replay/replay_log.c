@@ -157,6 +157,7 @@ void replay_log_close(replay_log *L) {
   for (int i = 0; i < L->nblocks; i++) {
     shm_block_close(L->b[i].blk);
     free(L->b[i].stage);
+    free(L->b[i].pending);
   }
   L->nblocks = 0;
   if (L->r) mcap_reader_close(L->r);
@@ -170,6 +171,8 @@ void replay_log_rewind(replay_log *L) {
   L->damage[0] = 0;
 }
 
+static void take_frame(replay_log *L, replay_block *rb, const uint8_t *msg, size_t msg_len);
+
 /* One message into its block's stage. */
 static void take(replay_log *L, const mcap_message *m) {
   const int bi = m->channel < REPLAY_CHANNELS_MAX ? L->chan_block[m->channel] : -1;
@@ -181,13 +184,30 @@ static void take(replay_log *L, const mcap_message *m) {
   const int fi = m->channel < REPLAY_CHANNELS_MAX ? L->chan_frame[m->channel] : -1;
   if (fi < 0 || !L->frame_fn) return;
   replay_block *rb = &L->b[fi];
+  if (L->seeking) {
+    /* a seek decodes only the last frame it passes (replay_log_seek) */
+    if (m->len > rb->pending_cap) {
+      uint8_t *p = (uint8_t *)realloc(rb->pending, m->len);
+      if (!p) return;
+      rb->pending = p;
+      rb->pending_cap = m->len;
+    }
+    memcpy(rb->pending, m->data, m->len);
+    rb->pending_len = m->len;
+    return;
+  }
+  take_frame(L, rb, m->data, m->len);
+}
+
+/* A frame message: decoded into its block's stage. */
+static void take_frame(replay_log *L, replay_block *rb, const uint8_t *msg, size_t msg_len) {
   char format[32];
   const uint8_t *data;
   size_t len;
   int32_t w, h;
   memcpy(&w, rb->stage + rb->width_off, 4);
   memcpy(&h, rb->stage + rb->height_off, 4);
-  if (shmlog_image_decode(m->data, m->len, format, sizeof format, &data, &len) == 0 &&
+  if (shmlog_image_decode(msg, msg_len, format, sizeof format, &data, &len) == 0 &&
       L->frame_fn(L->frame_ctx, data, len, w, h, rb->stage + rb->frame_offset, rb->frame_bytes) == 0) {
     rb->dirty = 1;
     L->frames++;
@@ -248,4 +268,24 @@ void replay_log_serve(replay_log *L) {
     if (rb->has_frames) memcpy(seg + rb->frame_offset, rb->stage + rb->frame_offset, rb->frame_bytes);
     shm_write_end(rb->blk);
   }
+}
+
+int replay_log_seek(replay_log *L, double t) {
+  int rc = 1;
+  for (int i = 0; i < L->nblocks; i++) L->b[i].pending_len = 0;
+  L->seeking = 1;
+  if (L->ticks == 0 || t < L->time) {
+    replay_log_rewind(L);
+    rc = replay_log_next(L);
+  }
+  /* the tick read ahead comes at or before t: it is the one, or one before it */
+  while (rc > 0 && L->have_next && (double)L->next.log_time * 1e-9 <= t) rc = replay_log_next(L);
+  L->seeking = 0;
+  for (int i = 0; i < L->nblocks; i++) {
+    replay_block *rb = &L->b[i];
+    if (rb->pending_len) take_frame(L, rb, rb->pending, rb->pending_len);
+    rb->pending_len = 0;
+    rb->dirty = 1;
+  }
+  return rc > 0 || L->ticks > 0 ? 1 : rc;
 }

@@ -35,6 +35,8 @@ typedef struct replay_block {
   size_t frame_bytes;
   int width_off, height_off;
   uint8_t left[SHMLOG_FIELDS_MAX]; /* 1: a field of `now` the processes under test write: not served */
+  uint8_t *pending;        /* a seek's last frame message, decoded when the seek ends */
+  size_t pending_len, pending_cap;
 } replay_block;
 
 typedef struct replay_log {
@@ -46,6 +48,7 @@ typedef struct replay_log {
   int chan_frame[REPLAY_CHANNELS_MAX]; /* channel id -> block index of its frames, -1 */
   mcap_message next;                   /* the next tick's dcm.sensor message, read ahead */
   int have_next, ended;
+  int seeking;                         /* frames are stashed, not decoded (replay_log_seek) */
   uint64_t ticks, frames, bad_frames;
   double first_time, time;             /* s, robot clock of the first / current tick */
   replay_frame_fn frame_fn;
@@ -67,6 +70,11 @@ int replay_log_next(replay_log *L);
 void replay_log_serve(replay_log *L);
 /* Back to the start. */
 void replay_log_rewind(replay_log *L);
+/* Reads up to the tick of log time t -- the last tick at or before t (the first tick for a t before
+ * it) -- into the stages, every block marked dirty, so that replay_log_serve serves it whole.
+ * Backwards from the start of the log; the camera frames skipped are not decoded, only the last.
+ * 1, or <= 0 as replay_log_next when no tick could be read. */
+int replay_log_seek(replay_log *L, double t);
 
 #ifdef __cplusplus
 }

@@ -18,6 +18,7 @@ local setplay = require('GameFSM.setplay')
 local act = require('Behavior.act')
 local Team = require('Team.team')
 local roles = require('Team.roles')
+local param = require('param')
 
 local M = {}
 
@@ -207,15 +208,30 @@ end
 -- comes after motion and vision finished the tick (Lib/lockstep.lua's stages): it reads this tick's
 -- odometry and detections, never a mix that depends on who ran first, so a run and its replay agree.
 function Behavior:run()
+  -- every Config value live (Lib/param.lua): the machines and the world model read their config at
+  -- every step; the pose filter's particle count is re-derived
+  local live = param.follow('behavior')
+  live:on('behavior.world.pose.particles', function()
+    local f = self.world.pose
+    f.n = self.cfg.world.pose.particles
+    f:init_prior()
+  end)
+  live:on('behavior.world.field', function()
+    local fl = self.cfg.world.field
+    local hx, hw = fl.length / 2, fl.goal_width / 2
+    local real = self.world.pose.posts
+    real[1][1], real[1][2], real[2][1], real[2][2] = hx, hw, hx, -hw
+    real[3][1], real[3][2], real[4][1], real[4][2] = -hx, hw, -hx, -hw
+  end)
   local participant = lockstep.join({ after = true })
-  local n = math.max(1, math.floor(self.cfg.step_ticks))
   local tick = Body.get_tick()
   local wake = tick
   while true do
     if tick >= wake or participant:due(tick) then
       participant:settle(tick)
+      live:poll()
       self:step()
-      wake = tick + n
+      wake = tick + math.max(1, math.floor(self.cfg.step_ticks))
       participant:done(tick, wake)
     end
     local t = Body.wait_tick(tick, 1.0)

@@ -20,6 +20,7 @@ local Motion = require('Motion')
 local WalkAPI = require('Walk')
 local kin = require('kinematics')
 local control = require('Motion.control')
+local param = require('param')
 
 ffi.cdef [[ int getpid(void); ]]
 
@@ -92,6 +93,9 @@ local function apply_param()
   motion.param_ack[0] = motion.param_seq[0]
 end
 
+-- every Config value live (Lib/param.lua): the changes made from the REPL land here once per tick
+local params_live = param.follow('motion')
+
 local participant = lockstep.join()
 local tick = -1 -- the current tick is handled first (the lockstep waits for it)
 local pos, gyro, angle, acc = ctl.pos, ctl.gyro, ctl.angle, ctl.acc
@@ -128,6 +132,7 @@ while true do
         end
       end
     end
+    params_live:poll()
     if motion.param_seq[0] ~= last_param then
       last_param = motion.param_seq[0]
       apply_param()

@@ -124,6 +124,7 @@ function Walk:reset(u)
   self.active = false
   self.stopping = false
   self.t = 0
+  self.T = nil             -- s, the duration of the step under way (latched at its start)
   self.support = RIGHT
   self.ph = 0
   self.swing_z = 0
@@ -165,6 +166,7 @@ function Walk:start()
   if not self.active then
     self.active = true
     self.t = self:step_time() -- a new step begins at the next update
+    self.T = nil
     self.stepping = false
     self.support = nil
     self.steps_still = 0
@@ -263,7 +265,10 @@ function Walk:begin_step()
   self:adjust_step()
   local mid = interp(0.5, self.uLeft2, self.uRight2)
   self.uTorso2 = pose_global({ p.supportX, 0, 0 }, mid)
-  self:plan_com(T, p.phSingle[1] * T, p.phSingle[2] * T)
+  -- the step keeps the duration and single-support phase it was planned with (its COM plan is only
+  -- valid for them): a live change of tStep or phSingle (Lib/param.lua) lands at the next step
+  self.T, self.ph1, self.ph2 = T, p.phSingle[1], p.phSingle[2]
+  self:plan_com(T, self.ph1 * T, self.ph2 * T)
   self.stats.steps = self.stats.steps + 1
   return true
 end
@@ -323,7 +328,7 @@ end
 function Walk:advance(dt)
   local p = self.p
   if self.active then
-    local T = self:step_time()
+    local T = self.T or self:step_time()
     self.t = self.t + dt
     if self.t >= T - 1e-9 then
       self.t = self.t - T
@@ -347,14 +352,14 @@ function Walk:advance(dt)
     self.ph = 0
     self.swing_z = 0
   else
-    local T = self:step_time()
+    local T = self.T
     local t = self.t
     local ph = t / T
     self.ph = ph
     local x, xd, zx, y, yd, zy = self:com_at(t, dt)
     self.com[1], self.com[2], self.comd[1], self.comd[2] = x, y, xd, yd
     self.zmp[1], self.zmp[2] = zx, zy
-    local ph1, ph2 = p.phSingle[1], p.phSingle[2]
+    local ph1, ph2 = self.ph1, self.ph2
     local phs = clamp((ph - ph1) / (ph2 - ph1), 0, 1)
     -- the foot reaches its landing point a little before touch-down (servo lag)
     local s = smooth(clamp(phs / p.swingLead, 0, 1))
@@ -399,9 +404,8 @@ end
 -- Support phase weight: 0 in double support, 1 in single support (for feedback and compensation).
 function Walk:single_support()
   if not self.active then return 0 end
-  local p = self.p
   local ph = self.ph
-  local ph1, ph2 = p.phSingle[1], p.phSingle[2]
+  local ph1, ph2 = self.ph1 or self.p.phSingle[1], self.ph2 or self.p.phSingle[2]
   if ph < ph1 or ph > ph2 then return 0 end
   return 1
 end

@@ -129,10 +129,9 @@ end
 
 -- ZMP reference of one step into the ring: from `a` (COM target at its start) over support point `s`
 -- to `b`, samples k0 .. k0 + n - 1, in the analytic engine's three pieces.
-local function fill_step(self, k0, n, a, s, b)
-  local p = self.p
-  local n1 = floor(p.phSingle[1] * n + 0.5)
-  local n2 = floor(p.phSingle[2] * n + 0.5)
+local function fill_step(self, k0, n, a, s, b, ph1, ph2)
+  local n1 = floor(ph1 * n + 0.5)
+  local n2 = floor(ph2 * n + 0.5)
   local rx, ry, size = self.ring[1], self.ring[2], self.ring_size
   for j = 0, n - 1 do
     local u
@@ -175,7 +174,8 @@ function Preview:plan_com()
     self.ctl = ctl
   end
   fill_const(self, self.k - 1, k0 - 1, self.uTorso1)
-  fill_step(self, k0, n, self.uTorso1, self.uSupport, self.uTorso2)
+  -- this step with the phases it latched; the planned ones with today's (they latch them in turn)
+  fill_step(self, k0, n, self.uTorso1, self.uSupport, self.uTorso2, self.ph1, self.ph2)
   -- the steps that follow at the commanded velocity, as begin_step() would take them
   local v = { self.vel[1], self.vel[2], self.vel[3] }
   local l, r, torso, support = self.uLeft2, self.uRight2, self.uTorso2, self.support
@@ -199,7 +199,7 @@ function Preview:plan_com()
       s = pose_global({ p.supportX, -sY, 0 }, r)
     end
     local b = pose_global({ p.supportX, 0, 0 }, interp(0.5, l, r))
-    fill_step(self, k, n, torso, s, b)
+    fill_step(self, k, n, torso, s, b, p.phSingle[1], p.phSingle[2])
     torso, k = b, k + n
   end
   if k <= last then fill_const(self, k, last, torso) end

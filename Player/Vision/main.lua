@@ -16,6 +16,7 @@ local camera = require('camera')
 local kinematics = require('kinematics')
 local lockstep = require('lockstep')
 local pipeline = require('Vision.pipeline')
+local param = require('param')
 
 local args = { ... }
 local opts = { report = 0 }
@@ -66,6 +67,18 @@ if not cam then
   io.stderr:write('vision: ', err, '\n')
   os.exit(1)
 end
+
+-- every Config value live (Lib/param.lua): the detectors read vision.ball / vision.goal at every
+-- frame; what the pipeline derives at its creation (label and block images, the LUT) is rebuilt
+local params_live = param.follow('vision')
+local function rebuild(key)
+  local fresh, perr = pipeline.new(vcfg, ccfg, model)
+  if fresh then vp = fresh else log('%s: pipeline not rebuilt: %s', key, perr) end
+end
+for _, key in ipairs({ 'vision.scale', 'vision.block', 'vision.lut', 'vision.colors', 'camera.fovy' }) do
+  params_live:on(key, rebuild)
+end
+params_live:on('camera.fps', function(_, fps) cam_settings.fps = fps end)
 
 local vision = shm.open('vision')
 local sensor = shm.open('dcm.sensor')
@@ -146,6 +159,7 @@ end
 
 -- one frame (or a camera error), never raising
 local function step(timeout)
+  params_live:poll()
   local frame, msg, code = cam:grab(timeout)
   if not frame then
     camera_error(msg, code)

@@ -10,6 +10,10 @@ local sensor, actuator, sync = shm.open('dcm.sensor'), shm.open('dcm.actuator'),
 local pids = ffi.cast('volatile int32_t *', sync.pid)
 local done_count = ffi.cast('volatile uint32_t *', sync.done_count)
 local out = assert(io.open(out_path, 'w'))
+-- the clock starts at 0 whatever an earlier run on this robot id left in the blocks (a script reading a
+-- stale tick would ask to be woken past this run's end)
+sensor:write(function(s) s.tick[0] = 0; s.time[0] = 0 end)
+sync.tick[0] = 0
 sync.lockstep[0] = 1
 
 -- hold the clock at 0 until somebody joins, so a script's first commands land on tick 0

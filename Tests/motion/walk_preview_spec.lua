@@ -2,22 +2,13 @@
 -- The preview walk engine (Player/Motion/walk_preview.lua) without a robot: chosen by the walk
 -- config, the same footsteps as the analytic engine, a COM whose velocity stays continuous across
 -- steps, a ZMP that stays under the support foot, and a clean stop.
-local Config = require('Config')
-local kin = require('kinematics')
 local control = require('Motion.control')
+local fixture = require('Tests.motion.walk_fixture')
 
-local robot = Config.load('robot')
-local model = kin.load()
-local dt = robot.period
-
-local function copy(t)
-  local c = {}
-  for k, v in pairs(t) do c[k] = type(v) == 'table' and copy(v) or v end
-  return c
-end
+local robot, model, dt = fixture.robot, fixture.model, fixture.dt
 
 local function params_for(engine)
-  local p = copy(Config.load('walk'))
+  local p = fixture.copy(fixture.params)
   p.engine = engine
   return p
 end
@@ -71,7 +62,7 @@ describe('preview walk engine', function()
 
   it('keeps the planned ZMP under the support foot in single support while the command holds', function()
     local _, trace = run('preview', 0.25, 0.05, 0.3, 5)
-    local p = Config.load('walk')
+    local p = fixture.params
     local worst = 0
     for k, s in ipairs(trace) do
       -- until the stop: a stop is not foreseen, and the step after it departs from the plan

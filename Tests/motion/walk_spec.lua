@@ -2,19 +2,9 @@
 -- The walk generator alone (no robot): LIPM solution, foot placement, limits, start and stop.
 local lipm = require('Motion.lipm')
 local Walk = require('Motion.walk')
-local Config = require('Config')
-local kin = require('kinematics')
+local fixture = require('Tests.motion.walk_fixture')
 
-local robot = Config.load('robot')
-local params = Config.load('walk')
-local model = kin.load()
-local dt = robot.period
-
-local function copy(t)
-  local c = {}
-  for k, v in pairs(t) do c[k] = type(v) == 'table' and copy(v) or v end
-  return c
-end
+local robot, params, model, dt, copy = fixture.robot, fixture.params, fixture.model, fixture.dt, fixture.copy
 
 describe('lipm.solve', function()
   local T, t1, t2, tz = 0.25, 0.025, 0.225, 0.165
