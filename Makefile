@@ -52,9 +52,11 @@ $(DEPS_STAMP): Run/install_deps.sh Run/requirements.txt
 test: all
 	@Tests/run_all.sh
 
-# One robot in the simulator, headless, a status line per second until Ctrl-C (Run/main.lua --sim).
+# One robot in the simulator, a status line per second until Ctrl-C (Run/main.lua --sim), and the live
+# view in a browser (./run_view: it prints the URL, http://127.0.0.1:8080/; VIEW_PORT= another port).
+VIEW_PORT ?= 8080
 sim: all
-	@./run_main --sim
+	@./run_main --sim --view $(VIEW_PORT)
 
 # A whole match in the sim, refereed (Run/referee.lua): 2v2 (match4: 4v4), 2 x HALF s (default 300),
 # e.g. `make match HALF=60`; prints the result, the real-time factor and the CPU per process.

@@ -12,6 +12,7 @@ DEBIAN_PACKAGES=(
   clang libclang-rt-14-dev
   libpng-dev libzstd-dev python3 python3-venv
   protobuf-c-compiler libprotobuf-c-dev protobuf-compiler libprotobuf-dev
+  chromium                      # the live view's tests drive it headless (Tests/view, Playwright)
 )
 
 missing=()

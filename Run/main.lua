@@ -7,6 +7,7 @@
 --   ./run_main --sim [names]        also starts the simulator (./run_dcm) first: one robot, headless
 --   ./run_main --record [DIR]       also records every shm block into MCAP files (Run/recorder; DIR, else
 --                                   Config's recorder.dir)
+--   ./run_main --view [PORT]        also serves the live view (./run_view; PORT, default 8080; it prints the URL)
 --   options: --dcm-arg ARG (repeatable, passed to ./run_dcm), --no-restart, --quiet,
 --            --script NAME=FILE (run FILE, relative to the repository root, as process NAME),
 --            --hang-after S (default 2; 0: off): a process that makes no progress while its input
@@ -28,8 +29,8 @@ local SCRIPT = {
 
 local function usage(msg)
   if msg then io.stderr:write('run_main: ', msg, '\n') end
-  io.stderr:write('usage: ./run_main [--sim] [--record [DIR]] [--dcm-arg ARG]... [--script NAME=FILE]...',
-    ' [--no-restart] [--quiet] [--hang-after S] [motion|vision|behavior]...\n')
+  io.stderr:write('usage: ./run_main [--sim] [--record [DIR]] [--view [PORT]] [--dcm-arg ARG]...',
+    ' [--script NAME=FILE]... [--no-restart] [--quiet] [--hang-after S] [motion|vision|behavior]...\n')
   os.exit(2)
 end
 
@@ -46,6 +47,10 @@ do
       opts.record = true
       local dir = args[i + 1]
       if dir and dir:sub(1, 1) ~= '-' and not SCRIPT[dir] then opts.record_dir, i = dir, i + 1 end
+    elseif a == '--view' then
+      opts.view = '8080'
+      local port = args[i + 1]
+      if port and port:match('^%d+$') then opts.view, i = port, i + 1 end
     elseif a == '--dcm-arg' then
       i = i + 1
       if not args[i] then usage('--dcm-arg needs a value') end
@@ -132,6 +137,9 @@ if opts.record then
   local argv = { ROOT .. '/build/bin/hrp_record', '--quiet' }
   if opts.record_dir then argv[3], argv[4] = '--dir', opts.record_dir end
   children[#children + 1] = { name = 'recorder', argv = argv, restarts = 0 }
+end
+if opts.view then
+  children[#children + 1] = { name = 'view', argv = { ROOT .. '/run_view', '--port', opts.view }, restarts = 0 }
 end
 for _, name in ipairs(opts.names) do
   local script = SCRIPT[name]:sub(1, 1) == '/' and SCRIPT[name] or ROOT .. '/' .. SCRIPT[name]
@@ -304,7 +312,7 @@ while true do
       else
         log('%s ended (%s) after %.1f s', c.name, how, ran)
       end
-      if c.name ~= 'dcm' and c.name ~= 'recorder' then safe_stance(c.name .. ' down') end
+      if c.name ~= 'dcm' and c.name ~= 'recorder' and c.name ~= 'view' then safe_stance(c.name .. ' down') end
     end
   end
   if hangs then

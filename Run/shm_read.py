@@ -24,28 +24,54 @@ def segment_path(block, robot):
     return f"/dev/shm/hrp.{robot}.{block}"
 
 
+class Segment:
+    """One block's segment, mapped once (a tool that polls, e.g. the live view, Run/view)."""
+
+    def __init__(self, path):
+        with open(path, "rb") as f:
+            self.mm = mmap.mmap(f.fileno(), 0, prot=mmap.PROT_READ)
+        (magic, version, header_size, _hash, _total, nfields, field_size, data, ready, _pid, _w,
+         _ns, name) = HEADER.unpack_from(self.mm, 0)
+        if magic != MAGIC or field_size != FIELD.size or not ready:
+            raise ValueError(f"{path}: not an initialised hrp shm segment (format {version})")
+        self.path, self.name, self.data_offset = path, name.rstrip(b"\0").decode(), data
+        self.fields = []
+        for i in range(nfields):
+            fname, ftype, count, offset = FIELD.unpack_from(self.mm, header_size + i * field_size)
+            self.fields.append((fname.rstrip(b"\0").decode(), ftype, count, offset))
+
+    def read(self, skip_larger_than=None):
+        """{field: numpy array}, consistent under the sequence lock; fields of more elements than
+        skip_larger_than are left out (a camera frame)."""
+        fields = [f for f in self.fields if skip_larger_than is None or f[2] <= skip_larger_than]
+        # Sequence lock: copy the fields, retry if a writer was inside or finished meanwhile.
+        while True:
+            seq0 = struct.unpack_from("<I", self.mm, SEQ_OFFSET)[0]
+            if seq0 & 1:
+                continue
+            values = {name: np.frombuffer(self.mm, dtype=DTYPES[ftype], count=count, offset=offset).copy()
+                      for name, ftype, count, offset in fields}
+            if struct.unpack_from("<I", self.mm, SEQ_OFFSET)[0] == seq0:
+                return values
+
+    def field(self, name):
+        """A live numpy view of one field (no copy, no lock): for a large field read once per change."""
+        for fname, ftype, count, offset in self.fields:
+            if fname == name:
+                return np.frombuffer(self.mm, dtype=DTYPES[ftype], count=count, offset=offset)
+        raise KeyError(f"{self.path}: no field '{name}'")
+
+    def close(self):
+        self.mm.close()
+
+
 def read_block(block, robot=None):
     robot = robot if robot is not None else int(os.environ.get("ROBOT_ID", "1"))
-    path = segment_path(block, robot)
-    with open(path, "rb") as f:
-        mm = mmap.mmap(f.fileno(), 0, prot=mmap.PROT_READ)
-    (magic, version, header_size, _hash, total, nfields, field_size, _data, ready, _pid, _w,
-     _ns, _name) = HEADER.unpack_from(mm, 0)
-    if magic != MAGIC or field_size != FIELD.size or not ready:
-        raise ValueError(f"{path}: not an initialised hrp shm segment (format {version})")
-    fields = []
-    for i in range(nfields):
-        name, ftype, count, offset = FIELD.unpack_from(mm, header_size + i * field_size)
-        fields.append((name.rstrip(b"\0").decode(), ftype, count, offset))
-    # Sequence lock: copy the fields, retry if a writer was inside or finished meanwhile.
-    while True:
-        seq0 = struct.unpack_from("<I", mm, SEQ_OFFSET)[0]
-        if seq0 & 1:
-            continue
-        values = {name: np.frombuffer(mm, dtype=DTYPES[ftype], count=count, offset=offset).copy()
-                  for name, ftype, count, offset in fields}
-        if struct.unpack_from("<I", mm, SEQ_OFFSET)[0] == seq0:
-            return values
+    seg = Segment(segment_path(block, robot))
+    try:
+        return seg.read()
+    finally:
+        seg.close()
 
 
 def main(argv):

@@ -11,6 +11,7 @@ local M = {}
 
 local cos, sin, atan2, sqrt = math.cos, math.sin, math.atan2, math.sqrt
 local wrap = pose_filter.wrap
+local PARTICLES_SHOWN = 100  -- the world block's `particles` holds 100 x, y, yaw (Config/shm.schema)
 
 local World = {}
 World.__index = World
@@ -186,6 +187,14 @@ function World:publish(block)
     w.pose[0], w.pose[1], w.pose[2] = p.x, p.y, p.a
     w.pose_confidence[0] = p.confidence
     w.time[0] = self.t or 0
+    -- a sample of the particles for the live view (Run/view): every k-th, at most what the block holds
+    local k = math.ceil(p.n / PARTICLES_SHOWN)
+    local m = 0
+    for i = 1, p.n, k do
+      w.particles[3 * m], w.particles[3 * m + 1], w.particles[3 * m + 2] = p.px[i], p.py[i], p.pa[i]
+      m = m + 1
+    end
+    w.nparticles[0] = m
   end)
 end
 

@@ -1,0 +1,200 @@
+#!/usr/bin/env python3
+"""Checks the live view in headless Chromium (TAP): run by Tests/view/view_test.sh with a robot playing
+in the sim, ./run_view serving it and Tests/view/probe.lua writing the latency probe.
+
+    view_check.py --url URL --server-pid PID --out PNG [--seconds S]
+
+1. the page connects and shows camera frames;
+2. the robot's truth marker (the first robot's colour, a filled disc) found in the screenshot's pixels
+   and mapped back to field coordinates (the page's stated geometry: centre of the field canvas = field
+   origin, x right, y up, `scale` px/m) lies within TOLERANCE of the sim's truth, read from shm by this
+   script over the screenshot's time (the robot walks: the truth between 0.3 s before the screenshot
+   and its end counts);
+3. the camera panel shows the ball: orange pixels (the frame's ball, its labels) in its region;
+4. the latency from a shm write (bench.t_send) to the page, while a second client stalls (connects to
+   /events and never reads): p50 below LIVE_MS, and whether it meets the goal (GOAL_MS) is printed
+   (a figure, as benchmarks do: the shared machine's load shows in it);
+and prints the latency p50/p99 and the server's CPU share.
+"""
+import argparse
+import os
+import socket
+import sys
+import tempfile
+import threading
+import time
+from urllib.parse import urlparse
+
+import numpy as np
+from PIL import Image
+from playwright.sync_api import sync_playwright
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Run"))
+import shm_read  # noqa: E402
+
+TOLERANCE = 0.06          # m between the marker's centre and the truth (the disc is 0.26 m wide)
+GOAL_MS = 100             # the issue's goal for the latency, printed
+LIVE_MS = 250             # the bound the test holds: beyond it the page is not live
+MARKER = (255, 43, 214)   # the first robot's colour (Run/view/www/view.js PALETTE[0])
+CHROMIUM_ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
+                 "--disable-background-networking", "--disable-component-update", "--disable-sync"]
+
+n_tests = 0
+failed = 0
+
+
+def tap(ok, what, note=""):
+    global n_tests, failed
+    n_tests += 1
+    failed += 0 if ok else 1
+    print(f"{'ok' if ok else 'not ok'} {n_tests} - {what}" + (f" # {note}" if note else ""), flush=True)
+
+
+class TruthLog(threading.Thread):
+    """Samples the sim block's robot pose every 5 ms with wall times."""
+
+    def __init__(self, robot):
+        super().__init__(daemon=True)
+        self.seg = shm_read.Segment(shm_read.segment_path("sim", robot))
+        self.samples = []
+        self.stop = False
+
+    def run(self):
+        while not self.stop:
+            r = self.seg.read()["robot"]
+            self.samples.append((time.time(), r[0], r[1], r[3]))
+            time.sleep(0.005)
+
+    def between(self, t0, t1):
+        return [s for s in self.samples if t0 <= s[0] <= t1]
+
+
+def cpu_seconds(pid):
+    with open(f"/proc/{pid}/stat") as f:
+        fields = f.read().rsplit(")", 1)[1].split()
+    return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
+
+
+def marker_centre(png, box):
+    """Centroid (page px) of the marker-coloured pixels inside box, and their count."""
+    img = np.asarray(Image.open(png).convert("RGB")).astype(np.int32)
+    x0, y0 = int(box["x"]), int(box["y"])
+    region = img[y0:y0 + int(box["height"]), x0:x0 + int(box["width"])]
+    d = np.abs(region - np.array(MARKER)).sum(axis=2)
+    ys, xs = np.nonzero(d < 40)
+    if len(xs) == 0:
+        return None, 0
+    return (x0 + xs.mean() + 0.5, y0 + ys.mean() + 0.5), len(xs)
+
+
+def orange_pixels(png, box):
+    img = np.asarray(Image.open(png).convert("RGB")).astype(np.int32)
+    x0, y0 = int(box["x"]), int(box["y"])
+    r = img[y0:y0 + int(box["height"]), x0:x0 + int(box["width"])]
+    return int(((r[:, :, 0] > 190) & (r[:, :, 1] > 60) & (r[:, :, 1] < 170) & (r[:, :, 2] < 90)).sum())
+
+
+def stall_client(url):
+    """A client that asks for the event stream and never reads it."""
+    u = urlparse(url)
+    s = socket.create_connection((u.hostname, u.port))
+    s.setsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF, 4096)
+    s.sendall(b"GET /events HTTP/1.0\r\n\r\n")
+    return s
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--url", required=True)
+    ap.add_argument("--server-pid", type=int, required=True)
+    ap.add_argument("--out", required=True)
+    ap.add_argument("--seconds", type=float, default=8.0, help="latency measurement")
+    a = ap.parse_args()
+    robot = int(os.environ["ROBOT_ID"])
+    os.makedirs(os.path.dirname(os.path.abspath(a.out)), exist_ok=True)
+
+    for _ in range(100):   # the sim DCM creates its blocks within a second or two
+        if os.path.exists(shm_read.segment_path("sim", robot)):
+            break
+        time.sleep(0.1)
+    truth = TruthLog(robot)
+    truth.start()
+    with tempfile.TemporaryDirectory(prefix="hrp-view-chromium-") as profile, sync_playwright() as p:
+        ctx = p.chromium.launch_persistent_context(
+            profile, executable_path="/usr/bin/chromium", headless=True, args=CHROMIUM_ARGS,
+            viewport={"width": 1600, "height": 900}, device_scale_factor=1)
+        page = ctx.new_page()
+        errors = []
+        page.on("pageerror", lambda e: errors.append(str(e)))
+        page.goto(a.url)
+        try:
+            page.wait_for_function("window.hrpView && hrpView.status().frames > 2 && hrpView.truth() !== null",
+                                   timeout=30000)
+            ok = True
+        except Exception as e:  # noqa: BLE001 (the page's state goes into the report)
+            ok, errors = False, errors + [str(e).splitlines()[0]]
+        st = page.evaluate("hrpView.status()")
+        tap(ok and not errors, "the page connects and shows camera frames",
+            f"{st['messages']} messages, {st['frames']} frames {'; '.join(errors)}")
+
+        # latency, with a stalled client beside the page
+        stalled = stall_client(a.url)
+        cpu0, w0 = cpu_seconds(a.server_pid), time.monotonic()
+        page.evaluate("hrpView.resetLatency()")   # from here: the page's loading is behind
+        time.sleep(a.seconds)
+        cpu = (cpu_seconds(a.server_pid) - cpu0) / (time.monotonic() - w0)
+        lat = page.evaluate("hrpView.latency()")
+        stalled.close()
+
+        # the screenshot once the camera frame shown has the ball (the robot's head scans)
+        try:
+            page.wait_for_function("hrpView.status().camBall", timeout=10000)
+        except Exception:  # noqa: BLE001
+            pass
+        t_before = time.time()
+        page.screenshot(path=a.out)
+        t_after = time.time()
+        geo = page.evaluate("hrpView.geometry()")
+        field_box = page.locator("#field").bounding_box()
+        cam_box = page.locator("#camera").bounding_box()
+        ctx.close()
+    truth.stop = True
+    truth.join()
+
+    centre, npx = marker_centre(a.out, field_box)
+    window = truth.between(t_before - 0.3, t_after)
+    if centre is None or not window:
+        tap(False, f"the robot's marker is where the truth says (within {TOLERANCE} m)",
+            f"{npx} marker pixels, {len(window)} truth samples")
+    else:
+        fx = (centre[0] - field_box["x"] - geo["cx"]) / geo["scale"]
+        fy = (geo["cy"] - (centre[1] - field_box["y"])) / geo["scale"]
+        err = min(np.hypot(fx - s[1], fy - s[2]) for s in window)
+        last = window[-1]
+        tap(err <= TOLERANCE, f"the robot's marker is where the truth says (within {TOLERANCE} m)",
+            f"marker ({fx:.3f}, {fy:.3f}) from {npx} px at {geo['scale']:.1f} px/m; truth "
+            f"({last[1]:.3f}, {last[2]:.3f}); error {err:.3f} m")
+    orange = orange_pixels(a.out, cam_box)
+    tap(orange >= 30, "the camera panel shows the ball (orange pixels)", f"{orange} orange pixels")
+
+    probe = np.array(lat["probe"]) * 1e3
+    server = np.array(lat["server"]) * 1e3
+    if len(probe) >= 50:
+        p50, p99 = np.percentile(probe, 50), np.percentile(probe, 99)
+        # the goal (100 ms) is reported; the test fails only when the page is not live (a stream
+        # batched or held up by the stalled client): on a loaded machine the scheduler's delays count too
+        goal = "met" if p50 < GOAL_MS else "NOT met"
+        tap(p50 < LIVE_MS, f"the page is live: shm write to page p50 below {LIVE_MS} ms, a stalled client beside it",
+            f"p50 {p50:.1f} ms (goal {GOAL_MS} ms: {goal}), p99 {p99:.1f} ms, max {probe.max():.1f} ms"
+            f" over {len(probe)} probe writes; load average {os.getloadavg()[0]:.1f}")
+    else:
+        tap(False, f"the page is live: shm write to page p50 below {LIVE_MS} ms", f"only {len(probe)} probe samples")
+    if len(server):
+        print(f"# server->page p50 {np.percentile(server, 50):.1f} ms; server CPU {cpu * 100:.1f}% of one core"
+              f" (robot in real time, 30 Hz samples, camera at <= 10 fps); screenshot {a.out}")
+    print(f"1..{n_tests}")
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
