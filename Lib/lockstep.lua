@@ -6,6 +6,13 @@
 -- dcm.actuator and step. A participant that needs every tick (motion) sets wake_tick = N + 1
 -- after each tick; one that needs few (a script in wait(), vision between frames) sets it further
 -- ahead. When the DCM is not in lockstep mode, all of this is harmless and nobody waits.
+--
+-- Order within a tick (sync.observer holds a participant's stage): stage 0 (motion, vision) works on
+-- the tick as soon as it is published; a participant of a higher stage first settles (waits for every
+-- participant of a lower stage due at the tick), so the behavior (stage 1) reads what motion and vision
+-- made of the tick, and a script or the recorder (stage 2, observers) reads what everybody made of it.
+-- Without that order the behavior would read this tick's detections or the last ones, whoever ran
+-- first, and a run (or a replay of it) would not be reproducible.
 local ffi = require('ffi')
 local shm = require('shm')
 
@@ -17,10 +24,13 @@ local C = shm.C
 local Participant = {}
 Participant.__index = Participant
 
+M.STAGE = { process = 0, after = 1, observer = 2 }
+
 -- Claims a slot; errors if all are taken by live processes. opts.observer: a script that acts
--- between ticks (see Participant:settle).
+-- between ticks; opts.after: a process that reads the others' output of the tick (the behavior);
+-- see Participant:settle.
 function M.join(opts)
-  local observer = opts and opts.observer and 1 or 0
+  local observer = opts and (opts.observer and M.STAGE.observer or opts.after and M.STAGE.after) or M.STAGE.process
   local sync = shm.open('sync')
   local pid = ffi.C.getpid()
   local n = sync:count('pid')
@@ -43,9 +53,9 @@ function M.join(opts)
 end
 
 function M._setup(sync, slot)
-  -- A DCM held at tick 0 for its first participants (dcm_sim --lockstep-wait N: until N have
-  -- joined) steps once (done_tick 0 >= 0) and then waits for us at tick 1: wait for that, so that
-  -- everybody's first work lands on the same tick whoever came first.
+  -- A DCM held for its first participants (--lockstep-wait N) publishes its first tick only once N
+  -- have joined: wait for it, so that everybody's first work lands on that tick whoever came first
+  -- (and each stage finds the lower ones there).
   if sync.lockstep[0] == 1 then
     local deadline = C.shm_now() + 60.0
     local word = ffi.cast('volatile uint32_t *', sync.tick)
@@ -68,11 +78,21 @@ function Participant:done(tick, wake_tick)
   C.shm_futex_wake(s.done_count)
 end
 
--- An observer (a script) at tick `tick`: waits until every other live participant that is not an
--- observer and is due at this tick has finished it, so that what the script reads is that tick's
--- outcome and what it writes is seen by the others on the next tick, whoever runs faster: a
--- scenario then runs the same every time. Observers never wait for each other; gives up after
--- `timeout` s of wall time (default 5) on a participant that stopped answering.
+-- True when the DCM waits for this participant at `tick`: its wake_tick has come and it has not
+-- reported the tick. Usually that is the wake it asked for in done(); but a DCM that starts after
+-- the process's last done() (the process was quicker, or the DCM restarted) consults every
+-- participant from its own first tick on (Modules/dcm/lockstep.c), and a process that waited for
+-- its own later wake would hold that DCM for ever.
+function Participant:due(tick)
+  local s, i = self.sync, self.slot
+  return s.lockstep[0] == 1 and s.wake_tick[i] <= tick and s.done_tick[i] < tick
+end
+
+-- A participant of stage > 0 at tick `tick` (a script, the behavior): waits until every other live
+-- participant of a lower stage that is due at this tick has finished it, so that what it reads is
+-- that tick's outcome and what it writes is seen by the lower stages on the next tick, whoever runs
+-- faster: a scenario then runs the same every time. Participants of one stage never wait for each
+-- other; gives up after `timeout` s of wall time (default 5) on a participant that stopped answering.
 function Participant:settle(tick, timeout)
   local s, me = self.sync, self.slot
   if s.lockstep[0] ~= 1 then return end
@@ -81,12 +101,14 @@ function Participant:settle(tick, timeout)
   local pid = ffi.cast('volatile int32_t *', s.pid)
   local wake = ffi.cast('volatile uint32_t *', s.wake_tick)
   local done = ffi.cast('volatile uint32_t *', s.done_tick)
+  local stage = s.observer[me]
+  if stage == 0 then return end
   while C.shm_now() < deadline do
     local seen = word[0]
     local waiting = false
     for i = 0, s:count('pid') - 1 do
       local p = pid[i]
-      if i ~= me and p ~= 0 and s.observer[i] == 0 and wake[i] <= tick and done[i] < tick
+      if i ~= me and p ~= 0 and s.observer[i] < stage and wake[i] <= tick and done[i] < tick
          and C.shm_pid_alive(p) == 1 then
         waiting = true
         break

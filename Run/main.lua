@@ -182,13 +182,17 @@ local function safe_stance(why)
   log('safe stance (%s)%s', why, ok and '' or ': motion API not available, walk velocity zeroed')
 end
 
--- ---- start: the DCM first (and wait until its clock runs), then the Lua processes
+-- ---- start: the DCM first (and wait until its clock runs, or until it holds the clock for the
+-- lockstep's participants), then the Lua processes
+local sync = shm.open('sync')
 for _, child in ipairs(children) do
   if child.name == 'dcm' then
     start(child)
     local tick0 = sensor.tick[0]
     local deadline = shm.C.shm_now() + 20
-    while sensor.tick[0] == tick0 and shm.C.shm_now() < deadline do
+    -- (./run_dcm execs the DCM: its pid is the child's)
+    local function holds() return sync.lockstep[0] == 1 and sensor.dcm_pid[0] == child.pid end
+    while sensor.tick[0] == tick0 and not holds() and shm.C.shm_now() < deadline do
       local sig = proc.wait_signal(0.05)
       if sig == 'INT' or sig == 'TERM' then proc.signal(child.pid, proc.SIGTERM) os.exit(130) end
       if sig == 'CHLD' then
@@ -197,7 +201,7 @@ for _, child in ipairs(children) do
         end
       end
     end
-    if sensor.tick[0] == tick0 then log('dcm: clock not advancing after 20 s') end
+    if sensor.tick[0] == tick0 and not holds() then log('dcm: clock not advancing after 20 s') end
   end
 end
 for _, child in ipairs(children) do

@@ -26,6 +26,7 @@ bench score_given_pose Tests/bench/score_given_pose.sh
 bench standup_op3 env ROBOT=op3 Tests/motion/standup_stats.sh
 bench standup_darwin env ROBOT=darwin Tests/motion/standup_stats.sh
 bench recorder Tests/bench/recorder.sh 20
+bench game_replay bash Tests/replay/game_replay_test.sh 120
 bench darwin_score env SCORE_NEED=9 bash Tests/scenarios/darwin_score_test.sh
 bench hil_walk_op3 bash Tests/hil/dxl_sim_walk.sh
 bench hubo_balance_push bash Tests/motion/hubo_balance_test.sh push

@@ -182,6 +182,12 @@ typedef struct dcm_lockstep {
 
 /* Lockstep on: participants registered with an earlier DCM are consulted from `tick` on. */
 void dcm_lockstep_start(dcm_lockstep *l, uint32_t tick);
+/* Before the first tick is published: until start_with participants have joined (idle runs
+ * meanwhile), so that all of them begin on that tick, each in its stage (Lib/lockstep.lua: the
+ * behavior after motion, which it would not wait for if motion had not joined yet). Returns 0, or 1
+ * when *stop was set. */
+int dcm_lockstep_hold(dcm_lockstep *l, uint32_t tick, void (*idle)(void *ctx, int alone), void *ctx,
+                      volatile sig_atomic_t *stop);
 /* Tick `tick` is published (dcm.sensor written): participants may work on it. */
 void dcm_lockstep_publish(dcm_lockstep *l, uint32_t tick);
 /* Waits until every live participant whose wake_tick <= tick reports done_tick >= tick; while

@@ -54,6 +54,17 @@ static int pending(const dcm_blk_sync *y, uint32_t tick) {
   return -1;
 }
 
+int dcm_lockstep_hold(dcm_lockstep *l, uint32_t tick, void (*idle)(void *ctx, int alone), void *ctx,
+                      volatile sig_atomic_t *stop) {
+  if (l->started || l->start_with <= 1) return 0;
+  while (!joined(l, tick, l->start_with)) {
+    if (stop && *stop) return 1;
+    if (idle) idle(ctx, 1);
+    shm_futex_wait(l->sync[0]->done_count, shm_load_acquire_u32(l->sync[0]->done_count), 0.02);
+  }
+  return 0;
+}
+
 int dcm_lockstep_wait(dcm_lockstep *l, uint32_t tick, void (*idle)(void *ctx, int alone), void *ctx,
                       volatile sig_atomic_t *stop) {
   /* nobody anywhere: hold the clock until one joins (a run starts on a defined tick and burns no

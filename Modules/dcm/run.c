@@ -215,9 +215,10 @@ int dcm_main(dcm *d, const dcm_driver *drv, void *hw, char *err, size_t errlen) 
   while (!*d->stop && (d->max_cycles < 0 || (long)d->pacer.cycles < d->max_cycles)) {
     /* ---- wait: the participants of the published tick, or the next deadline */
     if (d->lockstep) {
+      struct idle_ctx ic = { drv, hw, d };
+      if (dcm_lockstep_hold(&d->sync, d->tick, drv->idle ? idle : NULL, &ic, d->stop)) break;
       dcm_lockstep_publish(&d->sync, d->tick);
       if (drv->published) drv->published(hw, d);
-      struct idle_ctx ic = { drv, hw, d };
       if (dcm_lockstep_wait(&d->sync, d->tick, drv->idle ? idle : NULL, &ic, d->stop)) break;
       d->now = dcm_pacer_count(&d->pacer);
     } else {
@@ -243,6 +244,9 @@ int dcm_main(dcm *d, const dcm_driver *drv, void *hw, char *err, size_t errlen) 
     /* ---- the hardware */
     drv->write(hw, d);
     drv->read(hw, d);
+    /* a driver that stopped in read (the Replay's log ended) has no new tick: publishing the last one
+     * again under a new tick number would give the processes a step the recording never had */
+    if (*d->stop) break;
     /* ---- sensors and statistics */
     d->tick++;
     d->time = d->simulated ? d->tick * d->period : d->time0 + (d->now - d->t0);

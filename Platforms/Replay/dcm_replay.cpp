@@ -33,6 +33,8 @@ struct replay_hw {
   replay_control ctl;
   char serve[REPLAY_BLOCKS_MAX][DCM_NAME_MAX];
   int nserve = 0;
+  char leave[SHMLOG_FIELDS_MAX][DCM_NAME_MAX];
+  int nleave = 0;
   char camera_field[DCM_NAME_MAX] = "";
   replay_log L;
   cv::Mat bgr;
@@ -58,6 +60,7 @@ int configure(void *hw, dcm *d, char *err, size_t n) {
   if (r == 0) r = dcm_config_num(pc, "safe_hardness", &d->safe_hardness, err, n);
   if (r == 0) r = dcm_config_str(pc, "camera_field", h->camera_field, sizeof h->camera_field, err, n);
   if (r == 0) r = h->nserve = dcm_config_strs(pc, "serve", h->serve, 1, REPLAY_BLOCKS_MAX, err, n);
+  if (r >= 0) r = h->nleave = dcm_config_strs(pc, "leave", h->leave, 0, SHMLOG_FIELDS_MAX, err, n);
   if (r >= 0 && h->speed > 0) speed = h->speed;
   if (r >= 0 && !(speed > 0)) r = dcm_config_fail(pc, err, n, "key 'speed' must be > 0, got %g", speed);
   if (r >= 0) {
@@ -102,10 +105,11 @@ int decode_frame(void *ctx, const uint8_t *data, size_t len, int w, int h, uint8
 
 int open_log(void *hw, dcm *d, char *err, size_t n) {
   replay_hw *h = static_cast<replay_hw *>(hw);
-  const char *serve[REPLAY_BLOCKS_MAX];
+  const char *serve[REPLAY_BLOCKS_MAX], *leave[SHMLOG_FIELDS_MAX];
   for (int i = 0; i < h->nserve; i++) serve[i] = h->serve[i];
-  int rc = replay_log_open(&h->L, h->path, d->schema, d->robot[0].id, serve, h->nserve, h->camera_field, decode_frame,
-                           h, err, n);
+  for (int i = 0; i < h->nleave; i++) leave[i] = h->leave[i];
+  int rc = replay_log_open(&h->L, h->path, d->schema, d->robot[0].id, serve, h->nserve, leave, h->nleave,
+                           h->camera_field, decode_frame, h, err, n);
   if (rc == 0) rc = replay_control_open(&h->ctl, d->schema, d->robot[0].id, h->recorded_period / d->period, err, n);
   if (rc == 0) h->ctl.paused = h->start_paused;
   return rc;

@@ -88,9 +88,38 @@ static int bind_block(replay_log *L, const char *path, const shm_schema *schema,
   return 0;
 }
 
+/* 1 if name is "block.field" of this block */
+static int of_block(const char *name, const char *block) {
+  const size_t n = strlen(block);
+  return strncmp(name, block, n) == 0 && name[n] == '.';
+}
+
+/* Marks the fields named in leave ("block.field") as not served. A field of a served block that the
+ * block lacks, or of a block not served, is an error; a served block the log lacks has nothing to leave. */
+static int leave_fields(replay_log *L, const char *const *serve, int nserve, const char *const *leave, int nleave,
+                        char *err, size_t errlen) {
+  for (int k = 0; k < nleave; k++) {
+    int served = 0, found = 0, bound = 0;
+    for (int i = 0; i < nserve; i++) served |= of_block(leave[k], serve[i]);
+    for (int i = 0; i < L->nblocks && !found; i++) {
+      replay_block *rb = &L->b[i];
+      if (!of_block(leave[k], rb->now.name)) continue;
+      bound = 1;
+      for (int f = 0; f < rb->now.nfields && !found; f++)
+        if (strcmp(rb->now.field[f].name, leave[k] + strlen(rb->now.name) + 1) == 0) found = rb->left[f] = 1;
+    }
+    if (!served || (bound && !found)) {
+      snprintf(err, errlen, "Config/platforms/Replay/dcm.lua: 'leave' names '%s', not a field of a served block",
+               leave[k]);
+      return -EINVAL;
+    }
+  }
+  return 0;
+}
+
 int replay_log_open(replay_log *L, const char *path, const shm_schema *schema, int robot_id, const char *const *serve,
-                    int nserve, const char *camera_field, replay_frame_fn frame_fn, void *frame_ctx, char *err,
-                    size_t errlen) {
+                    int nserve, const char *const *leave, int nleave, const char *camera_field,
+                    replay_frame_fn frame_fn, void *frame_ctx, char *err, size_t errlen) {
   memset(L, 0, sizeof *L);
   L->sensor = -1;
   for (int i = 0; i < REPLAY_CHANNELS_MAX; i++) L->chan_block[i] = L->chan_frame[i] = -1;
@@ -116,6 +145,10 @@ int replay_log_open(replay_log *L, const char *path, const shm_schema *schema, i
     snprintf(err, errlen, "Config/platforms/Replay/dcm.lua: 'serve' must name dcm.sensor");
     replay_log_close(L);
     return -EINVAL;
+  }
+  if ((rc = leave_fields(L, serve, nserve, leave, nleave, err, errlen)) < 0) {
+    replay_log_close(L);
+    return rc;
   }
   return 0;
 }
@@ -230,7 +263,7 @@ void replay_log_serve(replay_log *L) {
     shm_write_begin(rb->blk);
     for (int k = 0; k < rb->now.nfields; k++) {
       const shmlog_field *f = &rb->now.field[k];
-      memcpy(seg + f->shm_offset, rb->stage + f->shm_offset, type_size(f->type) * (size_t)f->count);
+      if (!rb->left[k]) memcpy(seg + f->shm_offset, rb->stage + f->shm_offset, type_size(f->type) * (size_t)f->count);
     }
     if (rb->has_frames) memcpy(seg + rb->frame_offset, rb->stage + rb->frame_offset, rb->frame_bytes);
     shm_write_end(rb->blk);

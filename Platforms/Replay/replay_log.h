@@ -34,6 +34,7 @@ typedef struct replay_block {
   uint64_t frame_offset;   /* of the raw field */
   size_t frame_bytes;
   int width_off, height_off;
+  uint8_t left[SHMLOG_FIELDS_MAX]; /* 1: a field of `now` the processes under test write: not served */
   uint8_t *pending;        /* a seek's last frame message, decoded when the seek ends */
   size_t pending_len, pending_cap;
 } replay_block;
@@ -56,10 +57,12 @@ typedef struct replay_log {
 } replay_log;
 
 /* Opens path for robot_id's blocks `serve` (one of them dcm.sensor); camera_field: the raw image
- * field the recorder compresses. Fails naming the file and the difference. */
+ * field the recorder compresses; leave: "block.field" names of served blocks whose fields are left
+ * to the processes under test (nleave of them; each must name a field of a served block). Fails
+ * naming the file and the difference. */
 int replay_log_open(replay_log *L, const char *path, const shm_schema *schema, int robot_id, const char *const *serve,
-                    int nserve, const char *camera_field, replay_frame_fn frame_fn, void *frame_ctx, char *err,
-                    size_t errlen);
+                    int nserve, const char *const *leave, int nleave, const char *camera_field,
+                    replay_frame_fn frame_fn, void *frame_ctx, char *err, size_t errlen);
 void replay_log_close(replay_log *L);
 /* Reads the next tick into the blocks' stages (dirty set). 1, 0 at the end, < 0 at damage (L->damage). */
 int replay_log_next(replay_log *L);

@@ -267,7 +267,7 @@ void sim_published(void *hw, dcm *d) {
   Sim &s = *static_cast<Sim *>(hw);
   s.prof.lap(Profile::kPublish);
   if (s.worker)
-    for (SimRobot &x : s.rob) x.frames.hand_over(*s.worker, d->tick);
+    for (SimRobot &x : s.rob) x.frames.hand_over(*s.worker, d->tick, !d->lockstep);
   s.prof.lap(Profile::kHandOver);
 }
 
@@ -292,6 +292,12 @@ void sim_write(void *hw, dcm *d) {
 void sim_read(void *hw, dcm *d) {
   Sim &s = *static_cast<Sim *>(hw);
   sim::World &w = *s.world;
+  // --duration: the tick published last (at the duration) has had its lockstep round; stepping on would
+  // publish one that no participant works on (the DCM library publishes nothing after a stop in read)
+  if (s.o.duration >= 0 && w.time() >= s.o.duration - 1e-9) {
+    dcm_stop(d);
+    return;
+  }
   w.step();
   s.prof.lap(Profile::kPhysics);
   // camera: expose now, deliver latency_ticks later
@@ -349,7 +355,6 @@ void sim_stats(void *hw, dcm *d, int r, const dcm_blk_dcm_stats *o) {
     s.last_print = t;
     s.print_sim = w.time();
   }
-  if (s.o.duration >= 0 && w.time() >= s.o.duration - 1e-9) dcm_stop(d);
 }
 
 void sim_close(void *hw, dcm *d) {

@@ -60,10 +60,10 @@ void FrameQueue::expose(const World &w, int r, uint32_t tick, double time, const
   j.out = f.img.data();
 }
 
-void FrameQueue::hand_over(CameraWorker &wk, uint32_t tick) {
+void FrameQueue::hand_over(CameraWorker &wk, uint32_t tick, bool copy_early) {
   for (Frame &f : pending_) {
     if (!f.render) f.render = wk.submit(std::move(f.job));
-    if (!f.copy && f.deliver_tick <= tick + 1) {
+    if (!f.copy && f.deliver_tick <= tick + (copy_early ? 1 : 0)) {
       // camera.image is written by this worker job only (the physics thread never touches it)
       f.copy = wk.post([this, src = f.img.data(), n = f.number, t = f.time, h0 = f.head[0], h1 = f.head[1]] {
         shm_write_begin(cam_.blk);

@@ -26,9 +26,11 @@ class FrameQueue {
   // head: head pan / tilt at exposure; p: the robot's camera; hide: its links the camera does not see.
   void expose(const World &w, int r, uint32_t tick, double time, const double head[2], const Params &p,
               const std::vector<int> *hide, Scene *scene, bool *have_scene);
-  // Once tick `tick` is published: hands the new frames to the worker, and the copies into
-  // camera.image of the frames due at the next tick, made while the physics steps.
-  void hand_over(CameraWorker &wk, uint32_t tick);
+  // Once tick `tick` is published: hands the new frames to the worker, and (copy_early) the copies
+  // into camera.image of the frames due at the next tick, made while the physics steps. In lockstep
+  // copy_early is false: a frame then appears between two ticks (at deliver), never during the tick
+  // before its own, where a participant would see it early or not depending on the copy's speed.
+  void hand_over(CameraWorker &wk, uint32_t tick, bool copy_early = true);
   // Returns once every frame due at `tick` is in camera.image (before the tick's sensors appear).
   void deliver(CameraWorker &wk, uint32_t tick);
   // Drops what is still queued (after the worker has finished).

@@ -204,7 +204,9 @@ function Behavior:close()
   self.team:close()
 end
 
--- The process loop: one step per `step_ticks` ticks, reporting to the lockstep.
+-- The process loop: one step per `step_ticks` ticks, reporting to the lockstep. In lockstep a step
+-- comes after motion and vision finished the tick (Lib/lockstep.lua's stages): it reads this tick's
+-- odometry and detections, never a mix that depends on who ran first, so a run and its replay agree.
 function Behavior:run()
   -- every Config value live (Lib/param.lua): the machines and the world model read their config at
   -- every step; the pose filter's particle count is re-derived
@@ -221,7 +223,7 @@ function Behavior:run()
     real[1][1], real[1][2], real[2][1], real[2][2] = hx, hw, hx, -hw
     real[3][1], real[3][2], real[4][1], real[4][2] = -hx, hw, -hx, -hw
   end)
-  local participant = lockstep.join()
+  local participant = lockstep.join({ after = true })
   local tick = Body.get_tick()
   local wake = tick
   -- a block replaced under this process (removed, or recreated with another layout): exit, named,
@@ -229,7 +231,8 @@ function Behavior:run()
   local check_blocks = require('shm_watch').exit_on_replaced('behavior')
   while true do
     check_blocks()
-    if tick >= wake then
+    if tick >= wake or participant:due(tick) then
+      participant:settle(tick)
       live:poll()
       self:step()
       wake = tick + math.max(1, math.floor(self.cfg.step_ticks))

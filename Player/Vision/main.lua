@@ -220,7 +220,7 @@ while true do
     end
     local tick = sync.tick[0]
     local done = participant.sync.done_tick[participant.slot]
-    if tick ~= done and tick >= next_wake then
+    if tick ~= done and (tick >= next_wake or participant:due(tick)) then
       local got = step(0)
       local skip = 1
       local period = sensor.period[0]

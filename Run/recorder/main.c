@@ -169,6 +169,7 @@ int main(int argc, char **argv) {
     return 1;
   }
   rec_queue_init(&q, (size_t)(o.queue_mb * 1e6));
+  q.wait_for_room = lockstep;
   if (rec_writer_start(&w, &o, &bs, &q, docs, ndocs, err, sizeof err) < 0) {
     fprintf(stderr, "hrp_record: %s\n", err);
     rec_blocks_close(&bs);

@@ -12,6 +12,9 @@
 
 #define LOAD(p) __atomic_load_n((p), __ATOMIC_ACQUIRE)
 
+/* Lib/lockstep.lua's STAGE.observer: after motion and vision (0) and the behavior (1) */
+#define OBSERVER_STAGE 2
+
 static void *field(shm_block *b, const char *name, int type, int *count) {
   int t, n;
   void *p = shm_field_ptr(b, name, &t, &n);
@@ -43,7 +46,7 @@ int rec_observer_join(rec_observer *ob, shm_schema *schema, int robot_id, char *
       if (p == 0 || (pass == 1 && !shm_pid_alive(p))) {
         ob->done[i] = 0;
         ob->wake[i] = 0;
-        ob->observer[i] = 1;
+        ob->observer[i] = OBSERVER_STAGE;
         if (shm_cas_i32(&ob->pid[i], p, me)) {
           ob->slot = i;
           return 0;
@@ -62,14 +65,14 @@ uint32_t rec_observer_wait(rec_observer *ob, double timeout_s) {
     shm_futex_wait(ob->tick, tick, timeout_s);
     return 0;
   }
-  /* settle: the others due at this tick first (observers never wait for each other) */
+  /* settle: the lower stages due at this tick first (observers never wait for each other) */
   const double deadline = shm_now() + 5.0;
   while (shm_now() < deadline) {
     const uint32_t seen = LOAD(ob->done_count);
     int waiting = 0;
     for (int i = 0; i < ob->n && !waiting; i++) {
       const int p = LOAD(&ob->pid[i]);
-      waiting = i != ob->slot && p != 0 && LOAD(&ob->observer[i]) == 0 && LOAD(&ob->wake[i]) <= tick &&
+      waiting = i != ob->slot && p != 0 && LOAD(&ob->observer[i]) < OBSERVER_STAGE && LOAD(&ob->wake[i]) <= tick &&
                 LOAD(&ob->done[i]) < tick && shm_pid_alive(p);
     }
     if (!waiting) break;

@@ -1,4 +1,5 @@
-/* queue: the sampler -> writer queue, bounded in bytes; a full queue drops the new item (counted). */
+/* queue: the sampler -> writer queue, bounded in bytes; a full queue drops the new item (counted), or in
+ * lockstep waits for room. */
 #include "record.h"
 
 #include <stdlib.h>
@@ -10,6 +11,7 @@ void rec_queue_init(rec_queue *q, size_t cap) {
   pthread_condattr_init(&ca);
   pthread_condattr_setclock(&ca, CLOCK_MONOTONIC);
   pthread_cond_init(&q->cv, &ca);
+  pthread_cond_init(&q->room, &ca);
   pthread_condattr_destroy(&ca);
   q->head = q->tail = NULL;
   q->bytes = 0;
@@ -20,6 +22,9 @@ void rec_queue_init(rec_queue *q, size_t cap) {
 
 int rec_queue_push(rec_queue *q, rec_item *it) {
   pthread_mutex_lock(&q->mu);
+  /* an empty queue takes any item, so that one larger than the cap cannot wait for ever */
+  while (q->wait_for_room && !q->closed && q->bytes > 0 && q->bytes + it->len > q->cap)
+    pthread_cond_wait(&q->room, &q->mu);
   if (q->bytes + it->len > q->cap || q->closed) {
     q->dropped++;
     pthread_mutex_unlock(&q->mu);
@@ -53,6 +58,7 @@ rec_item *rec_queue_pop(rec_queue *q, double timeout_s) {
     q->head = it->next;
     if (!q->head) q->tail = NULL;
     q->bytes -= it->len;
+    pthread_cond_signal(&q->room);
   }
   pthread_mutex_unlock(&q->mu);
   return it;
@@ -62,6 +68,7 @@ void rec_queue_close(rec_queue *q) {
   pthread_mutex_lock(&q->mu);
   q->closed = 1;
   pthread_cond_broadcast(&q->cv);
+  pthread_cond_broadcast(&q->room);
   pthread_mutex_unlock(&q->mu);
 }
 

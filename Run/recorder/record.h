@@ -58,15 +58,18 @@ typedef struct rec_item {
 
 typedef struct rec_queue {
   pthread_mutex_t mu;
-  pthread_cond_t cv;
+  pthread_cond_t cv, room;
   rec_item *head, *tail;
   size_t bytes, cap;
   uint64_t dropped;
   int closed;
+  int wait_for_room;       /* lockstep: a full queue holds the sampler (and so the tick) instead of dropping */
 } rec_queue;
 
 void rec_queue_init(rec_queue *q, size_t cap);
-/* Takes ownership of it; 0, or -1 when the queue is full (it is freed and counted as dropped). */
+/* Takes ownership of it; 0, or -1 when the queue is full (it is freed and counted as dropped). With
+ * wait_for_room it waits until the writer made room instead (a lockstep run has time, and a replay
+ * needs every tick). */
 int rec_queue_push(rec_queue *q, rec_item *it);
 /* The oldest item, waiting up to timeout_s; NULL on timeout or when closed and empty. */
 rec_item *rec_queue_pop(rec_queue *q, double timeout_s);
