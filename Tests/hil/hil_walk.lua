@@ -18,13 +18,8 @@ local standing = arg[2] == 'stand'
 local vx = standing and 0 or tonumber(arg[2]) or 0.2
 local stand_first = not standing and tonumber(arg[3]) or nil
 local sim_id = tonumber(os.getenv('SIM_ID') or '')
-local count = 0
-local function tap(ok, msg)
-  count = count + 1
-  print(string.format('%s %d - %s', ok and 'ok' or 'not ok', count, msg))
-  io.stdout:flush()
-  return ok
-end
+local sc = require('Tests.scenario_lib').new(wait, Body)
+local tap, wait_until = sc.tap, sc.wait_until
 if not sim_id then
   tap(false, 'hil_walk: SIM_ID (the sim DCM robot id) is not set')
   os.exit(1)
@@ -45,15 +40,6 @@ for _, g in ipairs({ 'lleg', 'rleg' }) do
     legs[#legs + 1] = Body.index(name) - 1
     group_of[#legs] = k
   end
-end
-
-local function wait_until(pred, timeout)
-  local t0 = Body.get_time()
-  while Body.get_time() - t0 < timeout do
-    if pred() then return true end
-    wait(0.05)
-  end
-  return pred()
 end
 
 -- the motion process runs and stands

@@ -14,24 +14,10 @@
 local shm = require('shm')
 local Config = require('Config')
 local name = arg[1] or 'zmp'
-local count = 0
-local function tap(ok, msg)
-  count = count + 1
-  print(string.format('%s %d - %s', ok and 'ok' or 'not ok', count, msg))
-  io.stdout:flush()
-  return ok
-end
-local function note(fmt, ...) print('# ' .. string.format(fmt, ...)) io.stdout:flush() end
+local sc = require('Tests.scenario_lib').new(wait, Body)
+local tap, note, wait_until = sc.tap, sc.note, sc.wait_until
 
 local motion = shm.open('motion')
-local function wait_until(pred, timeout)
-  local t0 = Body.get_time()
-  while Body.get_time() - t0 < timeout do
-    if pred() then return true end
-    wait(0.05)
-  end
-  return pred()
-end
 if not wait_until(function() return motion.tick[0] ~= 0 end, 30) then
   tap(false, 'the motion process is not running')
   os.exit(1)

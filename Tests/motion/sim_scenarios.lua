@@ -5,14 +5,8 @@
 -- sim's truth (Sim.truth()).
 -- luacheck: globals Sim Motion Walk wait arg shm Body
 local name = arg[1]
-local count = 0
-local function tap(ok, msg)
-  count = count + 1
-  print(string.format('%s %d - %s', ok and 'ok' or 'not ok', count, msg))
-  io.stdout:flush()
-  return ok
-end
-local function note(fmt, ...) print('# ' .. string.format(fmt, ...)) io.stdout:flush() end
+local sc = require('Tests.scenario_lib').new(wait, Body)
+local tap, note, wait_until = sc.tap, sc.note, sc.wait_until
 local function wrap(a) return (a + math.pi) % (2 * math.pi) - math.pi end
 local deg = 180 / math.pi
 
@@ -42,16 +36,6 @@ for kv in (os.getenv('WALK_PARAMS') or ''):gmatch('[^;]+') do
   for x in v:gmatch('[^,]+') do vals[#vals + 1] = tonumber(x) end
   while not Walk.set(k, #vals == 1 and vals[1] or vals) do wait(0.01) end
   note('walk parameter %s = %s', k, v)
-end
-
--- until(pred, timeout): waits in steps of 0.05 s until pred() is true; returns true or false
-local function wait_until(pred, timeout)
-  local t0 = Body.get_time()
-  while Body.get_time() - t0 < timeout do
-    if pred() then return true end
-    wait(0.05)
-  end
-  return pred()
 end
 
 local function stand(timeout)

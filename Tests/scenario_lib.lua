@@ -1,0 +1,30 @@
+-- What the scenario scripts run by ./run_repl in the sim's lockstep share: numbered TAP lines,
+-- "# " figure lines, and waiting on a condition in robot time.
+--   local sc = require('Tests.scenario_lib').new(wait, Body)
+--   local tap, note, wait_until = sc.tap, sc.note, sc.wait_until
+local M = {}
+
+-- wait: the REPL's wait(seconds) (lets the robot's clock run); Body: Lib/Body's table (get_time).
+function M.new(wait, Body)
+  local s = { count = 0 }
+  -- prints "ok N - msg" or "not ok N - msg"; returns ok
+  function s.tap(ok, msg)
+    s.count = s.count + 1
+    print(string.format('%s %d - %s', ok and 'ok' or 'not ok', s.count, msg))
+    io.stdout:flush()
+    return ok
+  end
+  function s.note(fmt, ...) print('# ' .. string.format(fmt, ...)) io.stdout:flush() end
+  -- waits in steps of 0.05 s of robot time until pred() is true; true, or pred()'s last answer
+  function s.wait_until(pred, timeout)
+    local t0 = Body.get_time()
+    while Body.get_time() - t0 < timeout do
+      if pred() then return true end
+      wait(0.05)
+    end
+    return pred()
+  end
+  return s
+end
+
+return M
