@@ -156,32 +156,17 @@ local function feet_together(p, l, r)
   return abs(rel[1]) < 1e-3 and abs(rel[2] - 2 * p.footY) < 1e-3 and abs(rel[3]) < 1e-3
 end
 
--- Called by begin_step(): this step's ZMP and the planned steps' over the preview window.
-function Preview:plan_com()
+-- The steps that follow the one under way (from sample k on, to the window's end) at the commanded
+-- velocity, as begin_step() will take them. Called at each step's start, and again when the command
+-- changes or a stop is asked mid-step: a change seen a step earlier is a change the COM can prepare
+-- for (replanned only at the next step, a stop gave a 3 cm ZMP spike ahead of the feet).
+local function plan_ahead(self, k)
   local p = self.p
-  local K = self:gains()
-  local n = self:step_samples()
-  local N = K.N
-  -- the step begins at the next tick's sample, or after the lead-in of a walk that starts
-  local k0 = self.first_k or self.k
-  self.first_k = nil
-  -- the ring holds from this tick's sample to the window's end past the step
-  local size = (k0 - self.k) + N + 2 * n + 4
-  if size > self.ring_size then self.ring = { {}, {} } self.ring_size = size end
-  if not self.ctl then
-    -- at rest over the stance COM
-    local ctl = { preview.controller(self.sys, K, self.com[1]), preview.controller(self.sys, K, self.com[2]) }
-    self.ctl = ctl
-  end
-  fill_const(self, self.k - 1, k0 - 1, self.uTorso1)
-  -- this step with the phases it latched; the planned ones with today's (they latch them in turn)
-  fill_step(self, k0, n, self.uTorso1, self.uSupport, self.uTorso2, self.ph1, self.ph2)
-  -- the steps that follow at the commanded velocity, as begin_step() would take them
+  local n, last = self:step_samples(), self.next_k + self.K.N
   local v = { self.vel[1], self.vel[2], self.vel[3] }
   local l, r, torso, support = self.uLeft2, self.uRight2, self.uTorso2, self.support
   local still_steps = self.steps_still or 0
   local sY = p.supportY
-  local k, last = k0 + n, k0 + n + N
   while k <= last do
     self:update_velocity(v, self.stopping)
     -- the stop rule of begin_step()
@@ -203,6 +188,46 @@ function Preview:plan_com()
     torso, k = b, k + n
   end
   if k <= last then fill_const(self, k, last, torso) end
+end
+
+-- Called by begin_step(): this step's ZMP and the planned steps' over the preview window.
+function Preview:plan_com()
+  local K = self:gains()
+  local n = self:step_samples()
+  local N = K.N
+  -- the step begins at the next tick's sample, or after the lead-in of a walk that starts
+  local k0 = self.first_k or self.k
+  self.first_k = nil
+  -- the ring holds from this tick's sample to the window's end past the step
+  local size = (k0 - self.k) + N + 2 * n + 4
+  if size > self.ring_size then self.ring = { {}, {} } self.ring_size = size end
+  if not self.ctl then
+    -- at rest over the stance COM
+    local ctl = { preview.controller(self.sys, K, self.com[1]), preview.controller(self.sys, K, self.com[2]) }
+    self.ctl = ctl
+  end
+  fill_const(self, self.k - 1, k0 - 1, self.uTorso1)
+  -- this step with the phases it latched; the planned ones with today's (they latch them in turn)
+  fill_step(self, k0, n, self.uTorso1, self.uSupport, self.uTorso2, self.ph1, self.ph2)
+  self.next_k = k0 + n
+  plan_ahead(self, self.next_k)
+end
+
+-- A new command or a stop mid-step: the steps after this one are planned again at once.
+function Preview:set_velocity(vx, vy, va)
+  local c = self.cmd
+  local ox, oy, oa = c[1], c[2], c[3]
+  local x, y, a = walk.Walk.set_velocity(self, vx, vy, va)
+  if x and (x ~= ox or y ~= oy or a ~= oa) and self.active and self.ctl and self.next_k then
+    plan_ahead(self, self.next_k)
+  end
+  return x, y, a
+end
+
+function Preview:stop()
+  local was_stopping = self.stopping
+  walk.Walk.stop(self)
+  if self.stopping and not was_stopping and self.ctl and self.next_k then plan_ahead(self, self.next_k) end
 end
 
 -- One tick of the preview controllers; the COM at the tick's sample.
