@@ -17,6 +17,19 @@ return {
       display = { 255, 255, 255 } },
   },
   ball = {
+    kind = 'orange',            -- 'orange': the colour table's ball (below); 'white': the FIFA ball, found
+                                -- by candidates and a classifier (white, below)
+    white = {
+      model = 'Config/common/ball_white.mlp', -- the classifier (trained by Run/ball_train/train.sh)
+      green = 8,                -- label bits of the field
+      boundary_run = 4,         -- label rows of field that start the field in a column
+      step = 2,                 -- label px between candidate positions
+      min_inner = 0.75,         -- fraction of not-field labels inside the ball's expected disc, at least
+      max_ring = 0.45,          -- fraction of not-field labels in the ring around it, at most
+      min_radius = 4,           -- px, the smallest ball looked for (about 5 m away)
+      max_candidates = 6,       -- candidates the classifier checks per frame, best shapes first
+      threshold = 0.5,          -- classifier probability for a ball
+    },
     color = 1,                  -- label bit
     diameter = 0.14,            -- m
     min_area = 4,               -- label pixels

@@ -1,0 +1,87 @@
+-- Ball detection over seeded frames the sim renders (build/bin/sim_ball_frames; written by
+-- ball_frames_test.sh with seeds no training run uses), through the vision pipeline with the camera
+-- pose the renderer used. Prints the figures of issue 18 and TAP lines for the goals named in GATE.
+--   luajit Tests/vision/ball_frames.lua FRAMES KIND [GATE]     KIND: white | orange
+-- GATE: comma-separated goals to fail on (recall, false, range, bearing); the others only print.
+-- DRAW=DIR writes a PPM per frame listed in DRAW_FRAMES (or each miss and false detection) with the
+-- field boundary, the candidates and the detection drawn.
+local Config = require('Config')
+local pipeline = require('Vision.pipeline')
+local frames = require('Run.ball_train.frames')
+local draw = require('Tests.vision.draw')
+
+local path, kind, gate = arg[1], arg[2], arg[3] or ''
+assert(path and (kind == 'white' or kind == 'orange'), 'usage: ball_frames.lua FRAMES white|orange [GATE]')
+local vcfg, ccfg = Config.load('vision'), Config.load('camera')
+vcfg.ball.kind = kind
+local vp = assert(pipeline.new(vcfg, ccfg, nil))
+local file = assert(frames.open(path))
+local draw_dir = os.getenv('DRAW')
+
+local st = { inview = 0, found = 0, wrong = 0, empty = 0, false_pos = 0, ranges = {}, bearings = {} }
+local misses = {}
+for fr in file:each() do
+  assert(math.abs(fr.cm.f - vp.cm.f) < 1e-6, 'the renderer and the vision disagree on the focal length')
+  local det = vp:detect(fr, fr.pose)
+  local b, ball = fr.ball, det.ball
+  local inview = b.visible >= 0.95 and b.distance >= 0.3 and b.distance <= 4
+  local note
+  if inview then
+    st.inview = st.inview + 1
+    local tx, ty = b.distance * math.cos(b.bearing), b.distance * math.sin(b.bearing)
+    if ball.detected and math.sqrt((ball.x - tx) ^ 2 + (ball.y - ty) ^ 2) <= math.max(0.25, 0.25 * b.distance) then
+      st.found = st.found + 1
+      local r = math.sqrt(ball.x ^ 2 + ball.y ^ 2)
+      if b.distance <= 3 then st.ranges[#st.ranges + 1] = math.abs(r - b.distance) / b.distance end
+      local e = math.abs(math.atan2(ball.y, ball.x) - b.bearing)
+      if e > math.pi then e = 2 * math.pi - e end
+      st.bearings[#st.bearings + 1] = math.deg(e)
+    else
+      if ball.detected then st.wrong = st.wrong + 1 end
+      note = ball.detected and 'wrong place' or 'missed'
+    end
+  elseif b.visible == 0 then
+    st.empty = st.empty + 1
+    if ball.detected then
+      st.false_pos = st.false_pos + 1
+      note = 'false'
+    end
+  end
+  if note then misses[#misses + 1] = string.format('frame %d: ball %.2f m %+.1f deg visible %.2f: %s', fr.index,
+                                                   b.distance, math.deg(b.bearing), b.visible, note) end
+  if draw_dir and (note or (os.getenv('DRAW_FRAMES') or ''):find(',' .. fr.index .. ',', 1, true)) then
+    draw.frame(string.format('%s/%s_%04d.ppm', draw_dir, kind, fr.index), fr, vp, det, b)
+  end
+end
+
+local function stats(list)
+  table.sort(list)
+  local n, sum = #list, 0
+  for _, v in ipairs(list) do sum = sum + v end
+  if n == 0 then return 0, 0, 0 end
+  return sum / n, list[math.max(1, math.ceil(0.95 * n))], list[n]
+end
+for i = 1, math.min(#misses, 30) do print(misses[i]) end
+local recall = st.found / math.max(1, st.inview)
+local fp = st.false_pos / math.max(1, st.empty)
+local rm, r95, rmax = stats(st.ranges)
+local bm, b95, bmax = stats(st.bearings)
+print(string.format('%s ball: recall %d/%d = %.1f%% (fully in view, 0.3-4 m; %d detected elsewhere), '
+  .. 'false detections %d/%d frames without the ball = %.2f%%', kind, st.found, st.inview, 100 * recall, st.wrong,
+  st.false_pos, st.empty, 100 * fp))
+print(string.format('%s ball: range error (<= 3 m, %d) mean %.1f%% p95 %.1f%% max %.1f%%; bearing error mean %.2f '
+  .. 'p95 %.2f max %.2f deg', kind, #st.ranges, 100 * rm, 100 * r95, 100 * rmax, bm, b95, bmax))
+local n = 0
+local function tap(name, ok, text)
+  if not gate:find(name, 1, true) then return end
+  n = n + 1
+  print((ok and 'ok ' or 'not ok ') .. n .. ' - ' .. kind .. ' ' .. text)
+end
+tap('recall', recall >= 0.95, string.format('recall %.1f%% >= 95%%', 100 * recall))
+tap('false', fp <= 0.01, string.format('false detections %.2f%% <= 1%%', 100 * fp))
+tap('range', r95 <= 0.10, string.format('range error p95 %.1f%% <= 10%%', 100 * r95))
+tap('bearing', b95 <= 3, string.format('bearing error p95 %.2f deg <= 3', b95))
+n = n + 1
+print(string.format('%s %d - %s frames scored: %d with the ball in view, %d without', st.inview >= 20 and 'ok' or
+  'not ok', n, kind, st.inview, st.empty))
+print('1..' .. n)
