@@ -7,6 +7,7 @@
 --   local n = bd:candidates(labels, wl, hl, 2, 8, 0.07, cfg)   -- bd.cand[0 .. n-1]: u, v, radius, score
 --   local mlp = assert(balldetect.load_model('Config/common/ball_white.mlp'))
 --   local p = bd:classify(mlp, yuyv, 640, 480, bd.cand[0])      -- probability 0..1 (also in cand.prob)
+--   local n = bd:obstacles(labels, wl, hl, cfg)          -- bd.obst[0 .. n-1]: x0, x1, top, foot, red, blue
 -- Nothing on the per-frame path allocates.
 local ffi = require('ffi')
 local native = require('native')
@@ -16,6 +17,10 @@ typedef struct bd_view { double f, cx, cy; double R[9]; double height; } bd_view
 typedef struct bd bd;
 typedef struct bd_candidate { double u, v, radius; double inner, ring; double score; double prob; } bd_candidate;
 typedef struct bd_mlp bd_mlp;
+typedef struct bd_obstacle { int32_t x0, x1; int32_t top, foot; int32_t foot_visible; int32_t red, blue; } bd_obstacle;
+int bd_obstacles(bd *w, const uint8_t *labels, int wl, int hl, const int16_t *top, uint8_t field_mask,
+                 uint8_t red, uint8_t blue, int min_run, int max_gap, int min_width, bd_obstacle *out,
+                 int maxn);
 double bd_ball_radius_px(const bd_view *view, double u, double v, double r);
 bd *bd_new(int max_w, int max_h);
 void bd_free(bd *w);
@@ -35,7 +40,7 @@ double bd_mlp_eval(const bd_mlp *m, const float *x);
 local C = native.load('bd')
 
 local NFEAT = 16 * 16 + 2 * 4 * 4
-local M = { C = C, NFEAT = NFEAT, MAXCAND = 16 }
+local M = { C = C, NFEAT = NFEAT, MAXCAND = 16, MAXOBST = 24 }
 
 local errbuf = ffi.new('char[512]')
 
@@ -60,6 +65,7 @@ function M.new(max_w, max_h)
     view = ffi.new('bd_view'),
     cand = ffi.new('bd_candidate[?]', M.MAXCAND),
     feat = ffi.new('float[?]', NFEAT),
+    obst = ffi.new('bd_obstacle[?]', M.MAXOBST),
   }, Bd)
 end
 
@@ -96,6 +102,15 @@ function Bd:classify(mlp, yuyv, width, height, c)
   local f = self:features(mlp, yuyv, width, height, c.u, c.v, c.radius)
   c.prob = C.bd_mlp_eval(mlp, f)
   return c.prob
+end
+
+-- Obstacles standing on the field (after boundary) into self.obst[0 .. n-1]; returns n.
+-- cfg: field (label bits of field and lines), red, blue (team colours' bits), min_run, max_gap, min_width.
+function Bd:obstacles(labels, wl, hl, cfg)
+  local n = C.bd_obstacles(self.w, labels, wl, hl, self.top, cfg.field, cfg.red, cfg.blue, cfg.min_run, cfg.max_gap,
+                           cfg.min_width, self.obst, M.MAXOBST)
+  if n < 0 then error('balldetect: bad arguments to bd_obstacles', 2) end
+  return n
 end
 
 return M

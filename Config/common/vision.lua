@@ -15,6 +15,9 @@ return {
       display = { 0, 160, 0 } },
     { name = 'white', bit = 16, y = { 172, 255 }, u = { 104, 152 }, v = { 104, 152 },
       display = { 255, 255, 255 } },
+    -- the teams' jerseys (the sim's: Config/platforms/Sim/sim.lua teams; red U 107 V 212, blue U 195 V 98)
+    { name = 'red', bit = 2, y = { 30, 200 }, u = { 96, 124 }, v = { 180, 245 }, display = { 220, 30, 45 } },
+    { name = 'blue', bit = 4, y = { 30, 200 }, u = { 170, 230 }, v = { 60, 124 }, display = { 30, 70, 190 } },
   },
   ball = {
     kind = 'orange',            -- 'orange': the colour table's ball (below); 'white': the FIFA ball, found
@@ -39,6 +42,22 @@ return {
     green_color = 24,           -- label bits that count as field below the ball: green | white (lines)
     max_range = 6.0,            -- m, farther detections are refused
     size_tolerance = 2.0,       -- range from size within this factor of the ground-projected range
+  },
+  -- other robots: bands of label columns neither field nor line that rise from a foot on the field
+  -- to the field boundary (Player/Vision/detect_robots.lua)
+  robots = {
+    enabled = true,
+    field = 24,                 -- label bits of field and lines (green | white): not a robot
+    red = 2, blue = 4,          -- label bits of the team colours (colors above)
+    min_run = 6,                -- label rows of a column's run, at least
+    max_gap = 3,                -- field or line labels bridged inside a run (the field seen between legs)
+    min_width = 3,              -- label columns of a band, at least (and the columns bridged inside one)
+    merge_gap = 0.12,           -- m between neighbouring bands at their range that still make one robot (legs)
+    min_width_m = 0.08,         -- m, a band's width at its foot's range: at least (a leg)...
+    max_width_m = 1.2,          -- ... and at most (two robots side by side)
+    depth_offset = 0.06,        -- m from the front of the feet to the robot's middle, along the ray
+    min_team = 6,               -- labels of a team colour in a band to name its team
+    max_range = 6.0,            -- m
   },
   goal = {
     color = 16,                 -- label bit (white posts)

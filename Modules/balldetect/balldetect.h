@@ -73,6 +73,26 @@ int bd_candidates(bd *w, const uint8_t *labels, int wl, int hl, int scale, uint8
 int bd_features(const uint8_t *yuyv, int width, int height, double u, double v, double radius,
                 double margin, float *out);
 
+/* An obstacle standing on the field (another robot): a band of label columns in each of which a
+ * run of labels that are neither field nor line (not `field_mask`) rises from a foot on the field
+ * up to the field boundary or beyond (robots stand out of the field; the ball, marks and lines lie
+ * flat within it). Label units. */
+typedef struct bd_obstacle {
+  int32_t x0, x1;            /* columns, inclusive */
+  int32_t top, foot;         /* highest row of the runs, the foot row (the 95th percentile of the columns' lowest rows) */
+  int32_t foot_visible;      /* 0 when the runs go down to the image's bottom (the foot is below it) */
+  int32_t red, blue;         /* labels of the team colours in the band */
+} bd_obstacle;
+
+/* Obstacles in a label image with its field boundary (bd_field_boundary). min_run: rows a run
+ * needs at least; max_gap: field-mask labels bridged inside a run (lines seen through legs);
+ * min_width: columns of a band, and the columns without a run bridged inside one (the field seen
+ * between legs). A run's foot must lie 2 rows below the boundary or more. Up to maxn bands, widest
+ * first; returns the count. */
+int bd_obstacles(bd *w, const uint8_t *labels, int wl, int hl, const int16_t *top, uint8_t field_mask,
+                 uint8_t red, uint8_t blue, int min_run, int max_gap, int min_width, bd_obstacle *out,
+                 int maxn);
+
 /* A small classifier: nin inputs -> nhid ReLU units -> one sigmoid output. */
 typedef struct bd_mlp bd_mlp;
 /* Reads a model file: a line "hrp-ball-mlp 1 NIN NHID MARGIN", then W1 (NHID rows of NIN), b1

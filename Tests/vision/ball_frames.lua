@@ -14,12 +14,15 @@ local path, kind, gate = arg[1], arg[2], arg[3] or ''
 assert(path and (kind == 'white' or kind == 'orange'), 'usage: ball_frames.lua FRAMES white|orange [GATE]')
 local vcfg, ccfg = Config.load('vision'), Config.load('camera')
 vcfg.ball.kind = kind
+-- BALL_MODEL=FILE: another classifier than the config's (a model being trained)
+if os.getenv('BALL_MODEL') then vcfg.ball.white.model = os.getenv('BALL_MODEL') end
 local vp = assert(pipeline.new(vcfg, ccfg, nil))
 local file = assert(frames.open(path))
 local draw_dir = os.getenv('DRAW')
 
 local st = { inview = 0, found = 0, wrong = 0, empty = 0, false_pos = 0, ranges = {}, bearings = {} }
 local misses = {}
+local rs = { seen = 0, found = 0, errs = {}, dets = 0, false_pos = 0, team_ok = 0, team_named = 0 }
 for fr in file:each() do
   assert(math.abs(fr.cm.f - vp.cm.f) < 1e-6, 'the renderer and the vision disagree on the focal length')
   local det = vp:detect(fr, fr.pose)
@@ -47,6 +50,29 @@ for fr in file:each() do
       note = 'false'
     end
   end
+  -- robots whose middle on the ground is in the image, 0.3 .. 3 m away: found when a detection lies
+  -- within 0.5 m; a detection near no robot (within 0.7 m) is a false one
+  local robots = det.robots
+  for _, r in ipairs(fr.robots) do
+    local range = math.sqrt(r.x * r.x + r.y * r.y)
+    if r.visible > 0 and range >= 0.3 and range <= 3 then
+      rs.seen = rs.seen + 1
+      local best
+      for i = 1, robots.n do
+        local e = math.sqrt((robots[i].x - r.x) ^ 2 + (robots[i].y - r.y) ^ 2)
+        if e <= 0.5 and (not best or e < best) then best = e end
+      end
+      if best then rs.found = rs.found + 1; rs.errs[#rs.errs + 1] = best end
+    end
+  end
+  for i = 1, robots.n do
+    rs.dets = rs.dets + 1
+    local near = false
+    for _, r in ipairs(fr.robots) do
+      if math.sqrt((robots[i].x - r.x) ^ 2 + (robots[i].y - r.y) ^ 2) <= 0.7 then near = true end
+    end
+    if not near then rs.false_pos = rs.false_pos + 1 end
+  end
   if note then misses[#misses + 1] = string.format('frame %d: ball %.2f m %+.1f deg visible %.2f: %s', fr.index,
                                                    b.distance, math.deg(b.bearing), b.visible, note) end
   if draw_dir and (note or (os.getenv('DRAW_FRAMES') or ''):find(',' .. fr.index .. ',', 1, true)) then
@@ -71,6 +97,10 @@ print(string.format('%s ball: recall %d/%d = %.1f%% (fully in view, 0.3-4 m; %d 
   st.false_pos, st.empty, 100 * fp))
 print(string.format('%s ball: range error (<= 3 m, %d) mean %.1f%% p95 %.1f%% max %.1f%%; bearing error mean %.2f '
   .. 'p95 %.2f max %.2f deg', kind, #st.ranges, 100 * rm, 100 * r95, 100 * rmax, bm, b95, bmax))
+local em, e95, emax = stats(rs.errs)
+print(string.format('robots: recall %d/%d = %.1f%% (in view, 0.3-3 m); position error mean %.2f p95 %.2f max %.2f m; '
+  .. 'detections near no robot %d/%d', rs.found, rs.seen, 100 * rs.found / math.max(1, rs.seen), em, e95, emax,
+  rs.false_pos, rs.dets))
 local n = 0
 local function tap(name, ok, text)
   if not gate:find(name, 1, true) then return end
@@ -81,6 +111,8 @@ tap('recall', recall >= 0.95, string.format('recall %.1f%% >= 95%%', 100 * recal
 tap('false', fp <= 0.01, string.format('false detections %.2f%% <= 1%%', 100 * fp))
 tap('range', r95 <= 0.10, string.format('range error p95 %.1f%% <= 10%%', 100 * r95))
 tap('bearing', b95 <= 3, string.format('bearing error p95 %.2f deg <= 3', b95))
+tap('robots', rs.found >= 0.9 * rs.seen,
+    string.format('robot recall %.1f%% >= 90%%', 100 * rs.found / math.max(1, rs.seen)))
 n = n + 1
 print(string.format('%s %d - %s frames scored: %d with the ball in view, %d without', st.inview >= 20 and 'ok' or
   'not ok', n, kind, st.inview, st.empty))
