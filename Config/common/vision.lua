@@ -30,7 +30,7 @@ return {
       min_inner = 0.75,         -- fraction of not-field labels inside the ball's expected disc, at least
       max_ring = 0.45,          -- fraction of not-field labels in the ring around it, at most
       min_radius = 4,           -- px, the smallest ball looked for (about 5 m away)
-      max_candidates = 6,       -- candidates the classifier checks per frame, best shapes first
+      max_candidates = 8,       -- candidates the classifier checks per frame, best shapes first
       threshold = 0.5,          -- classifier probability for a ball
     },
     color = 1,                  -- label bit

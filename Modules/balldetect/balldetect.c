@@ -8,7 +8,8 @@
 
 struct bd {
   int max_w, max_h;
-  int32_t *integral;   /* (max_w + 1) x (max_h + 1): non-field labels on the field, summed */
+  int32_t *integral;   /* (max_w + 1) x (max_h + 1): non-field labels below the boundary, summed */
+  int32_t *integral_all;   /* labels below the boundary, summed (the field part of a box) */
   int16_t *raw;        /* per column: first row of the field run, before the hull */
   int *hull;           /* column indices on the hull */
   bd_candidate *cand;  /* every position that passed, before the suppression */
@@ -33,10 +34,11 @@ bd *bd_new(int max_w, int max_h) {
   w->max_h = max_h;
   w->ncand_max = 4096;
   w->integral = calloc((size_t)(max_w + 1) * (max_h + 1), sizeof(int32_t));
+  w->integral_all = calloc((size_t)(max_w + 1) * (max_h + 1), sizeof(int32_t));
   w->raw = calloc((size_t)max_w, sizeof(int16_t));
   w->hull = calloc((size_t)max_w, sizeof(int));
   w->cand = calloc((size_t)w->ncand_max, sizeof(bd_candidate));
-  if (!w->integral || !w->raw || !w->hull || !w->cand) {
+  if (!w->integral || !w->integral_all || !w->raw || !w->hull || !w->cand) {
     bd_free(w);
     return NULL;
   }
@@ -46,6 +48,7 @@ bd *bd_new(int max_w, int max_h) {
 void bd_free(bd *w) {
   if (!w) return;
   free(w->integral);
+  free(w->integral_all);
   free(w->raw);
   free(w->hull);
   free(w->cand);
@@ -128,18 +131,25 @@ int bd_candidates(bd *w, const uint8_t *labels, int wl, int hl, int scale, uint8
   if (!w || !labels || !top || !view || !out || wl > w->max_w || hl > w->max_h || wl <= 0 || hl <= 0 ||
       scale <= 0 || step <= 0 || maxn < 0)
     return BD_EARG;
-  /* integral image of the labels that are not field, below the boundary */
-  int32_t *S = w->integral;
+  /* integral images of the labels below the boundary (A) and of those that are not field (S): the
+   * disc and the ring are judged on their part on the field (a far ball at the field's edge rises
+   * above the boundary; what lies beyond the field says nothing) */
+  int32_t *S = w->integral, *A = w->integral_all;
   const int s = wl + 1;
   memset(S, 0, sizeof(int32_t) * (size_t)s);
+  memset(A, 0, sizeof(int32_t) * (size_t)s);
   for (int y = 0; y < hl; y++) {
     const uint8_t *row = labels + (size_t)y * wl;
-    int32_t acc = 0;
+    int32_t acc = 0, acc_all = 0;
     int32_t *o = S + (size_t)(y + 1) * s, *p = S + (size_t)y * s;
-    o[0] = 0;
+    int32_t *oa = A + (size_t)(y + 1) * s, *pa = A + (size_t)y * s;
+    o[0] = oa[0] = 0;
     for (int x = 0; x < wl; x++) {
-      acc += (y >= top[x]) & ((row[x] & green) == 0);
+      const int32_t in = y >= top[x];
+      acc += in & ((row[x] & green) == 0);
+      acc_all += in;
       o[x + 1] = p[x + 1] + acc;
+      oa[x + 1] = pa[x + 1] + acc_all;
     }
   }
   int nc = 0;
@@ -147,26 +157,32 @@ int bd_candidates(bd *w, const uint8_t *labels, int wl, int hl, int scale, uint8
   for (int y = step / 2; y < hl; y += step) {
     const uint8_t *row = labels + (size_t)y * wl;
     for (int x = step / 2; x < wl; x += step) {
-      if (y < top[x] || (row[x] & green)) continue;
+      if (row[x] & green) continue;
       const double u = (x + 0.5) * sc, v = (y + 0.5) * sc;
       const double rpx = bd_ball_radius_px(view, u, v, ball_r);
       if (rpx < min_radius_px) continue;
       const double r = rpx / sc;   /* labels */
-      int32_t ai, ao, am;
+      if (y + r < top[x]) continue;   /* the ball's foot is on the field */
+      /* the disc's inner box and a ring (box 1.6 r minus box 1.15 r), each on its part on the field;
+       * at least a quarter of the inner box lies on the field */
+      int32_t ai, dummy;
       const int a = (int)(0.7 * r + 0.5) > 0 ? (int)(0.7 * r + 0.5) : 1;
-      const int32_t ni = box(S, wl, hl, x - a + 1, y - a + 1, x + a, y + a, &ai);
-      if (ai == 0 || ni < min_inner * ai) continue;
+      const int32_t ni = box(S, wl, hl, x - a + 1, y - a + 1, x + a, y + a, &dummy);
+      const int32_t fi = box(A, wl, hl, x - a + 1, y - a + 1, x + a, y + a, &ai);
+      if (ai == 0 || fi * 4 < ai || ni < min_inner * fi) continue;
       const int bo = (int)(1.6 * r + 1), bm = (int)(1.15 * r + 1);
-      const int32_t no = box(S, wl, hl, x - bo + 1, y - bo + 1, x + bo, y + bo, &ao);
-      const int32_t nm = box(S, wl, hl, x - bm + 1, y - bm + 1, x + bm, y + bm, &am);
-      const double ring = ao > am ? (double)(no - nm) / (ao - am) : 0;
+      const int32_t no = box(S, wl, hl, x - bo + 1, y - bo + 1, x + bo, y + bo, &dummy);
+      const int32_t nm = box(S, wl, hl, x - bm + 1, y - bm + 1, x + bm, y + bm, &dummy);
+      const int32_t fo = box(A, wl, hl, x - bo + 1, y - bo + 1, x + bo, y + bo, &dummy);
+      const int32_t fm = box(A, wl, hl, x - bm + 1, y - bm + 1, x + bm, y + bm, &dummy);
+      const double ring = fo > fm ? (double)(no - nm) / (fo - fm) : 0;
       if (ring > max_ring) continue;
       if (nc >= w->ncand_max) break;
       bd_candidate *c = &w->cand[nc++];
       c->u = u;
       c->v = v;
       c->radius = rpx;
-      c->inner = (double)ni / ai;
+      c->inner = (double)ni / fi;
       c->ring = ring;
       c->score = c->inner - ring;
       c->prob = -1;
@@ -192,7 +208,7 @@ int bd_candidates(bd *w, const uint8_t *labels, int wl, int hl, int scale, uint8
       for (int yy = (int)(cy - r); yy <= (int)(cy + r) + 1; yy += st) {
         if (yy < 0 || yy >= hl) continue;
         for (int xx = (int)(cx - r); xx <= (int)(cx + r) + 1; xx += st) {
-          if (xx < 0 || xx >= wl || yy < top[xx]) continue;
+          if (xx < 0 || xx >= wl) continue;
           const double dx = xx - cx, dy = yy - cy;
           if (dx * dx + dy * dy > r * r || (labels[(size_t)yy * wl + xx] & green)) continue;
           sx += xx;

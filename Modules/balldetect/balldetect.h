@@ -54,9 +54,10 @@ typedef struct bd_candidate {
   double prob;               /* the classifier's probability (bd_candidates leaves it -1) */
 } bd_candidate;
 
-/* Ball candidates: label positions (every `step` labels) inside the field boundary where a disc of
- * the ball's expected radius (from the view; ball_r in m) is mostly not field (>= min_inner) and a
- * ring around it mostly field (<= max_ring); local maxima of inner - ring, the best first, none
+/* Ball candidates: label positions (every `step` labels) at most a ball's radius above the field
+ * boundary where a disc of the ball's expected radius (from the view; ball_r in m) is mostly not
+ * field (>= min_inner) and a ring around it mostly field or beyond the boundary (not-field labels
+ * below the boundary <= max_ring); local maxima of inner - ring, the best first, none
  * within one radius of a better one; the centre refined to the centroid of the non-field labels in
  * its disc. `scale`: full-resolution px per label. Writes up to maxn into out, returns the count. */
 int bd_candidates(bd *w, const uint8_t *labels, int wl, int hl, int scale, uint8_t green,
