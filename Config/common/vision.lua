@@ -47,12 +47,14 @@ return {
   -- to the field boundary (Player/Vision/detect_robots.lua)
   robots = {
     enabled = true,
-    field = 24,                 -- label bits of field and lines (green | white): not a robot
+    field = 25,                 -- label bits of field, lines and the orange ball (green | white | orange):
+                                -- not a robot
     red = 2, blue = 4,          -- label bits of the team colours (colors above)
     min_run = 6,                -- label rows of a column's run, at least
     max_gap = 3,                -- field or line labels bridged inside a run (the field seen between legs)
     min_width = 3,              -- label columns of a band, at least (and the columns bridged inside one)
     merge_gap = 0.12,           -- m between neighbouring bands at their range that still make one robot (legs)
+    arm_width = 0.1,            -- m: a band no wider joins its neighbour whatever its foot (an arm)
     min_width_m = 0.08,         -- m, a band's width at its foot's range: at least (a leg)...
     max_width_m = 1.2,          -- ... and at most (two robots side by side)
     depth_offset = 0.06,        -- m from the front of the feet to the robot's middle, along the ray

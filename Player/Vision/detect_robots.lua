@@ -25,7 +25,8 @@ function M.find(bd, p, cm, pose, cfg, out)
   local n = bd:obstacles(p.labels, p.wa, p.ha, cfg)
   local s = p.scale
   -- bands left to right; neighbours merge when the gap between them is narrower than
-  -- cfg.merge_gap m at their range and their feet agree (two legs, a leg and an arm)
+  -- cfg.merge_gap m at the nearer one's range and their feet agree (two legs), or one of them is
+  -- no wider than an arm (cfg.arm_width m): a hand reaching below the boundary has a far foot
   local nb = 0
   for i = 0, n - 1 do
     local o = bd.obst[i]
@@ -43,8 +44,11 @@ function M.find(bd, p, cm, pose, cfg, out)
   local merged = {}
   for _, b in ipairs(bands) do
     local last = merged[#merged]
-    local gap_m = last and (b.x0 - last.x1) * s * math.min(last.dh, b.dh) / cm.f
-    if last and gap_m <= cfg.merge_gap and math.abs(last.dh - b.dh) <= 0.25 * math.max(last.dh, b.dh) + 0.1 then
+    local near = last and math.min(last.dh, b.dh)
+    local gap_m = last and (b.x0 - last.x1) * s * near / cm.f
+    local arm = last and math.min(last.x1 - last.x0 + 1, b.x1 - b.x0 + 1) * s * near / cm.f <= cfg.arm_width
+    local agree = last and math.abs(last.dh - b.dh) <= 0.25 * math.max(last.dh, b.dh) + 0.1
+    if last and gap_m <= cfg.merge_gap and (arm or agree) then
       last.x1, last.top = b.x1, math.min(last.top, b.top)
       if b.foot > last.foot then last.foot, last.dh, last.vis = b.foot, b.dh, b.vis end
       last.red, last.blue = last.red + b.red, last.blue + b.blue
