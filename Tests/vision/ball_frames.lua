@@ -100,8 +100,8 @@ print(string.format('%s ball: recall %d/%d = %.1f%% (fully in view, 0.3-4 m; %d 
 print(string.format('%s ball: range error (<= 3 m, %d) mean %.1f%% p95 %.1f%% max %.1f%%; bearing error mean %.2f '
   .. 'p95 %.2f max %.2f deg', kind, #st.ranges, 100 * rm, 100 * r95, 100 * rmax, bm, b95, bmax))
 local em, e95, emax = stats(rs.errs)
-print(string.format('robots: recall %d/%d = %.1f%% (in view, 0.3-3 m, not cut by the image side); position error mean %.2f p95 %.2f max %.2f m; '
-  .. 'detections near no robot %d/%d', rs.found, rs.seen, 100 * rs.found / math.max(1, rs.seen), em, e95, emax,
+print(string.format('robots: recall %d/%d = %.1f%% (in view, 0.3-3 m, not cut by the image side); '
+  .. 'position error mean %.2f p95 %.2f max %.2f m; detections near no robot %d/%d', rs.found, rs.seen, 100 * rs.found / math.max(1, rs.seen), em, e95, emax,
   rs.false_pos, rs.dets))
 local n = 0
 local function tap(name, ok, text)
