@@ -1,7 +1,8 @@
 -- Vision: colour classes, lookup table, detection thresholds (Player/Vision, Run/lut_tool).
 -- Colours are boxes in YUV (BT.601 full range, 0..255) that Run/lut_tool and the vision process
 -- turn into a lookup table when no trained table is given. The sim renders a green carpet, white
--- lines and goals, and an orange ball.
+-- lines and goals, and an orange ball (U 52, V 214); orange's U ends at 92 so that the red team's
+-- jerseys (U 107, Config/platforms/Sim/sim.lua `teams`) are not taken for the ball.
 return {
   lut = false,                  -- path of a LUT file (relative to the repo root), or false: from colors
                                 -- (a venue's trained table: set it in the site folder's vision.lua)
@@ -9,7 +10,7 @@ return {
   block = 4,                    -- block image = 4x4 bit-OR of the label image (80x60)
   -- bit: the colour's label bit; y/u/v: {min, max}; display: RGB for label renderings
   colors = {
-    { name = 'orange', bit = 1, y = { 40, 235 }, u = { 0, 112 }, v = { 168, 255 },
+    { name = 'orange', bit = 1, y = { 40, 235 }, u = { 0, 92 }, v = { 168, 255 },
       display = { 255, 128, 0 } },
     { name = 'green', bit = 8, y = { 30, 190 }, u = { 56, 124 }, v = { 40, 122 },
       display = { 0, 160, 0 } },
