@@ -3,7 +3,7 @@
 --   local frames = require('Run.ball_train.frames')
 --   local file = assert(frames.open('/tmp/frames.bin'))
 --   for fr in file:each() do ... fr.yuyv, fr.cm, fr.pose, fr.ball.u/v/radius/distance/bearing/visible,
---                              fr.robots[i].x/y/u/v/visible end
+--                              fr.robots[i].x/y/u/v/visible/team end (team: the sim's, 1 or 2)
 -- The frame's tables and its YUYV buffer are reused from one frame to the next.
 local ffi = require('ffi')
 
@@ -62,10 +62,10 @@ function File:next()
   b.u, b.v, b.radius, b.distance, b.bearing, b.visible = d[0], d[1], d[2], d[3], d[4], d[5]
   local n = self:int()
   for i = 1, n do
-    d = self:doubles(5)
+    d = self:doubles(6)
     fr.robots[i] = fr.robots[i] or {}
     local r = fr.robots[i]
-    r.x, r.y, r.u, r.v, r.visible = d[0], d[1], d[2], d[3], d[4]
+    r.x, r.y, r.u, r.v, r.visible, r.team = d[0], d[1], d[2], d[3], d[4], d[5]
   end
   for i = n + 1, #fr.robots do fr.robots[i] = nil end
   local img = self.f:read(self.width * self.height * 2)

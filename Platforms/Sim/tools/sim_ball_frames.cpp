@@ -1,9 +1,10 @@
 // sim_ball_frames: renders seeded random head-camera frames with their truth, for training and testing
 // the ball and robot detectors (Run/ball_train, Tests/vision/ball_frames_test.sh).
-//   sim_ball_frames --out FILE [--count N] [--seed N] [--others K]
+//   sim_ball_frames --out FILE [--count N] [--seed N] [--others K] [--ball white|orange]
 // Each scene: this robot somewhere on the carpet, the head anywhere in its range; the ball in view
 // in about 2/3 of the scenes (0.25..5 m, also partly in view), elsewhere on the carpet otherwise;
-// 0..K other robots around (0.4..4 m, any yaw). The seed picks everything: training and test frames
+// 0..K other robots around (0.4..4 m, any yaw), of either team; the ball turned any way (its
+// pattern). --ball: the ball the camera sees (default: the sim config's ball.kind). The seed picks everything: training and test frames
 // differ by their seeds.
 //
 // File (little-endian): "HRPBFRM1", i32 width, height, count, others; then per frame:
@@ -13,7 +14,7 @@
 //       from the robot's torso), bearing (rad, in the robot frame), visible (fraction of its disc
 //       that shows in the frame: inside the image and not hidden by a robot),
 //   i32 nrobots, then per other robot f64 x, y (robot frame: the torso's ground point), u, v (px of
-//       that ground point), visible (1 if it projects inside the image),
+//       that ground point), visible (1 if it projects inside the image), team (the sim's: 1 or 2),
 //   then width * height * 2 bytes of YUYV.
 #include <cmath>
 #include <cstdio>
@@ -39,6 +40,7 @@ int main(int argc, char **argv) {
   std::string out;
   int count = 100, others = 3;
   uint64_t seed = 1;
+  std::string ball_kind;
   for (int i = 1; i < argc; i++) {
     std::string a = argv[i];
     if (i + 1 >= argc) {
@@ -49,19 +51,25 @@ int main(int argc, char **argv) {
     else if (a == "--count") count = atoi(argv[++i]);
     else if (a == "--seed") seed = strtoull(argv[++i], nullptr, 10);
     else if (a == "--others") others = atoi(argv[++i]);
+    else if (a == "--ball") ball_kind = argv[++i];
     else {
       fprintf(stderr, "sim_ball_frames: unknown option %s\n", a.c_str());
       return 2;
     }
   }
-  if (out.empty() || count < 1 || others < 0 || others > 8) {
-    fprintf(stderr, "sim_ball_frames: --out FILE needed, --count >= 1, --others 0..8\n");
+  if (out.empty() || count < 1 || others < 0 || others > 8 ||
+      !(ball_kind.empty() || ball_kind == "white" || ball_kind == "orange")) {
+    fprintf(stderr, "sim_ball_frames: --out FILE needed, --count >= 1, --others 0..8, --ball white|orange\n");
     return 2;
   }
   try {
     sim::Params p;
     sim::Model m;
     sim::load_all(&p, &m);
+    if (!ball_kind.empty()) p.ball_kind = ball_kind;
+    // teams alternate: this robot team 1, the others 2, 1, 2, ...
+    p.robot_team.clear();
+    for (int r = 0; r <= others; r++) p.robot_team.push_back(1 + r % 2);
     sim::World w(p, m, 1 + others, seed);
     sim::Renderer ren(p, seed);
     std::mt19937_64 rng(seed * 7919 + 17);
@@ -117,9 +125,13 @@ int main(int argc, char **argv) {
       c.fovy = p.cam_fovy;
       w.solids(&solids);
       const sim::Vec3 ball = w.ball_position();
-      ren.render(c, solids, 0, hide, ball, w.ball_radius(), (uint32_t)k, img.data());
+      sim::Shot shot = sim::shot_of(w, c, 0, &hide, (uint32_t)k);
+      const sim::Vec3 axis = sim::Vec3(rnd(-1, 1), rnd(-1, 1), rnd(-1, 1)).normalized();
+      shot.ball_rot = Eigen::AngleAxisd(rnd(-M_PI, M_PI), axis).toRotationMatrix();
+      ren.render(shot, solids, img.data());
       // the same frame without the ball: where they differ, the ball shows
-      ren.render(c, solids, 0, hide, c.pos - 10 * c.rot.col(0), w.ball_radius(), (uint32_t)k, bare.data());
+      shot.ball = c.pos - 10 * c.rot.col(0);
+      ren.render(shot, solids, bare.data());
       const sim::Truth t = w.truth(0);
       const double cy = std::cos(-t.yaw), sy = std::sin(-t.yaw);
       auto to_robot = [&](double x, double y, double *ox, double *oy) {
@@ -177,6 +189,7 @@ int main(int argc, char **argv) {
         putd(f, ou + 0.5);
         putd(f, ov + 0.5);
         putd(f, in ? 1 : 0);
+        putd(f, p.robot_team[r]);
       }
       put(f, img.data(), n);
     }
