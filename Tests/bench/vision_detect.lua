@@ -33,7 +33,7 @@ for _, kind in ipairs({ 'orange', 'white' }) do
   vcfg.ball.kind = kind
   local vp = assert(pipeline.new(vcfg, ccfg, model))
   local n, balls, robots, cands = 0, 0, 0, 0
-  local t0, t = shm.C.shm_now(), nil
+  local t0, t = shm.C.shm_now()
   repeat
     for _, f in ipairs(list) do
       model:camera_pose(q, rpy, pose)          -- its cost counts; the frame's own pose is used
