@@ -58,6 +58,24 @@ int main(void) {
   for (int i = 0; i < BD_GRID * BD_GRID; i++) mean += f[i];
   check(fabs(mean) < 1e-3 && f[8 * BD_GRID + 8] > 0 && f[0] < 0, "luma normalised, ball bright, corner dark");
 
+  /* obstacles: sky above row 40, a robot (columns 100..120, rows 20..100), a line, a dark spot */
+  enum { RED = 2 };
+  for (int y = 0; y < H; y++)
+    for (int x = 0; x < W; x++) {
+      uint8_t l = y >= 40 ? GREEN : 0;
+      if (x >= 100 && x <= 120 && y >= 20 && y <= 100) l = (y >= 50 && y < 60) ? RED : 0;
+      if (abs(y - 2 * x + 200) <= 2 && y >= 40) l = WHITE;
+      if (x >= 200 && x < 210 && y >= 150 && y < 160) l = 0;
+      L[y * W + x] = l;
+    }
+  bd_field_boundary(w, L, W, H, GREEN, 4, top);
+  bd_obstacle ob[8];
+  n = bd_obstacles(w, L, W, H, top, GREEN | WHITE, RED, 4, 6, 3, 3, ob, 8);   /* the line: 3 rows bridged */
+  check(n == 1, "one obstacle: the robot (not the sky, the line or the spot in the field)");
+  check(n >= 1 && ob[0].x0 == 100 && ob[0].x1 == 120 && ob[0].foot == 100 && ob[0].foot_visible,
+        "its columns and its foot");
+  check(n >= 1 && ob[0].red == 21 * 10 && ob[0].blue == 0, "its team colour counted");
+
   char err[256];
   check(bd_mlp_load("/nonexistent/model.txt", err, sizeof err) == NULL && strstr(err, "/nonexistent/model.txt"),
         "a missing model: an error naming the file");
