@@ -3,7 +3,7 @@
 -- pose the renderer used. Prints the figures of issue 18 and TAP lines for the goals named in GATE.
 --   luajit Tests/vision/ball_frames.lua FRAMES KIND [GATE]     KIND: white | orange
 -- GATE: comma-separated goals to fail on (recall, false, range, bearing); the others only print.
--- DRAW=DIR writes a PPM per frame listed in DRAW_FRAMES (or each miss and false detection) with the
+-- DRAW=DIR writes a PNG per frame listed in DRAW_FRAMES (or each miss and false detection) with the
 -- field boundary, the candidates and the detection drawn.
 local Config = require('Config')
 local pipeline = require('Vision.pipeline')
@@ -86,7 +86,7 @@ for fr in file:each() do
   if note then misses[#misses + 1] = string.format('frame %d: ball %.2f m %+.1f deg visible %.2f: %s', fr.index,
                                                    b.distance, math.deg(b.bearing), b.visible, note) end
   if draw_dir and (note or (os.getenv('DRAW_FRAMES') or ''):find(',' .. fr.index .. ',', 1, true)) then
-    draw.frame(string.format('%s/%s_%04d.ppm', draw_dir, kind, fr.index), fr, vp, det, b)
+    draw.frame(string.format('%s/%s_%04d.png', draw_dir, kind, fr.index), fr, vp, det, b)
   end
 end
 

@@ -2,7 +2,7 @@
 # The white and the orange ball, and other robots, over seeded frames the sim renders
 # (build/bin/sim_ball_frames; seeds 11 and 12 here, training uses 1001 and up: Run/ball_train/train.sh),
 # scored by Tests/vision/ball_frames.lua against the renderer's truth. TAP; prints every figure.
-#   FRAMES=N (default 400)  DRAW=DIR: PPMs of the misses and false detections
+#   FRAMES=N (default 400)  DRAW=DIR: PNGs of the misses and false detections (DRAW_FRAMES=,1,2,: those frames too)
 set -u
 cd "$(dirname "$0")/../.."
 source Run/env.sh

@@ -1,10 +1,44 @@
--- Draws a frame with what the vision found into a PPM (RGB) file, for looking at:
+-- Draws a frame with what the vision found into a PNG (RGB; zlib through the FFI), for looking at:
 -- the field boundary (yellow), the ball candidates (blue, with the classifier's probability as the
 -- circle's brightness), the ball detected (red circle), the truth (green cross), robots seen (magenta box).
---   require('Tests.vision.draw').frame('out.ppm', frame, vp, det, truth_ball)
+--   require('Tests.vision.draw').frame('out.png', frame, vp, det, truth_ball)
 local ffi = require('ffi')
 
+ffi.cdef [[
+unsigned long compressBound(unsigned long sourceLen);
+int compress2(uint8_t *dest, unsigned long *destLen, const uint8_t *source, unsigned long sourceLen, int level);
+unsigned long crc32(unsigned long crc, const uint8_t *buf, unsigned int len);
+]]
+local zlib = ffi.load('z')
+
 local M = {}
+
+local function be32(n)
+  return string.char(bit.band(bit.rshift(n, 24), 255), bit.band(bit.rshift(n, 16), 255),
+                     bit.band(bit.rshift(n, 8), 255), bit.band(n, 255))
+end
+
+local function chunk(kind, data)
+  local body = kind .. data
+  local crc = tonumber(zlib.crc32(0, body, #body))
+  return be32(#data) .. body .. be32(crc)
+end
+
+-- Writes w x h RGB pixels (cdata) as a PNG file.
+function M.write_png(path, rgb, w, h)
+  local raw = ffi.new('uint8_t[?]', (w * 3 + 1) * h)
+  for y = 0, h - 1 do
+    raw[y * (w * 3 + 1)] = 0                       -- filter: none
+    ffi.copy(raw + y * (w * 3 + 1) + 1, rgb + y * w * 3, w * 3)
+  end
+  local n = ffi.new('unsigned long[1]', zlib.compressBound((w * 3 + 1) * h))
+  local z = ffi.new('uint8_t[?]', n[0])
+  assert(zlib.compress2(z, n, raw, (w * 3 + 1) * h, 6) == 0, 'zlib compress2 failed')
+  local f = assert(io.open(path, 'wb'))
+  f:write('\137PNG\r\n\26\n', chunk('IHDR', be32(w) .. be32(h) .. string.char(8, 2, 0, 0, 0)),
+          chunk('IDAT', ffi.string(z, n[0])), chunk('IEND', ''))
+  f:close()
+end
 
 local function rgb_of(yuyv, w, h)
   local buf = ffi.new('uint8_t[?]', w * h * 3)
@@ -63,9 +97,7 @@ function M.frame(path, fr, vp, det, truth)
     for x = r.u0, r.u1 do px(x, r.v0, 255, 0, 255); px(x, r.v1, 255, 0, 255) end
     for y = r.v0, r.v1 do px(r.u0, y, 255, 0, 255); px(r.u1, y, 255, 0, 255) end
   end
-  local f = assert(io.open(path, 'wb'))
-  f:write(string.format('P6\n%d %d\n255\n', w, h), ffi.string(buf, w * h * 3))
-  f:close()
+  M.write_png(path, buf, w, h)
 end
 
 return M
