@@ -3,8 +3,7 @@
 # Tests/scenarios/site_white: dcm_sim renders the white ball, the vision finds it by candidates and
 # the classifier, the camera pose from the kinematics), 90 seeded scenes, seed 3 (the orange
 # test's is 1). Gates recall, range and bearing; prints the false detections (measured: 0 of 55
-# here; 1 of 37
-# with 60 scenes of seed 1: the robot's own arm with the head turned down and aside).
+# here; 1 of 37 with 60 scenes of seed 1: the robot's own arm, the head turned down and aside).
 set -u
 cd "$(dirname "$0")/../.."
 export HRP_SITE="$PWD/Tests/scenarios/site_white"
