@@ -70,7 +70,10 @@ function M.find(bd, p, cm, pose, cfg, out)
         local r = out[out.n] or {}
         out[out.n] = r
         r.x, r.y, r.range = x, y, range
-        r.u0, r.u1, r.v0, r.v1 = o.x0 * s, (o.x1 + 1) * s, o.top * s, (o.foot + 1) * s
+        -- the runs go on into what is beyond the field above a robot: the box ends a robot's
+        -- height above its foot
+        r.u0, r.u1, r.v1 = o.x0 * s, (o.x1 + 1) * s, (o.foot + 1) * s
+        r.v0 = math.max(o.top * s, r.v1 - cm.f * cfg.height / dh)
         r.foot_visible = o.vis ~= 0
         r.team = -1
         if o.red >= cfg.min_team and o.red > 2 * o.blue then r.team = 1

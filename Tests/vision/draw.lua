@@ -1,6 +1,7 @@
 -- Draws a frame with what the vision found into a PNG (RGB; zlib through the FFI), for looking at:
 -- the field boundary (yellow), the ball candidates (blue, with the classifier's probability as the
--- circle's brightness), the ball detected (red circle), the truth (green cross), robots seen (magenta box).
+-- circle's brightness), the ball detected (red circle), the truth (green cross), robots seen (boxes in
+-- their team's colour: red, blue, magenta when unknown).
 --   require('Tests.vision.draw').frame('out.png', frame, vp, det, truth_ball)
 local ffi = require('ffi')
 
@@ -94,8 +95,12 @@ function M.frame(path, fr, vp, det, truth)
   end
   for i = 1, (det.robots and det.robots.n or 0) do
     local r = det.robots[i]
-    for x = r.u0, r.u1 do px(x, r.v0, 255, 0, 255); px(x, r.v1, 255, 0, 255) end
-    for y = r.v0, r.v1 do px(r.u0, y, 255, 0, 255); px(r.u1, y, 255, 0, 255) end
+    local cr, cg, cb = 255, 0, 255
+    if r.team == 1 then cr, cg, cb = 255, 40, 40 elseif r.team == 0 then cr, cg, cb = 40, 80, 255 end
+    for k = 0, 1 do
+      for x = r.u0, r.u1 do px(x, r.v0 + k, cr, cg, cb); px(x, r.v1 - k, cr, cg, cb) end
+      for y = r.v0, r.v1 do px(r.u0 + k, y, cr, cg, cb); px(r.u1 - k, y, cr, cg, cb) end
+    end
   end
   M.write_png(path, buf, w, h)
 end
