@@ -18,7 +18,8 @@ local function ground(cm, pose, s, x0, x1, foot)
   return gx, gy, math.sqrt(hx * hx + hy * hy)
 end
 
-local bands = {}
+local bands, merged = {}, {}   -- reused from frame to frame: no garbage per frame
+local function leftmost(a, b) return a.x0 < b.x0 end
 
 function M.find(bd, p, cm, pose, cfg, out)
   out.n = 0
@@ -40,8 +41,8 @@ function M.find(bd, p, cm, pose, cfg, out)
     end
   end
   for i = nb + 1, #bands do bands[i] = nil end
-  table.sort(bands, function(a, b) return a.x0 < b.x0 end)
-  local merged = {}
+  table.sort(bands, leftmost)
+  for i = #merged, 1, -1 do merged[i] = nil end
   for _, b in ipairs(bands) do
     local last = merged[#merged]
     local near = last and math.min(last.dh, b.dh)
