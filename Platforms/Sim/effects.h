@@ -66,8 +66,9 @@ struct Lighting {
 // The per-frame development of a scratch image into the camera's frame.
 struct Develop {
   const LensMap *map = nullptr;   // null: the scratch is the frame (same size, no distortion)
+  static constexpr int kMaxTaps = 8;
   int taps = 1;                   // motion blur: samples along the flow
-  int dx[16] = {0}, dy[16] = {0}; // each sample's pixel offset
+  int dx[kMaxTaps] = {0}, dy[kMaxTaps] = {0};   // each sample's pixel offset
   double gain = 1, wb_red = 1, wb_blue = 1;
   double noise_luma = 0, noise_chroma = 0;
   uint32_t noise_offset = 0;
