@@ -77,7 +77,8 @@ struct Develop {
 class Developer {
  public:
   explicit Developer(uint64_t seed);
-  // src: the scratch (map's size, or the frame's without a map); out: width x height YUYV.
+  // src: the scratch (map's size, or the frame's without a map); out: width x height YUYV (may be src
+  // when there is neither a map nor a blur).
   void run(const Develop &d, const uint8_t *src, int width, int height, uint8_t *out) const;
 
  private:

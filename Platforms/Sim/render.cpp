@@ -576,10 +576,16 @@ void Renderer::render(const Shot &sh, const std::vector<Solid> &solids, uint8_t 
     pin.cy = d.map->cy;
     pin.k1 = pin.k2 = 0;
   }
-  thread_local std::vector<uint8_t> scratch;
-  scratch.resize((size_t)pin.width * pin.height * 2);
+  if (real_.on) develop_settings(sh, &d);
+  // without a lens map and a blur the pinhole image is the frame: drawn and developed in place
+  thread_local std::vector<uint8_t> scratch_buf;
+  uint8_t *scratch = img;
+  if (d.map || d.taps > 1) {
+    scratch_buf.resize((size_t)pin.width * pin.height * 2);
+    scratch = scratch_buf.data();
+  }
   if (!real_.on) {
-    draw(sh, pin, solids, Look{Noise{noise_.data(), noise_offset(sh.frame)}, nullptr}, scratch.data());
+    draw(sh, pin, solids, Look{Noise{noise_.data(), noise_offset(sh.frame)}, nullptr}, scratch);
   } else {
     // the light over the field: a gradient across the carpet, soft shadows under each robot's torso
     // and under the ball
@@ -601,10 +607,9 @@ void Renderer::render(const Shot &sh, const std::vector<Solid> &solids, uint8_t 
       const double sg = 0.7 * sh.ball_radius;   // a contact shadow, darkest where the ball touches
       light.casters.push_back({sh.ball.x(), sh.ball.y(), 1 / (2 * sg * sg), real_.shadow_ball});
     }
-    draw(sh, pin, solids, Look{Noise{zeros_.data(), 0}, &light}, scratch.data());
-    develop_settings(sh, &d);
+    draw(sh, pin, solids, Look{Noise{zeros_.data(), 0}, &light}, scratch);
   }
-  dev_.run(d, scratch.data(), c.width, c.height, img);
+  dev_.run(d, scratch, c.width, c.height, img);
 }
 
 }  // namespace sim
