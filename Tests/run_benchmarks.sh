@@ -23,6 +23,7 @@ bench vision_lua luajit Tests/bench/vision_lua.lua 2
 bench vision_detect Tests/bench/vision_detect.sh 2
 bench white_score Tests/bench/white_score.sh
 bench sim_lockstep bash Tests/bench/sim_lockstep.sh 30
+bench camera_realism bash Tests/bench/camera_realism.sh 40
 bench walk_sim Tests/bench/walk_sim.sh
 bench score_given_pose Tests/bench/score_given_pose.sh
 bench standup_op3 env ROBOT=op3 Tests/motion/standup_stats.sh

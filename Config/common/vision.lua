@@ -2,7 +2,10 @@
 -- Colours are boxes in YUV (BT.601 full range, 0..255) that Run/lut_tool and the vision process
 -- turn into a lookup table when no trained table is given. The sim renders a green carpet, white
 -- lines and goals, and an orange ball (U 52, V 214); orange's U ends at 92 so that the red team's
--- jerseys (U 107, Config/platforms/Sim/sim.lua `teams`) are not taken for the ball.
+-- jerseys (U 107, Config/platforms/Sim/sim.lua `teams`) are not taken for the ball. White starts at
+-- Y 140: a post's side away from the light renders at 0.75 of 235 (176), and the sim camera's realism
+-- (sim.lua camera.realism: -10% light across the field, -6% exposure drift, noise) takes it to ~145;
+-- its U ends at 135, below the backdrop's (139), which is as bright then.
 return {
   lut = false,                  -- path of a LUT file (relative to the repo root), or false: from colors
                                 -- (a venue's trained table: set it in the site folder's vision.lua)
@@ -14,7 +17,7 @@ return {
       display = { 255, 128, 0 } },
     { name = 'green', bit = 8, y = { 30, 190 }, u = { 56, 124 }, v = { 40, 122 },
       display = { 0, 160, 0 } },
-    { name = 'white', bit = 16, y = { 172, 255 }, u = { 104, 152 }, v = { 104, 152 },
+    { name = 'white', bit = 16, y = { 140, 255 }, u = { 106, 135 }, v = { 106, 150 },
       display = { 255, 255, 255 } },
     -- the teams' jerseys (the sim's: Config/platforms/Sim/sim.lua teams; red U 107 V 212, blue U 195 V 98)
     { name = 'red', bit = 2, y = { 30, 200 }, u = { 96, 124 }, v = { 180, 245 }, display = { 220, 30, 45 } },

@@ -72,6 +72,9 @@ void CameraWorker::run() {
       world_.solids(j.scene, &solids);
       Shot sh;
       sh.cam = j.cam;
+      sh.cam_start = j.cam_start;
+      sh.has_start = j.has_start;
+      sh.time = j.time;
       sh.ball = j.scene.ball;
       sh.ball_rot = j.scene.ball_rot;
       sh.ball_radius = world_.ball_radius();

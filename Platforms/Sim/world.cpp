@@ -124,6 +124,19 @@ void params_load(const std::string &robot, Params *p) {
   p->cam_fovy = c.num("fovy");
   p->cam_latency_ticks = (int)s.num("camera.latency_ticks");
   p->cam_noise = s.num("camera.noise");
+  realism_load(s, &p->realism);
+  // the calibration (OpenCV's convention), robot data shared with the vision's projection
+  const std::string &camera_lua = c.file();
+  p->cam_fx = c.num("intrinsics.fx");
+  p->cam_fy = c.num("intrinsics.fy");
+  p->cam_cx = c.num("intrinsics.cx");
+  p->cam_cy = c.num("intrinsics.cy");
+  p->cam_k1 = c.num("distortion.k1");
+  p->cam_k2 = c.num("distortion.k2");
+  if (!(p->cam_fx > 0 && p->cam_fy > 0) || !std::isfinite(p->cam_cx) || !std::isfinite(p->cam_cy) ||
+      !std::isfinite(p->cam_k1) || !std::isfinite(p->cam_k2)) {
+    throw std::runtime_error(camera_lua + ": 'intrinsics' needs fx, fy > 0 and finite cx, cy; 'distortion' finite k1, k2");
+  }
   p->start.clear();
   for (int i = 1; s.has("start." + std::to_string(i) + ".1"); i++) {
     std::vector<double> v = s.nums("start." + std::to_string(i));

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "config.h"
+#include "effects.h"
 #include "model.h"
 
 namespace sim {
@@ -53,6 +54,9 @@ struct Params {
   double cam_rate = 30, cam_fovy = 43.3 * M_PI / 180;
   int cam_latency_ticks = 3;
   double cam_noise = 2;
+  // the camera's calibration (camera.lua intrinsics, distortion; OpenCV's convention, effects.h Lens)
+  double cam_fx = 0, cam_fy = 0, cam_cx = 0, cam_cy = 0, cam_k1 = 0, cam_k2 = 0;
+  Realism realism;                    // sim.lua camera: the camera's imperfections
   std::vector<double> start;   // x, y, yaw per robot, flattened
   double fall_angle = 1.0, watchdog = 0.5, battery = 12;
   double safe_hardness = 0.3, start_hardness = 1;   // the DCM's safe state; every joint at start

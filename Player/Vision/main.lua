@@ -47,7 +47,8 @@ local vcfg = Config.load('vision', { scale = 'number', block = 'number', colors 
            max_aspect = 'number', green_below = 'number', max_range = 'number' },
   goal = { color = 'number', diameter = 'number', min_rise = 'number' } })
 local ccfg = Config.load('camera', { driver = 'string', width = 'number', height = 'number',
-  fps = 'number', fovy = 'number' })
+  fps = 'number', fovy = 'number', intrinsics = { fx = 'number', fy = 'number', cx = 'number', cy = 'number' },
+  distortion = { k1 = 'number', k2 = 'number' } })
 
 -- the camera's settings with the command line's overrides
 local cam_settings = {}
@@ -75,8 +76,8 @@ local function rebuild(key)
   local fresh, perr = pipeline.new(vcfg, ccfg, model)
   if fresh then vp = fresh else log('%s: pipeline not rebuilt: %s', key, perr) end
 end
-for _, key in ipairs({ 'vision.scale', 'vision.block', 'vision.lut', 'vision.colors', 'camera.fovy', 'vision.ball.kind',
-                       'vision.ball.white.model' }) do
+for _, key in ipairs({ 'vision.scale', 'vision.block', 'vision.lut', 'vision.colors', 'camera.fovy',
+                       'camera.intrinsics', 'camera.distortion', 'vision.ball.kind', 'vision.ball.white.model' }) do
   params_live:on(key, rebuild)
 end
 params_live:on('camera.fps', function(_, fps) cam_settings.fps = fps end)

@@ -53,7 +53,7 @@ function M.new(vcfg, ccfg, model)
     width = ccfg.width, height = ccfg.height,
     p = imageproc.pipeline({ width = ccfg.width, height = ccfg.height, scale = vcfg.scale,
                              block = vcfg.block, lut = lut }),
-    cm = project.camera(ccfg.width, ccfg.height, ccfg.fovy),
+    cm = project.from_config(ccfg),
     head_joint = rawget(ccfg, 'head_joint') or { 0, 1 },
     pose = { 0, 0, 0, R = { 1, 0, 0, 0, 1, 0, 0, 0, 1 }, height = 0 },
     result = { ball = { detected = false, kind = kind == 'white' and 1 or 0, score = 0 }, goals = { n = 0 },

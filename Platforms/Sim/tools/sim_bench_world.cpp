@@ -82,7 +82,7 @@ int main(int argc, char **argv) {
           w.camera_pose(r, &c.pos, &c.rot);
           c.width = p.cam_width;
           c.height = p.cam_height;
-          c.fovy = p.cam_fovy;
+          c.calibrate(p);
           last_img = bufs[frames % in_flight].data();
           if (worker) {
             sim::CameraWorker::Job j;

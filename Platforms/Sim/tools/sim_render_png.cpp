@@ -55,7 +55,7 @@ int main(int argc, char **argv) {
     w.camera_pose(0, &c.pos, &c.rot);
     c.width = p.cam_width;
     c.height = p.cam_height;
-    c.fovy = p.cam_fovy;
+    c.calibrate(p);
     std::vector<sim::Solid> solids;
     w.solids(&solids);
     std::vector<uint8_t> img((size_t)c.width * c.height * 2);
