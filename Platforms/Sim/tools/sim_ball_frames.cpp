@@ -4,7 +4,10 @@
 // Each scene: this robot somewhere on the carpet, the head anywhere in its range; the ball in view
 // in about 2/3 of the scenes (0.25..5 m, also partly in view), elsewhere on the carpet otherwise;
 // 0..K other robots around (0.4..4 m, any yaw), of either team; the ball turned any way (its
-// pattern). --ball: the ball the camera sees (default: the sim config's ball.kind). The seed picks everything: training and test frames
+// pattern). The camera is the body's calibration and, with the sim's camera.realism, its
+// imperfections: the light and white balance at a random time, motion blur from a random turn of
+// the head (up to 4 rad/s, a head sweeping or the body swaying in a walk) and a step of the body
+// (up to 0.3 m/s) during the exposure. --ball: the ball the camera sees (default: the sim config's ball.kind). The seed picks everything: training and test frames
 // differ by their seeds.
 //
 // File (little-endian): "HRPBFRM1", i32 width, height, count, others; then per frame:
@@ -123,11 +126,21 @@ int main(int argc, char **argv) {
       c.width = p.cam_width;
       c.height = p.cam_height;
       c.fovy = p.cam_fovy;
+      c.calibrate(p);
       w.solids(&solids);
       const sim::Vec3 ball = w.ball_position();
       sim::Shot shot = sim::shot_of(w, c, 0, &hide, (uint32_t)k);
       const sim::Vec3 axis = sim::Vec3(rnd(-1, 1), rnd(-1, 1), rnd(-1, 1)).normalized();
       shot.ball_rot = Eigen::AngleAxisd(rnd(-M_PI, M_PI), axis).toRotationMatrix();
+      shot.time = rnd(0, 300);
+      {
+        const double exposure = ren.realism().exposure;
+        const sim::Vec3 turn = sim::Vec3(rnd(-1, 1), rnd(-1, 1), rnd(-1, 1)).normalized();
+        shot.cam_start = c;
+        shot.cam_start.rot = Eigen::AngleAxisd(-rnd(0, 4) * exposure, turn).toRotationMatrix() * c.rot;
+        shot.cam_start.pos = c.pos - rnd(0, 0.3) * exposure * sim::Vec3(std::cos(ryaw), std::sin(ryaw), 0);
+        shot.has_start = true;
+      }
       ren.render(shot, solids, img.data());
       // the same frame without the ball: where they differ, the ball shows
       shot.ball = c.pos - 10 * c.rot.col(0);
@@ -138,10 +151,10 @@ int main(int argc, char **argv) {
         *ox = cy * (x - t.x) - sy * (y - t.y);
         *oy = sy * (x - t.x) + cy * (y - t.y);
       };
-      const double fl = c.focal();
+      const double fl = c.fu();
       putd(f, fl);
-      putd(f, c.width / 2.0);
-      putd(f, c.height / 2.0);
+      putd(f, c.pu() + 0.5);   // continuous coordinates
+      putd(f, c.pv() + 0.5);
       double cxr, cyr;
       to_robot(c.pos.x(), c.pos.y(), &cxr, &cyr);
       putd(f, cxr);
