@@ -1,11 +1,8 @@
 // writer: the recorder's writer thread -- queued items into MCAP files (Modules/mcap), camera frames
-// JPEG-compressed through OpenCV, a new file past file_mb, the oldest deleted past total_mb.
+// JPEG-compressed straight from YUYV (jpeg_yuyv.c), a new file past file_mb, the oldest deleted past total_mb.
 #include "record.h"
+#include "jpeg_yuyv.h"
 #include "mcap/mcap.h"
-
-#include <opencv2/core.hpp>
-#include <opencv2/imgcodecs.hpp>
-#include <opencv2/imgproc.hpp>
 
 #include <algorithm>
 #include <atomic>
@@ -38,9 +35,10 @@ struct rec_writer {
   double last_flush = 0;
   int rc = 0;
   char err[512] = "";
-  std::vector<uchar> jpeg;
+  rec_jpeg *jpeg = nullptr;
+  bool frame_error_said = false;
   std::vector<uint8_t> buf;
-  cv::Mat bgr;
+  ~rec_writer() { rec_jpeg_free(jpeg); }
 };
 
 static double wall_now() {
@@ -136,13 +134,16 @@ static double thread_cpu() {
 
 static int write_frame(rec_writer *w, const rec_item *it) {
   const double c0 = thread_cpu();
-  cv::Mat yuyv(it->height, it->width, CV_8UC2, const_cast<uint8_t *>(it->data));
-  cv::cvtColor(yuyv, w->bgr, cv::COLOR_YUV2BGR_YUYV);
-  w->jpeg.clear();
-  cv::imencode(".jpg", w->bgr, w->jpeg, { cv::IMWRITE_JPEG_QUALITY, w->o.jpeg_quality });
-  w->buf.resize(w->jpeg.size() + 256);
-  const size_t n = shmlog_image_encode(it->log_time, "camera", "jpeg", w->jpeg.data(), w->jpeg.size(), w->buf.data(),
-                                       w->buf.size());
+  const uint8_t *jpeg;
+  size_t len;
+  if (rec_jpeg_encode(w->jpeg, it->data, it->width, it->height, w->o.jpeg_quality, &jpeg, &len) < 0) {
+    // a frame that cannot be encoded is skipped, not the end of the recording; said once
+    if (!w->frame_error_said) fprintf(stderr, "hrp_record: camera frame skipped: %s\n", rec_jpeg_error(w->jpeg));
+    w->frame_error_said = true;
+    return 0;
+  }
+  w->buf.resize(len + 256);
+  const size_t n = shmlog_image_encode(it->log_time, "camera", "jpeg", jpeg, len, w->buf.data(), w->buf.size());
   w->frames++;
   w->jpeg_cpu = w->jpeg_cpu + (thread_cpu() - c0);
   return mcap_writer_message(w->mw, w->frame_channel, w->seq++, it->log_time, it->publish_time, w->buf.data(), n);
@@ -194,10 +195,12 @@ static int mkdirs(const char *dir) {
 
 extern "C" int rec_writer_start(rec_writer **out, const rec_opts *o, const rec_blocks *bs, rec_queue *q,
                                 const rec_doc *docs, int ndocs, char *err, size_t errlen) {
-  // the colour conversion and JPEG run on the writer's own thread: OpenCV's thread pool for a
-  // 640x480 conversion only added hand-offs and wake-ups (seen in perf) on a machine the robot needs
-  cv::setNumThreads(1);
   rec_writer *w = new rec_writer();
+  if (!(w->jpeg = rec_jpeg_new())) {
+    snprintf(err, errlen, "recorder: cannot make a JPEG encoder (TurboJPEG)");
+    delete w;
+    return -ENOMEM;
+  }
   w->o = *o;
   w->bs = bs;
   w->q = q;
