@@ -63,7 +63,7 @@ int rec_blocks_open(rec_blocks *bs, const rec_opts *o, char *err, size_t errlen)
   if (rc < 0) return rc;
   for (int i = 0; i < shm_schema_nblocks(bs->schema); i++) {
     const char *name = shm_schema_block_name(bs->schema, i);
-    if (excluded(o, name)) continue;
+    if (excluded(o, name) || !strcmp(name, REC_PACKETS_BLOCK)) continue;   /* packets.c takes that one */
     if (bs->n >= REC_BLOCKS_MAX) {
       snprintf(err, errlen, "recorder: more than %d blocks", REC_BLOCKS_MAX);
       return -EINVAL;

@@ -28,6 +28,7 @@ struct rec_writer {
   std::string stem;                       // dir/hrp-<id>-<start time>
   int channel[REC_BLOCKS_MAX];
   int frame_channel = -1;
+  int packet_channel[2] = { -1, -1 };     // /gamecontroller, /team.message
   uint32_t seq = 0;
   uint64_t closed_bytes = 0;
   std::atomic<uint64_t> messages{0}, bytes{0}, frames{0}, files{0};
@@ -86,6 +87,13 @@ static int begin_file(rec_writer *w) {
       const std::string topic = std::string(m->topic) + "/jpeg";
       rc = si < 0 ? si : (w->frame_channel = mcap_writer_channel(w->mw, si, topic.c_str(), "cdr", cm, 1));
     }
+  }
+  if (rc >= 0) {
+    const int s = mcap_writer_schema(w->mw, SHMLOG_PACKET_TYPE, "ros2msg", SHMLOG_PACKET_DEF, strlen(SHMLOG_PACKET_DEF));
+    const char *gm[] = { "block", REC_PACKETS_BLOCK, "source", "gamecontroller" };
+    const char *tm[] = { "block", REC_PACKETS_BLOCK, "source", "team" };
+    rc = s < 0 ? s : (w->packet_channel[0] = mcap_writer_channel(w->mw, s, "/gamecontroller", "cdr", gm, 2));
+    if (rc >= 0) rc = w->packet_channel[1] = mcap_writer_channel(w->mw, s, "/team.message", "cdr", tm, 2);
   }
   return rc < 0 ? fail(w, rc, mcap_writer_error(w->mw)) : 0;
 }
@@ -160,10 +168,10 @@ static void *run(void *arg) {
       pthread_mutex_unlock(&w->q->mu);
       if (done) break;
     } else if (w->rc == 0) {
+      const int ch = it->kind == REC_ITEM_PACKET ? w->packet_channel[it->channel] : w->channel[it->channel];
       const int rc = it->kind == REC_ITEM_FRAME
                          ? write_frame(w, it)
-                         : mcap_writer_message(w->mw, w->channel[it->channel], w->seq++, it->log_time,
-                                               it->publish_time, it->data, it->len);
+                         : mcap_writer_message(w->mw, ch, w->seq++, it->log_time, it->publish_time, it->data, it->len);
       if (rc < 0) fail(w, rc, mcap_writer_error(w->mw));
       w->messages++;
     }
