@@ -54,7 +54,8 @@ static int take(rec_packets *p, uint32_t k, rec_queue *q, uint64_t log_time, uin
   uint8_t data[4096];
   const int s = (int)(k % (uint32_t)p->slots);
   for (int tries = 0; tries < 100; tries++) {
-    const uint32_t seq = shm_read_begin(p->blk);
+    uint32_t seq;
+    if (shm_read_begin_checked(p->blk, &seq, NULL, 0) < 0) return 1;   /* the behavior died writing it */
     const uint32_t count = __atomic_load_n(p->count, __ATOMIC_ACQUIRE);
     const int source = p->source[s];
     int len = p->length[s];

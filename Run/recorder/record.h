@@ -87,6 +87,8 @@ typedef struct rec_block {
   uint64_t frame_offset;   /* of the raw field */
   size_t frame_bytes;
   int width_off, height_off; /* offsets of its width / height fields (-1: none) */
+  int stale;               /* its writer died mid-update (shm_read_begin_checked): left out, said once */
+  uint32_t stale_seq;      /* the odd sequence it was left at */
 } rec_block;
 
 typedef struct rec_blocks {
