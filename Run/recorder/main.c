@@ -200,8 +200,8 @@ int main(int argc, char **argv) {
       }
       const double t = *time_p;
       const uint64_t log_time = t > 0 ? (uint64_t)(t * 1e9 + 0.5) : 0, wall = wall_ns();
-      rec_blocks_sample(&bs, &q, &hist, log_time, wall);
-      rec_packets_sample(&pk, &q, log_time, wall);
+      if (rec_blocks_sample(&bs, &q, &hist, log_time, wall) + rec_packets_sample(&pk, &q, log_time, wall) > 0)
+        rec_queue_tick_end(&q);
       if (observed) rec_observer_done(&ob, observed);
     }
     const double now = shm_now();

@@ -64,6 +64,13 @@ rec_item *rec_queue_pop(rec_queue *q, double timeout_s) {
   return it;
 }
 
+void rec_queue_tick_end(rec_queue *q) {
+  rec_item *it = (rec_item *)calloc(1, sizeof *it);
+  if (!it) return;
+  it->kind = REC_ITEM_TICK_END;
+  rec_queue_push(q, it);   /* 0 bytes: takes no room; a closed queue frees it */
+}
+
 void rec_queue_close(rec_queue *q) {
   pthread_mutex_lock(&q->mu);
   q->closed = 1;

@@ -44,7 +44,9 @@ typedef struct rec_opts {
 } rec_opts;
 
 /* ---- one queued message */
-enum { REC_ITEM_BLOCK = 0, REC_ITEM_FRAME = 1, REC_ITEM_PACKET = 2 };
+/* REC_ITEM_TICK_END (no data) follows the items of one sample: files are rotated only there, so a tick
+ * is never split across two files */
+enum { REC_ITEM_BLOCK = 0, REC_ITEM_FRAME = 1, REC_ITEM_PACKET = 2, REC_ITEM_TICK_END = 3 };
 typedef struct rec_item {
   struct rec_item *next;
   int kind;
@@ -75,6 +77,8 @@ int rec_queue_push(rec_queue *q, rec_item *it);
 /* The oldest item, waiting up to timeout_s; NULL on timeout or when closed and empty. */
 rec_item *rec_queue_pop(rec_queue *q, double timeout_s);
 void rec_queue_close(rec_queue *q);
+/* Marks the end of a sample's items (a REC_ITEM_TICK_END item). */
+void rec_queue_tick_end(rec_queue *q);
 uint64_t rec_queue_dropped(rec_queue *q);
 
 /* ---- the blocks being recorded */

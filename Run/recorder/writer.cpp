@@ -167,6 +167,12 @@ static void *run(void *arg) {
       const bool done = w->q->closed && !w->q->head;
       pthread_mutex_unlock(&w->q->mu);
       if (done) break;
+    } else if (it->kind == REC_ITEM_TICK_END) {
+      // a tick is whole: the place to begin a new file, so that no tick is split across two (the open
+      // chunk counted at its uncompressed size; a file passes file_mb by at most one tick's messages)
+      if (w->rc == 0 && (double)(mcap_writer_size(w->mw) + mcap_writer_pending(w->mw)) > w->o.file_mb * 1e6) {
+        if (end_file(w) == 0 && begin_file(w) == 0) enforce_total(w);
+      }
     } else if (w->rc == 0) {
       const int ch = it->kind == REC_ITEM_PACKET ? w->packet_channel[it->channel] : w->channel[it->channel];
       const int rc = it->kind == REC_ITEM_FRAME
@@ -180,10 +186,6 @@ static void *run(void *arg) {
     if (wall_now() - w->last_flush >= w->o.flush_s) {
       if (mcap_writer_flush(w->mw) < 0) fail(w, -EIO, mcap_writer_error(w->mw));
       w->last_flush = wall_now();
-    }
-    // the open chunk counted at its uncompressed size: a file ends at most one chunk short of file_mb
-    if ((double)(mcap_writer_size(w->mw) + mcap_writer_pending(w->mw)) > w->o.file_mb * 1e6) {
-      if (end_file(w) == 0 && begin_file(w) == 0) enforce_total(w);
     }
     w->bytes = w->closed_bytes + (w->mw ? mcap_writer_size(w->mw) : 0);
   }
