@@ -31,6 +31,7 @@ void *shm_field_ptr(shm_block *b, const char *field, int *type, int *count);
 void shm_write_begin(shm_block *b);
 void shm_write_end(shm_block *b);
 uint32_t shm_read_begin(const shm_block *b);
+int shm_read_begin_checked(const shm_block *b, uint32_t *seq, char *err, size_t errlen);
 int shm_read_retry(const shm_block *b, uint32_t seq);
 uint32_t shm_wait_write(shm_block *b, uint32_t last, double timeout_s);
 int shm_futex_wait(volatile uint32_t *addr, uint32_t val, double timeout_s);
@@ -211,10 +212,13 @@ end
 function Block:begin_write() C.shm_write_begin(self._handle) end
 function Block:end_write() C.shm_write_end(self._handle) end
 
--- Runs fn(self) until it ran without a concurrent write; returns fn's results.
+-- Runs fn(self) until it ran without a concurrent write; returns fn's results. A block whose writer
+-- died mid-update is an error naming it and the pid (never a reader spinning for ever).
+local seq_out = ffi.new('uint32_t[1]')
 function Block:read(fn)
   while true do
-    local seq = C.shm_read_begin(self._handle)
+    if C.shm_read_begin_checked(self._handle, seq_out, errbuf, 512) < 0 then error('shm ' .. ffi.string(errbuf), 2) end
+    local seq = seq_out[0]
     local a, b, c, d = fn(self)
     if C.shm_read_retry(self._handle, seq) == 0 then return a, b, c, d end
   end

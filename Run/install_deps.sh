@@ -11,6 +11,7 @@ DEBIAN_PACKAGES=(
   libusb-1.0-0-dev liburdfdom-dev libreadline-dev
   clang libclang-rt-14-dev
   libpng-dev libzstd-dev zlib1g-dev python3 python3-venv
+  libturbojpeg0-dev             # the recorder encodes camera frames to JPEG straight from YUYV
   protobuf-c-compiler libprotobuf-c-dev protobuf-compiler libprotobuf-dev
   chromium                      # the live view's tests drive it headless (Tests/view, Playwright)
 )

@@ -52,7 +52,9 @@ typedef struct shm_header {
   uint8_t pad0[64 - ((8 + 4 + 4 + 8 + 8 + 4 + 4 + 4 + 4 + 4 + 4 + 8 + SHM_NAME_MAX) % 64)];
   uint32_t seq;               /* sequence lock: odd while a writer is inside (own cache line) */
   uint32_t writes;            /* completed locked writes; futex word for shm_wait_write */
-  uint8_t pad1[256 - 128 - 8];
+  int32_t writer_pid;         /* the process inside the sequence lock (0: none, or not yet known) */
+  uint32_t reserved;
+  uint8_t pad1[256 - 128 - 16];
 } shm_header;
 
 /* One entry of the field table. 64 bytes. */
@@ -128,6 +130,14 @@ void shm_write_begin(shm_block *b);
 void shm_write_end(shm_block *b);
 uint32_t shm_read_begin(const shm_block *b);   /* waits while a write is in progress */
 int shm_read_retry(const shm_block *b, uint32_t seq);  /* 1: the read was torn, read again */
+/* Like shm_read_begin, but a writer that died mid-update (the sequence odd for SHM_STALE_S while its
+ * writer_pid is no process) does not hold the reader: -EOWNERDEAD and a message naming the block and
+ * the pid ("block 'dcm.sensor' is stale: its writer (pid 1234) died mid-update"). A live writer is
+ * waited for however long it takes. 0 and *seq otherwise. shm_read_begin itself returns the odd
+ * sequence then (the read is of a half-written block; it says so once on stderr) rather than spinning
+ * for ever; the next writer takes the lock over and the block is whole again. */
+#define SHM_STALE_S 0.02
+int shm_read_begin_checked(const shm_block *b, uint32_t *seq, char *err, size_t errlen);
 
 /* Blocks until the block's completed-write counter differs from `last` or timeout_s passes
  * (futex on the segment). Returns the current counter. */

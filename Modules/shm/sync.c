@@ -4,7 +4,10 @@
 #include <errno.h>
 #include <linux/futex.h>
 #include <math.h>
+#include <pthread.h>
 #include <sched.h>
+#include <stdio.h>
+#include <string.h>
 #include <sys/syscall.h>
 #include <time.h>
 #include <unistd.h>
@@ -30,8 +33,19 @@ static void cpu_relax(void) {
 #endif
 }
 
+/* this process's pid for writer_pid, without a system call per write (glibc no longer caches it);
+ * a forked child finds it afresh */
+static int32_t g_pid;
+static void forget_pid(void) { g_pid = 0; }
+static void __attribute__((constructor)) pid_init(void) { pthread_atfork(NULL, NULL, forget_pid); }
+static int32_t my_pid(void) {
+  if (!g_pid) g_pid = (int32_t)getpid();
+  return g_pid;
+}
+
 void shm_write_begin(shm_block *b) {
-  uint32_t *seq = &shm_block_header(b)->seq;
+  shm_header *h = shm_block_header(b);
+  uint32_t *seq = &h->seq;
   double stuck_since = 0;
   uint32_t stuck_value = 0;
   for (unsigned spins = 0;; spins++) {
@@ -53,6 +67,9 @@ void shm_write_begin(shm_block *b) {
       cpu_relax();
     }
   }
+  /* who is inside, for readers that wait too long (shm_read_begin_checked); set once the lock is
+   * ours, so a reader that sees 0 knows only that a writer is just coming in */
+  __atomic_store_n(&h->writer_pid, my_pid(), __ATOMIC_RELAXED);
   SEQ_FENCE(seq, __ATOMIC_RELEASE);
 }
 
@@ -62,19 +79,42 @@ static long futex(volatile uint32_t *addr, int op, uint32_t val, const struct ti
 
 void shm_write_end(shm_block *b) {
   shm_header *h = shm_block_header(b);
+  __atomic_store_n(&h->writer_pid, 0, __ATOMIC_RELAXED);
   __atomic_fetch_add(&h->seq, 1u, __ATOMIC_RELEASE);
   __atomic_fetch_add(&h->writes, 1u, __ATOMIC_RELEASE);
   if (__atomic_load_n(&h->waiters, __ATOMIC_ACQUIRE)) futex(&h->writes, FUTEX_WAKE, 0x7fffffff, NULL);
 }
 
-uint32_t shm_read_begin(const shm_block *b) {
-  const uint32_t *seq = &shm_block_header((shm_block *)b)->seq;
+/* gone, or a zombie nobody reaped yet (it will never write again either) */
+static int pid_dead(int pid) {
+  if (!shm_pid_alive(pid)) return 1;
+  char path[32], buf[256];
+  snprintf(path, sizeof path, "/proc/%d/stat", pid);
+  FILE *f = fopen(path, "r");
+  if (!f) return 0;
+  const size_t n = fread(buf, 1, sizeof buf - 1, f);
+  fclose(f);
+  buf[n] = 0;
+  const char *p = strrchr(buf, ')');   /* "pid (comm) S ...": comm may hold anything */
+  return p && p[1] == ' ' && p[2] == 'Z';
+}
+
+int shm_read_begin_checked(const shm_block *b, uint32_t *out, char *err, size_t errlen) {
+  shm_header *h = shm_block_header((shm_block *)b);
+  const uint32_t *seq = &h->seq;
+  uint32_t stuck_value = 0;
+  double stuck_since = 0;
   for (unsigned spins = 0;; spins++) {
     uint32_t s = __atomic_load_n(seq, __ATOMIC_ACQUIRE);
-    if (!(s & 1u)) return s;
+    if (!(s & 1u)) {
+      *out = s;
+      return 0;
+    }
     if (spins % 256 != 255) {
       cpu_relax();
-    } else if (spins < 16 * 256) {
+      continue;
+    }
+    if (spins < 16 * 256) {
       sched_yield();
     } else {
       /* still mid-write: the writer was preempted, maybe by this reader. Under SCHED_FIFO a
@@ -84,7 +124,36 @@ uint32_t shm_read_begin(const shm_block *b) {
       struct timespec ts = { 0, 20000 };
       nanosleep(&ts, NULL);
     }
+    /* the same odd value for SHM_STALE_S: is anyone still writing? */
+    const double now = shm_now();
+    if (s != stuck_value || stuck_since == 0) {
+      stuck_value = s;
+      stuck_since = now;
+    } else if (now - stuck_since > SHM_STALE_S) {
+      const int32_t pid = __atomic_load_n(&h->writer_pid, __ATOMIC_RELAXED);
+      if (pid > 0 && pid_dead(pid) && __atomic_load_n(seq, __ATOMIC_ACQUIRE) == s) {
+        *out = s;
+        if (err && errlen)
+          snprintf(err, errlen, "block '%s' is stale: its writer (pid %d) died mid-update", h->block, (int)pid);
+        return -EOWNERDEAD;
+      }
+      stuck_since = now;   /* alive (or not yet known): look again in a while */
+    }
   }
+}
+
+uint32_t shm_read_begin(const shm_block *b) {
+  uint32_t s;
+  char err[160];
+  if (shm_read_begin_checked(b, &s, err, sizeof err) < 0) {
+    /* said once per stuck sequence value of a block: a reader polling it is not a flood */
+    static __thread const void *said_block;
+    static __thread uint32_t said_seq;
+    if (said_block != b || said_seq != s) fprintf(stderr, "shm: %s: read as it is\n", err);
+    said_block = b;
+    said_seq = s;
+  }
+  return s;
 }
 
 int shm_read_retry(const shm_block *b, uint32_t s) {

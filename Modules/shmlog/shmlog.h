@@ -71,6 +71,13 @@ size_t shmlog_image_encode(uint64_t stamp_ns, const char *frame_id, const char *
 int shmlog_image_decode(const uint8_t *msg, size_t len, char *format, size_t formatlen, const uint8_t **data,
                         size_t *datalen);
 
+/* ---- a UDP datagram as a process read it (packet.c): hrp/msg/Packet */
+extern const char SHMLOG_PACKET_TYPE[];  /* "hrp/msg/Packet" */
+extern const char SHMLOG_PACKET_DEF[];
+/* Encodes one datagram into out (capacity cap); returns its size or 0 if it does not fit. */
+size_t shmlog_packet_encode(double time, const char *source, const char *host, uint16_t port, const uint8_t *data,
+                            size_t len, uint8_t *out, size_t cap);
+
 #ifdef __cplusplus
 }
 #endif

@@ -19,6 +19,7 @@ local act = require('Behavior.act')
 local Team = require('Team.team')
 local roles = require('Team.roles')
 local param = require('param')
+local netlog = require('netlog')
 
 local M = {}
 
@@ -76,6 +77,14 @@ function M.new(opts)
   if team.socket_error then
     io.stderr:write('behavior: team communication disabled: ', team.socket_error, '\n')
   end
+  -- every datagram read, raw, into net.packets for the recorder
+  local packets, perr = netlog.open()
+  if packets then
+    if gc.sock then gc.sock.tap = packets:tap(netlog.GAMECONTROLLER) end
+    if team.sock then team.sock.tap = packets:tap(netlog.TEAM) end
+  else
+    io.stderr:write('behavior: received packets are not logged: ', perr, '\n')
+  end
   local wcfg = setmetatable({}, { __index = cfg.world })
   wcfg.seed = tonumber(os.getenv('HRP_SEED') or '') or cfg.world.seed
   local blocks = { world = shm.open('world'), game = shm.open('game'), vision = shm.open('vision'),
@@ -85,7 +94,7 @@ function M.new(opts)
     cfg = cfg, rules = rules, gc = gc, team = team, world = World.new(wcfg),
     body = machine('BodyFSM'), head = machine('HeadFSM'),
     game = machine('GameFSM', prev and (prev.penalized and 'penalized' or prev.state)),
-    blocks = blocks, vision_time = -1, vision_time_changed = nil, steps = 0, resumed = prev,
+    blocks = blocks, packets = packets, vision_time = -1, vision_time_changed = nil, steps = 0, resumed = prev,
   }, Behavior)
   if prev then
     gc:resume(prev.state, prev.penalized)
@@ -118,6 +127,7 @@ function Behavior:step()
   local t = Body.get_time()
   local ctx = self.ctx
   ctx.t = t
+  if self.packets then self.packets.t = t end
   local m = self.blocks.motion
   local odom = { m.odometry[0], m.odometry[1], m.odometry[2] }
   local vis = self:read_vision()

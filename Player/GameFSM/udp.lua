@@ -100,14 +100,17 @@ end
 local src_bytes = ffi.cast('uint8_t *', src)
 
 -- Next pending datagram as a string and its sender's address (dotted quad) and port, or nil when
--- none is waiting. A datagram longer than the buffer (4096 bytes) arrives cut to it.
+-- none is waiting. A datagram longer than the buffer (4096 bytes) arrives cut to it. Each one read
+-- goes to self.tap(data, host, port) when set (Lib/netlog.lua: the recorder's copy).
 function Socket:receive()
   srclen[0] = ffi.sizeof(src)
   local n = C.recvfrom(self.fd, buf, buf_size, MSG_DONTWAIT, src, srclen)
   if n < 0 then return nil end
   local a = src_bytes + 4 -- the address, in network order
-  return ffi.string(buf, n), string.format('%d.%d.%d.%d', a[0], a[1], a[2], a[3]),
-    src_bytes[2] * 256 + src_bytes[3]
+  local data = ffi.string(buf, n)
+  local host, port = string.format('%d.%d.%d.%d', a[0], a[1], a[2], a[3]), src_bytes[2] * 256 + src_bytes[3]
+  if self.tap then self.tap(data, host, port) end
+  return data, host, port
 end
 
 -- Sends `data` to host:port (host as dotted quad); true or nil and a message.

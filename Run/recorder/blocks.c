@@ -63,7 +63,7 @@ int rec_blocks_open(rec_blocks *bs, const rec_opts *o, char *err, size_t errlen)
   if (rc < 0) return rc;
   for (int i = 0; i < shm_schema_nblocks(bs->schema); i++) {
     const char *name = shm_schema_block_name(bs->schema, i);
-    if (excluded(o, name)) continue;
+    if (excluded(o, name) || !strcmp(name, REC_PACKETS_BLOCK)) continue;   /* packets.c takes that one */
     if (bs->n >= REC_BLOCKS_MAX) {
       snprintf(err, errlen, "recorder: more than %d blocks", REC_BLOCKS_MAX);
       return -EINVAL;
@@ -92,17 +92,28 @@ void rec_blocks_close(rec_blocks *bs) {
   bs->schema = NULL;
 }
 
-/* The message's fields (and the frame into `frame` when given) from the segment, one consistent read. */
-static void snap(rec_block *rb, uint8_t *frame) {
+/* The message's fields (and the frame into `frame` when given) from the segment, one consistent read;
+ * -1 when the block's writer died mid-update (said once, the block left out until it is whole again). */
+static int snap(rec_block *rb, uint8_t *frame) {
   const uint8_t *seg = (const uint8_t *)shm_block_header(rb->blk);
+  /* still as its dead writer left it: no need to wait SHM_STALE_S again on every tick */
+  if (rb->stale && __atomic_load_n(&shm_block_header(rb->blk)->seq, __ATOMIC_ACQUIRE) == rb->stale_seq) return -1;
   for (int tries = 0;; tries++) {
-    const uint32_t seq = shm_read_begin(rb->blk);
+    uint32_t seq;
+    char err[200];
+    if (shm_read_begin_checked(rb->blk, &seq, err, sizeof err) < 0) {
+      if (!rb->stale) fprintf(stderr, "hrp_record: %s: not recorded until it is written again\n", err);
+      rb->stale = 1;
+      rb->stale_seq = seq;
+      return -1;
+    }
+    rb->stale = 0;
     for (int i = 0; i < rb->msg.nfields; i++) {
       const shmlog_field *f = &rb->msg.field[i];
       memcpy(rb->now + f->shm_offset, seg + f->shm_offset, type_size(f->type) * (size_t)f->count);
     }
     if (frame) memcpy(frame, seg + rb->frame_offset, rb->frame_bytes);
-    if (!shm_read_retry(rb->blk, seq) || tries > 100) return;
+    if (!shm_read_retry(rb->blk, seq) || tries > 100) return 0;
   }
 }
 
@@ -130,7 +141,7 @@ int rec_blocks_sample(rec_blocks *bs, rec_queue *q, struct rec_history *h, uint6
   int queued = 0;
   for (int i = 0; i < bs->n; i++) {
     rec_block *rb = &bs->b[i];
-    snap(rb, NULL);
+    if (snap(rb, NULL) < 0) continue;
     if (i == bs->sensor) {
       /* the pass is stamped with the sensor time of the copy itself (dcm.sensor comes first) */
       double t;
@@ -142,8 +153,11 @@ int rec_blocks_sample(rec_blocks *bs, rec_queue *q, struct rec_history *h, uint6
     if (rb->has_frame) {
       /* a new frame: its pixels and its fields from one read */
       frame = item(REC_ITEM_FRAME, i, log_time, wall_ns, rb->frame_bytes);
+      if (frame && snap(rb, frame->data) < 0) {
+        free(frame);
+        frame = NULL;
+      }
       if (frame) {
-        snap(rb, frame->data);
         memcpy(&frame->width, rb->now + rb->width_off, 4);
         memcpy(&frame->height, rb->now + rb->height_off, 4);
         if ((size_t)frame->width * (size_t)frame->height * 2 > rb->frame_bytes || frame->width <= 0 ||

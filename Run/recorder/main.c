@@ -88,6 +88,7 @@ int main(int argc, char **argv) {
   static rec_queue q;
   static rec_history hist;
   static rec_observer ob;
+  static rec_packets pk;
   char err[1024];
   const char *dir = NULL, *camera = NULL;
   double file_mb = 0, total_mb = 0;
@@ -162,6 +163,8 @@ int main(int argc, char **argv) {
     if (dcm_config_num(rcfg, "period", &period, err, sizeof err) < 0) period = 0;
     dcm_config_free(rcfg);
   }
+  if (rec_packets_open(&pk, bs.schema, o.robot_id, err, sizeof err) < 0)
+    fprintf(stderr, "hrp_record: %s (no GameController or team packets)\n", err);
   if (rec_history_open(&hist, &bs, &o, period, err, sizeof err) < 0) fprintf(stderr, "hrp_record: %s (no history)\n", err);
   if (lockstep && rec_observer_join(&ob, bs.schema, o.robot_id, err, sizeof err) < 0) {
     fprintf(stderr, "hrp_record: %s\n", err);
@@ -196,7 +199,9 @@ int main(int argc, char **argv) {
         have_tick = 1;
       }
       const double t = *time_p;
-      rec_blocks_sample(&bs, &q, &hist, t > 0 ? (uint64_t)(t * 1e9 + 0.5) : 0, wall_ns());
+      const uint64_t log_time = t > 0 ? (uint64_t)(t * 1e9 + 0.5) : 0, wall = wall_ns();
+      if (rec_blocks_sample(&bs, &q, &hist, log_time, wall) + rec_packets_sample(&pk, &q, log_time, wall) > 0)
+        rec_queue_tick_end(&q);
       if (observed) rec_observer_done(&ob, observed);
     }
     const double now = shm_now();
@@ -230,13 +235,16 @@ int main(int argc, char **argv) {
   *s_pid = 0;
   if (rc < 0) fprintf(stderr, "hrp_record: %s\n", err);
   rec_history_close(&hist);
+  rec_packets_close(&pk);
   rec_blocks_close(&bs);
   rec_config_free(docs, ndocs);
   printf("hrp_record: %.1f s: %llu messages, %llu camera frames, %llu bytes in %llu file(s) = %.0f bytes/s; "
-         "dropped %llu, missed ticks %llu; cpu %.3f s = %.2f%% of one core (JPEG %.2f ms/frame)\n",
+         "dropped %llu, missed ticks %llu; packets %llu, lost %llu; cpu %.3f s = %.2f%% of one core "
+         "(JPEG %.2f ms/frame)\n",
          elapsed, (unsigned long long)f.messages, (unsigned long long)f.frames, (unsigned long long)f.bytes,
          (unsigned long long)f.files, (double)f.bytes / elapsed, (unsigned long long)rec_queue_dropped(&q),
-         (unsigned long long)missed, cpu, 100 * cpu / elapsed, f.frames ? 1e3 * f.jpeg_cpu / (double)f.frames : 0.0);
+         (unsigned long long)missed, (unsigned long long)pk.taken, (unsigned long long)pk.lost, cpu,
+         100 * cpu / elapsed, f.frames ? 1e3 * f.jpeg_cpu / (double)f.frames : 0.0);
   shm_block_close(stats);
   return rc < 0 ? 1 : 0;
 }

@@ -36,7 +36,10 @@ int rec_queue_push(rec_queue *q, rec_item *it) {
   else q->head = it;
   q->tail = it;
   q->bytes += it->len;
-  pthread_cond_signal(&q->cv);
+  /* the writer is woken once per sample, at its tick-end mark, not for each of its messages (a wake-up
+   * per message was a context switch per block per tick); in lockstep, where the sampler may wait for
+   * room, for each */
+  if (it->kind == REC_ITEM_TICK_END || q->wait_for_room) pthread_cond_signal(&q->cv);
   pthread_mutex_unlock(&q->mu);
   return 0;
 }
@@ -62,6 +65,13 @@ rec_item *rec_queue_pop(rec_queue *q, double timeout_s) {
   }
   pthread_mutex_unlock(&q->mu);
   return it;
+}
+
+void rec_queue_tick_end(rec_queue *q) {
+  rec_item *it = (rec_item *)calloc(1, sizeof *it);
+  if (!it) return;
+  it->kind = REC_ITEM_TICK_END;
+  rec_queue_push(q, it);   /* 0 bytes: takes no room; a closed queue frees it */
 }
 
 void rec_queue_close(rec_queue *q) {

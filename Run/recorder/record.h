@@ -44,11 +44,14 @@ typedef struct rec_opts {
 } rec_opts;
 
 /* ---- one queued message */
-enum { REC_ITEM_BLOCK = 0, REC_ITEM_FRAME = 1 };
+/* REC_ITEM_TICK_END (no data) follows the items of one sample: files are rotated only there, so a tick
+ * is never split across two files */
+enum { REC_ITEM_BLOCK = 0, REC_ITEM_FRAME = 1, REC_ITEM_PACKET = 2, REC_ITEM_TICK_END = 3 };
 typedef struct rec_item {
   struct rec_item *next;
   int kind;
-  int channel;             /* block index (REC_ITEM_BLOCK), or the camera block's index */
+  int channel;             /* block index (REC_ITEM_BLOCK), the camera block's index, or for a packet
+                              0 GameController, 1 team */
   uint64_t log_time;       /* ns, robot clock */
   uint64_t publish_time;   /* ns, wall clock */
   int width, height;       /* REC_ITEM_FRAME */
@@ -74,6 +77,8 @@ int rec_queue_push(rec_queue *q, rec_item *it);
 /* The oldest item, waiting up to timeout_s; NULL on timeout or when closed and empty. */
 rec_item *rec_queue_pop(rec_queue *q, double timeout_s);
 void rec_queue_close(rec_queue *q);
+/* Marks the end of a sample's items (a REC_ITEM_TICK_END item). */
+void rec_queue_tick_end(rec_queue *q);
 uint64_t rec_queue_dropped(rec_queue *q);
 
 /* ---- the blocks being recorded */
@@ -86,6 +91,8 @@ typedef struct rec_block {
   uint64_t frame_offset;   /* of the raw field */
   size_t frame_bytes;
   int width_off, height_off; /* offsets of its width / height fields (-1: none) */
+  int stale;               /* its writer died mid-update (shm_read_begin_checked): left out, said once */
+  uint32_t stale_seq;      /* the odd sequence it was left at */
 } rec_block;
 
 typedef struct rec_blocks {
@@ -103,6 +110,24 @@ void rec_blocks_close(rec_blocks *bs);
  * history h, when not NULL). Returns items queued. */
 struct rec_history;
 int rec_blocks_sample(rec_blocks *bs, rec_queue *q, struct rec_history *h, uint64_t log_time, uint64_t wall_ns);
+
+/* ---- the UDP datagrams the behavior read (net.packets, Lib/netlog.lua): channels of their own */
+#define REC_PACKETS_BLOCK "net.packets"
+typedef struct rec_packets {
+  shm_block *blk;
+  const uint32_t *count, *host;
+  const int32_t *source, *length, *port;
+  const double *time;
+  const uint8_t *data;
+  int slots;
+  size_t slot_bytes;
+  uint32_t next;           /* the next datagram number to take */
+  uint64_t taken, lost;    /* recorded; overwritten in the ring before the recorder took them */
+} rec_packets;
+int rec_packets_open(rec_packets *p, shm_schema *schema, int robot_id, char *err, size_t errlen);
+/* Queues the datagrams written since the last call; returns how many. */
+int rec_packets_sample(rec_packets *p, rec_queue *q, uint64_t log_time, uint64_t wall_ns);
+void rec_packets_close(rec_packets *p);
 
 /* ---- the recent past of every small block in shared memory, for history() (Lib/history.lua) */
 typedef struct rec_history {

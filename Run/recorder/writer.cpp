@@ -1,11 +1,8 @@
 // writer: the recorder's writer thread -- queued items into MCAP files (Modules/mcap), camera frames
-// JPEG-compressed through OpenCV, a new file past file_mb, the oldest deleted past total_mb.
+// JPEG-compressed straight from YUYV (jpeg_yuyv.c), a new file past file_mb, the oldest deleted past total_mb.
 #include "record.h"
+#include "jpeg_yuyv.h"
 #include "mcap/mcap.h"
-
-#include <opencv2/core.hpp>
-#include <opencv2/imgcodecs.hpp>
-#include <opencv2/imgproc.hpp>
 
 #include <algorithm>
 #include <atomic>
@@ -31,6 +28,7 @@ struct rec_writer {
   std::string stem;                       // dir/hrp-<id>-<start time>
   int channel[REC_BLOCKS_MAX];
   int frame_channel = -1;
+  int packet_channel[2] = { -1, -1 };     // /gamecontroller, /team.message
   uint32_t seq = 0;
   uint64_t closed_bytes = 0;
   std::atomic<uint64_t> messages{0}, bytes{0}, frames{0}, files{0};
@@ -38,9 +36,10 @@ struct rec_writer {
   double last_flush = 0;
   int rc = 0;
   char err[512] = "";
-  std::vector<uchar> jpeg;
+  rec_jpeg *jpeg = nullptr;
+  bool frame_error_said = false;
   std::vector<uint8_t> buf;
-  cv::Mat bgr;
+  ~rec_writer() { rec_jpeg_free(jpeg); }
 };
 
 static double wall_now() {
@@ -89,6 +88,13 @@ static int begin_file(rec_writer *w) {
       rc = si < 0 ? si : (w->frame_channel = mcap_writer_channel(w->mw, si, topic.c_str(), "cdr", cm, 1));
     }
   }
+  if (rc >= 0) {
+    const int s = mcap_writer_schema(w->mw, SHMLOG_PACKET_TYPE, "ros2msg", SHMLOG_PACKET_DEF, strlen(SHMLOG_PACKET_DEF));
+    const char *gm[] = { "block", REC_PACKETS_BLOCK, "source", "gamecontroller" };
+    const char *tm[] = { "block", REC_PACKETS_BLOCK, "source", "team" };
+    rc = s < 0 ? s : (w->packet_channel[0] = mcap_writer_channel(w->mw, s, "/gamecontroller", "cdr", gm, 2));
+    if (rc >= 0) rc = w->packet_channel[1] = mcap_writer_channel(w->mw, s, "/team.message", "cdr", tm, 2);
+  }
   return rc < 0 ? fail(w, rc, mcap_writer_error(w->mw)) : 0;
 }
 
@@ -136,13 +142,16 @@ static double thread_cpu() {
 
 static int write_frame(rec_writer *w, const rec_item *it) {
   const double c0 = thread_cpu();
-  cv::Mat yuyv(it->height, it->width, CV_8UC2, const_cast<uint8_t *>(it->data));
-  cv::cvtColor(yuyv, w->bgr, cv::COLOR_YUV2BGR_YUYV);
-  w->jpeg.clear();
-  cv::imencode(".jpg", w->bgr, w->jpeg, { cv::IMWRITE_JPEG_QUALITY, w->o.jpeg_quality });
-  w->buf.resize(w->jpeg.size() + 256);
-  const size_t n = shmlog_image_encode(it->log_time, "camera", "jpeg", w->jpeg.data(), w->jpeg.size(), w->buf.data(),
-                                       w->buf.size());
+  const uint8_t *jpeg;
+  size_t len;
+  if (rec_jpeg_encode(w->jpeg, it->data, it->width, it->height, w->o.jpeg_quality, &jpeg, &len) < 0) {
+    // a frame that cannot be encoded is skipped, not the end of the recording; said once
+    if (!w->frame_error_said) fprintf(stderr, "hrp_record: camera frame skipped: %s\n", rec_jpeg_error(w->jpeg));
+    w->frame_error_said = true;
+    return 0;
+  }
+  w->buf.resize(len + 256);
+  const size_t n = shmlog_image_encode(it->log_time, "camera", "jpeg", jpeg, len, w->buf.data(), w->buf.size());
   w->frames++;
   w->jpeg_cpu = w->jpeg_cpu + (thread_cpu() - c0);
   return mcap_writer_message(w->mw, w->frame_channel, w->seq++, it->log_time, it->publish_time, w->buf.data(), n);
@@ -158,11 +167,17 @@ static void *run(void *arg) {
       const bool done = w->q->closed && !w->q->head;
       pthread_mutex_unlock(&w->q->mu);
       if (done) break;
+    } else if (it->kind == REC_ITEM_TICK_END) {
+      // a tick is whole: the place to begin a new file, so that no tick is split across two (the open
+      // chunk counted at its uncompressed size; a file passes file_mb by at most one tick's messages)
+      if (w->rc == 0 && (double)(mcap_writer_size(w->mw) + mcap_writer_pending(w->mw)) > w->o.file_mb * 1e6) {
+        if (end_file(w) == 0 && begin_file(w) == 0) enforce_total(w);
+      }
     } else if (w->rc == 0) {
+      const int ch = it->kind == REC_ITEM_PACKET ? w->packet_channel[it->channel] : w->channel[it->channel];
       const int rc = it->kind == REC_ITEM_FRAME
                          ? write_frame(w, it)
-                         : mcap_writer_message(w->mw, w->channel[it->channel], w->seq++, it->log_time,
-                                               it->publish_time, it->data, it->len);
+                         : mcap_writer_message(w->mw, ch, w->seq++, it->log_time, it->publish_time, it->data, it->len);
       if (rc < 0) fail(w, rc, mcap_writer_error(w->mw));
       w->messages++;
     }
@@ -171,10 +186,6 @@ static void *run(void *arg) {
     if (wall_now() - w->last_flush >= w->o.flush_s) {
       if (mcap_writer_flush(w->mw) < 0) fail(w, -EIO, mcap_writer_error(w->mw));
       w->last_flush = wall_now();
-    }
-    // the open chunk counted at its uncompressed size: a file ends at most one chunk short of file_mb
-    if ((double)(mcap_writer_size(w->mw) + mcap_writer_pending(w->mw)) > w->o.file_mb * 1e6) {
-      if (end_file(w) == 0 && begin_file(w) == 0) enforce_total(w);
     }
     w->bytes = w->closed_bytes + (w->mw ? mcap_writer_size(w->mw) : 0);
   }
@@ -194,10 +205,12 @@ static int mkdirs(const char *dir) {
 
 extern "C" int rec_writer_start(rec_writer **out, const rec_opts *o, const rec_blocks *bs, rec_queue *q,
                                 const rec_doc *docs, int ndocs, char *err, size_t errlen) {
-  // the colour conversion and JPEG run on the writer's own thread: OpenCV's thread pool for a
-  // 640x480 conversion only added hand-offs and wake-ups (seen in perf) on a machine the robot needs
-  cv::setNumThreads(1);
   rec_writer *w = new rec_writer();
+  if (!(w->jpeg = rec_jpeg_new())) {
+    snprintf(err, errlen, "recorder: cannot make a JPEG encoder (TurboJPEG)");
+    delete w;
+    return -ENOMEM;
+  }
   w->o = *o;
   w->bs = bs;
   w->q = q;

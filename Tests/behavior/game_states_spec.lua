@@ -59,6 +59,28 @@ describe('behavior under a GameController', function()
     assert.are.equal(1, game.packets[0])
   end)
 
+  it('copies each GameController packet it reads, raw, into net.packets for the recorder', function()
+    local ring = shm.open('net.packets')
+    local before = ring.written[0]
+    local data = packet.build({ state = packet.STATE.initial, packet_number = 2, kickoff_team = 1,
+      teams = { { number = 9 }, { number = 1 } } })
+    assert(tx:send(data, '127.0.0.1', port))
+    run(0.1)
+    -- the new entries: this packet, and the robot's own team broadcasts heard back (source 2)
+    local gc_slots = {}
+    for k = before, ring.written[0] - 1 do
+      local slot = k % ring:count('source')
+      if ring.source[slot] == 1 then gc_slots[#gc_slots + 1] = slot end
+    end
+    assert.are.equal(1, #gc_slots)
+    local slot = gc_slots[1]
+    local size = ring:count('data') / ring:count('source')
+    assert.are.equal(#data, ring.length[slot])
+    assert.are.equal(data, require('ffi').string(ring.data + slot * size, ring.length[slot]))
+    assert.are.equal(127 * 2 ^ 24 + 1, ring.host[slot])
+    assert.is_true(ring.time[slot] >= 100) -- the robot clock when the behavior read it
+  end)
+
   it('walks to its position in ready', function()
     send(packet.STATE.ready)
     run(1)

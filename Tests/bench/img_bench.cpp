@@ -12,7 +12,8 @@
 // The LUT is built from the same colour boxes, aligned to its 4-level cells, so both label
 // images are identical; the program checks that and that both find the same ball.
 //
-// Usage: img_bench [seconds per measurement, default 2]
+// The two versions are timed in alternating batches (a shared machine's changing load hits both alike).
+// Usage: img_bench [seconds per version and frame, default 2]
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 
@@ -22,6 +23,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <ctime>
 #include <random>
 #include <vector>
 
@@ -44,6 +46,12 @@ const int kNColors = 3;
 
 double now() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+double cpu_now() {
+  timespec ts;
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
 // A field scene: noisy green carpet, white lines, a white post, an orange ball.
@@ -158,19 +166,29 @@ struct Cv {
   }
 };
 
-template <class P>
-double measure(P &p, const std::vector<uint8_t> &frame, double seconds, long *frames) {
+// Both versions timed in alternating batches of 20 frames until `seconds` passed, each side's time summed:
+// on a shared machine whose load changes during the run, both see the same load. The time is this
+// thread's CPU time: the wall clock would count the time other processes had the core.
+void measure(Hrp &hrp, Cv &ocv, const std::vector<uint8_t> &frame, double seconds, double *fh, double *fc, long *nh,
+             long *nc) {
   volatile int sink = 0;
+  double th = 0, tc = 0;
   long n = 0;
-  double t0 = now(), t;
+  const double start = now();
   do {
-    for (int i = 0; i < 50; i++) sink += p.run(frame.data()).ball_area;
-    n += 50;
-    t = now();
-  } while (t - t0 < seconds);
+    double t0 = cpu_now();
+    for (int i = 0; i < 20; i++) sink += hrp.run(frame.data()).ball_area;
+    double t1 = cpu_now();
+    for (int i = 0; i < 20; i++) sink += ocv.run(frame.data()).ball_area;
+    double t2 = cpu_now();
+    th += t1 - t0;
+    tc += t2 - t1;
+    n += 20;
+  } while (now() - start < seconds);
   (void)sink;
-  *frames = n;
-  return n / (t - t0);
+  *nh = *nc = n;
+  *fh = n / th;
+  *fc = n / tc;
 }
 
 void bench(const char *name, const std::vector<uint8_t> &frame, double seconds) {
@@ -184,8 +202,8 @@ void bench(const char *name, const std::vector<uint8_t> &frame, double seconds) 
                    a.ball_stats_area == b.ball_stats_area && a.green_below == b.green_below &&
                    a.white_regions == b.white_regions;
   long nh, nc;
-  double fh = measure(hrp, frame, seconds, &nh);
-  double fc = measure(ocv, frame, seconds, &nc);
+  double fh, fc;
+  measure(hrp, ocv, frame, 2 * seconds, &fh, &fc, &nh, &nc);
   std::printf("%-12s hrp %9.0f fps (%6.3f ms/frame, %ld frames)   opencv %8.0f fps (%6.3f ms/frame)   "
               "ratio %.2fx\n", name, fh, 1e3 / fh, nh, fc, 1e3 / fc, fh / fc);
   std::printf("%-12s same labels: %s, same blocks: %s, same regions/stats: %s "
@@ -200,7 +218,7 @@ int main(int argc, char **argv) {
   double seconds = argc > 1 ? std::atof(argv[1]) : 2.0;
   cv::setNumThreads(1);   // one core for both
   std::printf("vision pipeline, 640x480 YUYV -> 320x240 labels -> 80x60 blocks -> regions -> stats, "
-              "one thread (OpenCV %s, setNumThreads(1))\n", CV_VERSION);
+              "one thread (OpenCV %s, setNumThreads(1)), thread CPU time\n", CV_VERSION);
   bench("field scene", make_scene(1), seconds);
   bench("noise frame", make_noise(2), seconds);
   return 0;

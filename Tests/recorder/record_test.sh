@@ -50,18 +50,24 @@ wait $rec
 files=$(ls "$rot" | grep -c '\.mcap$')
 begun=$(sed -n 's/.* in \([0-9]*\) file(s).*/\1/p' "$dir/rot.out")
 total=$(du -cb "$rot"/*.mcap | tail -1 | cut -f1)
-whole=$(python3 -c "
+read -r whole split < <(python3 -c "
 import sys, glob
 from mcap.reader import make_reader
 ok = msgs = 0
+seen = []   # the ticks (log times) of each file: a tick split across two files would be in both
 for p in glob.glob(sys.argv[1] + '/*.mcap'):
     with open(p, 'rb') as f:
         r = make_reader(f)
         ok += r.get_summary() is not None
-        msgs += sum(1 for _ in r.iter_messages())
-print(ok if msgs else -1)" "$rot")
-echo "# rotation: ${begun:-0} files begun, $files kept, $total bytes, $whole whole"
+        times = set(m.log_time for _, _, m in r.iter_messages())
+        msgs += len(times)
+        seen.append(times)
+split = sum(len(a & b) for i, a in enumerate(seen) for b in seen[i + 1:])
+print(ok if msgs else -1, split)" "$rot")
+echo "# rotation: ${begun:-0} files begun, $files kept, $total bytes, $whole whole, $split ticks in two files"
 [ "${begun:-0}" -ge 3 ] && [ "$files" -lt "${begun:-0}" ] && [ "$total" -le 210000 ] && [ "$whole" -eq "$files" ]
 res $? "rotation: a new file past file_mb, the oldest deleted past total_mb, every file kept is whole"
+[ "$split" = 0 ]
+res $? "rotation never splits a tick: no robot time is in two files"
 echo "1..$n"
 [ "$fails" -eq 0 ]

@@ -2,6 +2,7 @@
  * Each function is checked against a slow, obvious reference on seeded random images. TAP. */
 #include "imageproc/imageproc.h"
 #include "tap.h"
+#include "regions_oracle.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -281,12 +282,51 @@ static void test_stats(void) {
   free(lab);
 }
 
+/* img_regions gives what the previous version gave, bit for bit (regions_oracle.h), on seeded random
+ * label images of widths around the 8- and 64-pixel words it now works in, many densities and masks */
+static void test_regions_unchanged(void) {
+  const int sizes[][2] = { { 320, 240 }, { 80, 60 }, { 161, 77 }, { 63, 5 }, { 64, 3 }, { 65, 9 }, { 1, 10 },
+                           { 129, 31 }, { 7, 1 } };
+  const int densities[] = { 1, 10, 30, 50, 70, 95, 100 };
+  img_cc *cc = img_cc_new(320, 240);
+  img_region *a = malloc(sizeof(img_region) * 320 * 240), *b = malloc(sizeof(img_region) * 320 * 240);
+  uint8_t *lab = malloc(320 * 240);
+  int cases = 0, same = 0;
+  for (size_t s = 0; s < sizeof sizes / sizeof sizes[0]; s++)
+    for (size_t d = 0; d < sizeof densities / sizeof densities[0]; d++)
+      for (int trial = 0; trial < 3; trial++) {
+        const int w = sizes[s][0], h = sizes[s][1];
+        for (int i = 0; i < w * h; i++) {
+          const uint8_t any = (uint8_t)(1u << (rnd() % 8));
+          lab[i] = (int)(rnd() % 100) < densities[d] ? (uint8_t)(any | 1) : (uint8_t)(any & ~1u);
+        }
+        const uint8_t mask = trial == 2 ? 0x81 : 1;
+        for (int maxn = 0; maxn <= 8; maxn += 8) {
+          memset(a, 0x5a, sizeof(img_region) * 8);
+          memset(b, 0x5a, sizeof(img_region) * 8);
+          const int na = img_regions(cc, lab, w, h, mask, a, maxn), nb = oracle_regions(lab, w, h, mask, b, maxn);
+          cases++;
+          same += na == nb && memcmp(a, b, sizeof(img_region) * (size_t)(maxn < na ? maxn : na)) == 0;
+        }
+        /* all of them: the whole list in the same order */
+        const int na = img_regions(cc, lab, w, h, mask, a, w * h), nb = oracle_regions(lab, w, h, mask, b, w * h);
+        cases++;
+        same += na == nb && memcmp(a, b, sizeof(img_region) * (size_t)na) == 0;
+      }
+  char name[120];
+  snprintf(name, sizeof name, "regions are the previous version's, bit for bit (%d of %d cases)", same, cases);
+  check(same == cases, name);
+  free(a); free(b); free(lab);
+  img_cc_free(cc);
+}
+
 int main(void) {
   test_lut_files();
   test_ranges();
   test_label();
   test_block_or();
   test_regions();
+  test_regions_unchanged();
   test_stats();
   return tap_done();
 }

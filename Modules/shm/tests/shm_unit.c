@@ -11,8 +11,14 @@
 #include <sys/mman.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
+#include <time.h>
 #include <unistd.h>
 
+
+static void shm_sleep_s(double s) {
+  struct timespec ts = { (time_t)s, (long)((s - (double)(time_t)s) * 1e9) };
+  nanosleep(&ts, NULL);
+}
 
 static char dir[256];
 static const char *write_file(const char *name, const char *text) {
@@ -233,13 +239,51 @@ static void test_dead_writer(void) {
     shm_write_begin(wb);
     _exit(0);   /* dies mid-update */
   }
-  waitpid(pid, NULL, 0);
-  check(shm_block_header(b)->seq & 1u, "seq is odd after a writer died inside");
+  /* readers: not spinning for ever on it, first while it is an unreaped zombie, then gone */
+  while (!(shm_block_header(b)->seq & 1u)) shm_sleep_s(0.001);
+  shm_sleep_s(0.05);   /* dead by now (it only had _exit left to do) */
+  uint32_t q = 0;
+  char why[200] = "";
   double t0 = shm_now();
+  int rc = shm_read_begin_checked(b, &q, why, sizeof why);
+  char pidname[32];
+  snprintf(pidname, sizeof pidname, "pid %d", (int)pid);
+  printf("# %s (%.0f ms)\n", why, 1e3 * (shm_now() - t0));
+  check(rc == -EOWNERDEAD && strstr(why, "'t.a'") && strstr(why, pidname) && shm_now() - t0 < 1.0,
+        "a reader of a block whose writer died mid-update (a zombie yet) returns: stale, block and pid named");
+  waitpid(pid, NULL, 0);
+  t0 = shm_now();
+  rc = shm_read_begin_checked(b, &q, why, sizeof why);
+  check(rc == -EOWNERDEAD && shm_now() - t0 < 1.0, "... and once it is reaped");
+  t0 = shm_now();
+  q = shm_read_begin(b);
+  check((q & 1u) && shm_now() - t0 < 1.0, "shm_read_begin returns too (the odd sequence) instead of spinning");
+  check(shm_block_header(b)->seq & 1u, "seq is odd after a writer died inside");
+  t0 = shm_now();
   shm_write_begin(b);
   shm_write_end(b);
   double dt = shm_now() - t0;
   check(!(shm_block_header(b)->seq & 1u) && dt < 1.0, "next writer takes over and completes");
+  check(shm_read_begin_checked(b, &q, why, sizeof why) == 0, "the block reads whole again");
+
+  /* a live writer inside for 150 ms is waited for, not called stale */
+  pid = fork();
+  if (pid == 0) {
+    shm_block *wb = NULL;
+    char e2[256];
+    shm_block_open(s, "t.a", robot, 0, &wb, e2, sizeof e2);
+    shm_write_begin(wb);
+    shm_sleep_s(0.15);
+    shm_write_end(wb);
+    _exit(0);
+  }
+  while (!(shm_block_header(b)->seq & 1u) && !waitpid(pid, NULL, WNOHANG)) shm_sleep_s(0.0005);
+  t0 = shm_now();
+  rc = shm_read_begin_checked(b, &q, why, sizeof why);
+  dt = shm_now() - t0;
+  printf("# a live writer inside: the reader waited %.0f ms\n", 1e3 * dt);
+  check(rc == 0 && !(q & 1u) && dt > 0.05, "a live writer that takes long is waited for");
+  waitpid(pid, NULL, 0);
   shm_block_close(b);
   shm_block_unlink("t.a", robot);
   shm_schema_free(s);
