@@ -109,6 +109,43 @@ return {
       { duration = 0.45 },
     },
   },
+  -- kicks out of the walk (Player/Motion/walk_kick.lua): the kicking foot's swing on a longer step,
+  -- the COM plan and the support foot walking on. The foot's striking face from the URDF's sole
+  -- plate (l_ank_roll_link): its front 0.063 m ahead of the sole point, its outer edge 0.052 m
+  -- outward; the ball's radius 0.07 m, met about 0.06 m above the ground (contact x, y: face +
+  -- the ball's depth at that height). The strike is a short phase: the servos run at their speed
+  -- limit (4.8 rad/s) through it. Way-points relative to the contact point (see walk_kick.lua).
+  walkKick = {
+    expire = 1.0,            -- s: a request no step honoured by then is dropped
+    forward = {
+      tStep = 0.5, phSingle = { 0.1, 0.9 },
+      ball = { x = 0.19, y = 0.013 },
+      contact = { x = 0.13, y = 0.013 },
+      reach = { x = { -0.08, 0.16 }, y = { 0.07, 0.16 } },
+      support = { x = 0.0, y = 0.0 },
+      phases = {
+        { duration = 0.06, x = -0.10, z = 0.04 },
+        { duration = 0.12, x = -0.16, z = 0.06, hip = 0.3, knee = 0.5 },
+        { duration = 0.04, x = 0.08, z = 0.05, hip = -0.4, knee = -0.2 },
+        { duration = 0.08, x = 0.08, z = 0.05, hip = -0.4, knee = -0.2 },
+        { duration = 0.06, x = -0.04, z = 0.04 },
+      },
+    },
+    side = {
+      tStep = 0.5, phSingle = { 0.1, 0.9 },
+      ball = { x = 0.05, y = 0.14 },
+      contact = { x = 0.0, y = 0.12 },
+      reach = { x = { -0.06, 0.12 }, y = { 0.07, 0.2 } },
+      support = { x = 0.0, y = 0.0 },
+      phases = {
+        { duration = 0.06, y = -0.02, z = 0.04 },
+        { duration = 0.12, y = -0.06, z = 0.05, hipRoll = -0.2 },
+        { duration = 0.04, y = 0.08, z = 0.05, hipRoll = 0.3 },
+        { duration = 0.08, y = 0.08, z = 0.05, hipRoll = 0.3 },
+        { duration = 0.06, y = 0.0, z = 0.04 },
+      },
+    },
+  },
   -- stance and transitions
   tStance = 1.0,             -- s, to move into the stance from the current pose
   hardnessLegs = 1.0,
