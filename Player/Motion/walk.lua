@@ -403,6 +403,7 @@ function Walk:place_feet()
     if self.support == LEFT then rz = self.swing_z else lz = self.swing_z end
   end
   local tz, tp, tr = p.bodyHeight, p.bodyTilt, 0
+  if self.step_hook then tp = tp + self.step_hook.tilt end
   local uL, uR = self.uLeft, self.uRight
   foot_in_torso(self.lpose, uL[1], uL[2], lz, uL[3], tx, ty, tz, ta, tp, tr)
   foot_in_torso(self.rpose, uR[1], uR[2], rz, uR[3], tx, ty, tz, ta, tp, tr)
@@ -511,7 +512,6 @@ end
 function Walk:joint_angles(q, sensors, dt, support)
   local p = self.p
   local flags = self.model:legs_ik(self.lpose, self.rpose, q)
-  if self.step_hook then self.step_hook:joints(self, q) end
   -- arms: the posture by joint name (read live: Walk.set('arms.l.posture.l_el', 0.3) lands at once)
   local arms, larm, rarm = p.arms, self.arms.l, self.arms.r
   for side, arm in pairs(self.arms) do
@@ -524,6 +524,7 @@ function Walk:joint_angles(q, sensors, dt, support)
     if larm and larm.pitch then add_rot(self, q, larm.pitch, 0, p.armSwing * rel[1]) end
     if rarm and rarm.pitch then add_rot(self, q, rarm.pitch, 0, -p.armSwing * rel[1]) end
   end
+  if self.step_hook then self.step_hook:joints(self, q) end
   -- which leg carries the robot: the support leg while stepping, both at stance
   local ss = support and 1 or self:single_support()
   local sup = support or (self.active and self.support or nil)

@@ -17,8 +17,11 @@
 --   phases = { { duration = s, x, y (outward), z = m from the contact point (z above the ground),
 --                hip, knee, ankle = rad (pitch added to the kicking leg after the IK, about the
 --                torso's y axis: negative hip swings the leg forward), hipRoll = rad (about x,
---                outward positive) }, ... } from the start of single support; after the last one
---                the foot goes to its landing point by the end of single support.
+--                outward positive), tilt = rad (the torso's pitch added, forward positive: thrown
+--                back through the strike the leg swings faster in the world), arms = rad (both
+--                arms back), arm = rad (the kicking side's arm back, the other forward) }, ... }
+--                from the start of single support; after the last one the foot goes to its
+--                landing point by the end of single support.
 local walk = require('Motion.walk')
 
 local floor = math.floor
@@ -37,7 +40,7 @@ local function smooth(s) return s * s * (3 - 2 * s) end
 -- params: the walk config (read live).
 function M.new(params)
   return setmetatable({ p = params, pending = nil, cur = nil, count = 0, seq = 0, missed = 0,
-    joint = { hip = 0, knee = 0, ankle = 0, hipRoll = 0 } }, Kick)
+    joint = { hip = 0, knee = 0, ankle = 0, hipRoll = 0, tilt = 0, arms = 0, arm = 0 }, tilt = 0 }, Kick)
 end
 
 -- Asks for a kick of `kind` ('forward' or 'side') with `foot` ('left' or 'right') on the next step
@@ -68,7 +71,7 @@ function Kick:expire(t, active)
     self.pending = nil
     self.expired = (self.expired or 0) + 1
   end
-  if not active then self.cur = nil end
+  if not active then self.cur, self.tilt = nil, 0 end
 end
 
 -- 0 none, 1 asked (waiting for a step that swings the kicking foot), 2 kicking
@@ -125,7 +128,8 @@ end
 -- kicking foot (w.uLeft or w.uRight, w.swing_z) and the joint offsets while a kick swing runs.
 function Kick:swing(w, t)
   local k, j = self.cur, self.joint
-  j.hip, j.knee, j.ankle, j.hipRoll = 0, 0, 0, 0
+  for key in pairs(j) do j[key] = 0 end
+  self.tilt = 0
   if not k then return end
   local phases = k.cfg.phases
   local tt = t - k.t1
@@ -155,6 +159,7 @@ function Kick:swing(w, t)
       local a, b = pj and rawget(pj, key) or 0, tj and rawget(tj, key) or 0
       j[key] = a + s * (b - a)
     end
+    self.tilt = j.tilt
   end
   local foot = k.foot == 'left' and w.uLeft or w.uRight
   local yaw = foot[3]
@@ -174,6 +179,9 @@ function Kick:joints(w, q)
   rot(legi[3], 0, j.hip)
   rot(legi[4], 0, j.knee)
   rot(legi[5], 0, j.ankle)
+  local karm, sarm = w.arms[k.foot == 'left' and 'l' or 'r'], w.arms[k.foot == 'left' and 'r' or 'l']
+  if karm and karm.pitch then rot(karm.pitch, 0, j.arms + j.arm) end
+  if sarm and sarm.pitch then rot(sarm.pitch, 0, j.arms - j.arm) end
 end
 
 return M

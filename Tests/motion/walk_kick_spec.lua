@@ -72,7 +72,7 @@ for name, engine in pairs({ analytic = Walk, preview = WalkPreview }) do
       end
     end)
 
-    it('winds up behind, strikes through the ball, lands on the walk\'s landing point; the support foot stays', function()
+    it('winds up behind, strikes through the ball, lands where the walk would; the support foot stays', function()
       local ball = { 0.22, 0.06, 0 } -- robot frame, ahead of the left foot
       local rec, _, p = run(engine, 'forward', 'left', ball, 2.0, 1.5)
       local cfg = p.walkKick.forward

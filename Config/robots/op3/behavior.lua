@@ -18,5 +18,10 @@ return {
       speed = 0.25,            -- m/s forward
     },
     max_va = 0.8,              -- rad/s
+    -- shooting with a kick out of the walk (walk.lua's walkKick.forward: the ball ~0.19 m ahead of
+    -- the support ankle, in line with the kicking foot)
+    walk_kick = {
+      enabled = true,
+    },
   },
 }
