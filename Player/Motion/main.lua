@@ -4,7 +4,8 @@
 -- alone; `luajit Player/Motion/main.lua [--initial STATE]` with the env of Run/env.sh too.
 --
 -- Inputs through the `motion` shm block (Lib/Motion.lua, Lib/Walk.lua): request/request_seq,
--- velocity, head_command, param_* (walk parameter changes and config re-reads), taken and
+-- velocity, head_command, kick_* (a kick out of the walk: Walk.kick; out: kick_ack, kick_phase,
+-- kicks), param_* (walk parameter changes and config re-reads), taken and
 -- taken_command (joints a caller took with Body.set_command & co.: written with the caller's
 -- command until Body.release or a request whose state owns them). Outputs: state, walking, fallen,
 -- falls, fall_time, odometry, walk_velocity, the walk's COM, ZMP, feet and capture error, zmp and

@@ -17,19 +17,20 @@ local along = kind == 'forward' and 'x' or 'y'  -- the strike's direction
 
 -- the searched parameters: key path under walkKick.<kind>, range
 local P = {
-  { 'phases.2.duration', 0.08, 0.22 },
-  { 'phases.2.' .. along, -0.25, -0.05 },
-  { 'phases.2.z', 0.03, 0.08 },
-  { 'phases.2.hip', -0.2, 0.5 },
-  { 'phases.2.knee', 0.0, 1.0 },
-  { 'phases.2.ankle', -0.4, 0.4 },
-  { 'phases.3.' .. along, -0.1, 0.1 },
-  { 'phases.3.z', 0.03, 0.09 },
-  { 'phases.3.hip', -0.8, 0.0 },
+  { 'phases.2.duration', 0.1, 0.25 },
+  { 'phases.2.z', 0.03, 0.09 },
+  { 'phases.2.hip', -0.2, 0.6 },
+  { 'phases.2.knee', 0.0, 1.2 },
+  { 'phases.2.ankle', -0.6, 0.4 },
+  { 'phases.3.' .. along, -0.05, 0.15 },
+  { 'phases.3.z', 0.03, 0.1 },
+  { 'phases.3.hip', -1.5, 0.0 },
   { 'phases.3.knee', -0.3, 0.3 },
-  { 'phases.3.ankle', -0.3, 0.8 },
-  { 'phases.3.tilt', -0.15, 0.0 },
-  { 'phases.4.duration', 0.03, 0.1 },
+  { 'phases.3.ankle', -0.3, 1.2 },
+  { 'phases.3.tilt', -0.3, 0.0 },
+  { 'phases.3.arms', 0.0, 0.5 },
+  { 'phases.4.duration', 0.01, 0.1 },
+  { 'phases.5.duration', 0.06, 0.2 },
   { 'support.x', -0.02, 0.03 },
   { 'support.y', -0.01, 0.02 },
 }
@@ -108,7 +109,7 @@ local function case(foot, dx, dy)
   return math.min(d, 3.0), fell, motion.walking[0] == 1
 end
 
-local CASES = kind == 'forward' and { { 'left', -0.03, 0 }, { 'left', 0.03, 0 }, { 'right', 0, 0.02 } }
+local CASES = kind == 'forward' and { { 'left', -0.02, 0 }, { 'left', 0.03, 0.01 }, { 'right', 0, -0.01 } }
   or { { 'left', 0, -0.02 }, { 'left', 0.03, 0.02 }, { 'right', 0, 0 } }
 
 local function score(x)

@@ -118,22 +118,22 @@ return {
   walkKick = {
     expire = 1.0,            -- s: a request no step honoured by then is dropped
     forward = {
-      tStep = 0.5, phSingle = { 0.06, 0.94 },
-      ball = { x = 0.25, y = 0.013 },
+      tStep = 0.565, phSingle = { 0.06, 0.94 },
+      ball = { x = 0.21, y = 0.013 },
       contact = { x = 0.13, y = 0.013 },
-      reach = { x = { -0.06, 0.12 }, y = { 0.07, 0.16 } },
-      support = { x = 0.0, y = 0.0 },
+      reach = { x = { -0.07, 0.14 }, y = { 0.07, 0.16 } },
+      support = { x = 0.006, y = 0.003 },
       phases = {
         { duration = 0.05, x = -0.10, z = 0.04 },
-        { duration = 0.12, x = -0.2, z = 0.06, hip = 0, knee = 0, ankle = 0, arm = 0 },
-        { duration = 0.03, x = 0.0, z = 0.065, hip = 0, knee = 0, ankle = 0, arm = 0, tilt = 0, arms = 0 },
-        { duration = 0.07, x = 0.0, z = 0.065, hip = 0, knee = 0, ankle = 0, arm = 0, tilt = 0, arms = 0 },
-        { duration = 0.08, x = -0.04, z = 0.045 },
+        { duration = 0.1874, x = -0.2, z = 0.0612, hip = -0.0857, knee = 0.5811, ankle = -0.4477, arm = 0.3 },
+        { duration = 0.03, x = 0.035, z = 0.0302, hip = -0.5656, knee = -0.1176, ankle = 0.2674, arm = 0.2, tilt = -0.2389, arms = 0.3789 },
+        { duration = 0.0912, x = 0.035, z = 0.0302, hip = -0.5656, knee = -0.1176, ankle = 0.2674, arm = 0.2, tilt = -0.2389, arms = 0.3789 },
+        { duration = 0.0786, x = -0.04, z = 0.045 },
       },
     },
     side = {
       tStep = 0.7, phSingle = { 0.08, 0.92 },
-      ball = { x = 0.05, y = 0.14 },
+      ball = { x = 0.05, y = 0.13 },
       contact = { x = 0.0, y = 0.12 },
       reach = { x = { -0.06, 0.12 }, y = { 0.07, 0.2 } },
       support = { x = 0.0, y = 0.0 },
