@@ -151,6 +151,8 @@ return {
       max_angle = 0.3,         -- rad: the goal's direction from the ball this near the heading ...
       margin = 0.3,            -- m: ... and within the goal's mouth less this margin each side
       max_range = 6.0,         -- m: the goal this near
+      max_vy = 0.03,           -- m/s: the walk's sideways speed at most this ...
+      max_va = 0.2,            -- rad/s: ... and its turning
       speed = 0.08,            -- m/s: walking on straight while the kick is asked for and made
       timeout = 2.0,           -- s waiting for the kick
     },

@@ -92,6 +92,12 @@ function M.walk_kick(kind, foot, bx, by)
   return true
 end
 
+-- The walk's current (rate-limited) velocity: vx, vy (m/s), va (rad/s).
+function M.walk_velocity()
+  if not (Walk and Walk.velocity) then return last.vx, last.vy, last.va end
+  return Walk.velocity()
+end
+
 -- The kicks out of the walk the motion process has made (a counter).
 function M.walk_kicks()
   if not (Walk and Walk.kick_status) then return 0 end

@@ -22,6 +22,7 @@ return {
     -- the support ankle, in line with the kicking foot)
     walk_kick = {
       enabled = true,
+      max_range = 2.5,         -- m: the kick sends the ball 0.5-0.9 m: a shot to finish, not a pass
     },
   },
 }

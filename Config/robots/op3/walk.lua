@@ -115,6 +115,13 @@ return {
   -- outward; the ball's radius 0.07 m, met about 0.06 m above the ground (contact x, y: face +
   -- the ball's depth at that height). The strike is a short phase: the servos run at their speed
   -- limit (4.8 rad/s) through it. Way-points relative to the contact point (see walk_kick.lua).
+  -- forward: from the cross-entropy search of Tests/motion/walk_kick_tune.sh (walking at 0.12 m/s,
+  -- both feet, ball positions across the zone, penalised for a fall or a stop): 0.55-0.92 m over
+  -- the sweep of Tests/motion/walk_kick_test.sh, the robot walking on; toe ~1.2-1.5 m/s, the foot
+  -- pushes the ball more than it strikes it. Found the hard way: a kick step whose single support
+  -- lasts 0.4 s or more with the foot reaching 0.18 m ahead fell every time (the pendulum plan of a
+  -- long single support is fragile), and a harder strike (hip -1.5, torso back 0.3 rad) fell after
+  -- the kick. side: set by hand (0.5-0.65 m sideways in its zone, not tuned).
   walkKick = {
     expire = 1.0,            -- s: a request no step honoured by then is dropped
     forward = {
@@ -126,8 +133,10 @@ return {
       phases = {
         { duration = 0.05, x = -0.10, z = 0.04 },
         { duration = 0.1874, x = -0.2, z = 0.0612, hip = -0.0857, knee = 0.5811, ankle = -0.4477, arm = 0.3 },
-        { duration = 0.03, x = 0.035, z = 0.0302, hip = -0.5656, knee = -0.1176, ankle = 0.2674, arm = 0.2, tilt = -0.2389, arms = 0.3789 },
-        { duration = 0.0912, x = 0.035, z = 0.0302, hip = -0.5656, knee = -0.1176, ankle = 0.2674, arm = 0.2, tilt = -0.2389, arms = 0.3789 },
+        { duration = 0.03, x = 0.035, z = 0.0302, hip = -0.5656, knee = -0.1176, ankle = 0.2674, arm = 0.2,
+          tilt = -0.2389, arms = 0.3789 },
+        { duration = 0.0912, x = 0.035, z = 0.0302, hip = -0.5656, knee = -0.1176, ankle = 0.2674, arm = 0.2,
+          tilt = -0.2389, arms = 0.3789 },
         { duration = 0.0786, x = -0.04, z = 0.045 },
       },
     },
