@@ -154,6 +154,7 @@ return {
       max_vy = 0.03,           -- m/s: the walk's sideways speed at most this ...
       max_va = 0.2,            -- rad/s: ... and its turning
       speed = 0.08,            -- m/s: walking on straight while the kick is asked for and made
+      max_vx = 0.13,           -- m/s: the kick is asked for once the walk is this slow
       timeout = 2.0,           -- s waiting for the kick
     },
     attack_depth = 0.5,        -- m behind the goal line: the point aimed at

@@ -11,9 +11,8 @@ function M.entry(ctx)
   local wk = cfg.walk_kick
   walking = wk and wk.enabled and ctx.act.motion_state() == 'walk'
   if walking then
-    local b = ctx.world.ball
     kicks0 = ctx.act.walk_kicks()
-    kicked = ctx.act.walk_kick('forward', ctx.kick_side or (b.y >= 0 and 'left' or 'right'), b.x, b.y)
+    kicked = false
   else
     kicked = cfg.use_kick and ctx.act.kick(ctx.kick_side or 'left')
   end
@@ -21,10 +20,15 @@ end
 
 function M.update(ctx)
   local cfg = ctx.cfg.body
-  if kicked and walking then
-    -- walk on straight while the walk takes the kick on its next step
+  if walking then
+    -- walk on straight; the kick is asked for once the walk is as slow as the kick is made for
+    -- (a kick step out of a faster walk throws the robot back), the walk takes it on its next step
     local wk = cfg.walk_kick
     ctx.act.walk(wk.speed, 0, 0)
+    if not kicked and ctx.act.walk_velocity() <= wk.max_vx then
+      local b = ctx.world.ball
+      kicked = ctx.act.walk_kick('forward', ctx.kick_side or (b.y >= 0 and 'left' or 'right'), b.x, b.y)
+    end
     if ctx.act.walk_kicks() > kicks0 or ctx.t - t0 > wk.timeout then return 'done' end
   elseif kicked then
     local s = ctx.act.motion_state() or ''

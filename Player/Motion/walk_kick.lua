@@ -4,7 +4,8 @@
 -- either walk engine as its `step_hook` (Player/Motion/walk.lua calls begin_step at each step's
 -- start, swing each tick, joints after the leg IK).
 --
--- Numbers from the walk config's `walkKick` (per body): for each kind ('forward', 'side')
+-- Numbers from the walk config's `walkKick` (per body): `expire` (s a request waits at most),
+-- `maxSpeed` = { vx, vy, va } (a kick waits for a step begun no faster), and per kind:
 --   tStep, phSingle      the kick step's duration and single-support phase (longer than a step:
 --                        the wind-up and strike need the time; the COM plan is made for it)
 --   ball = { x, y }      m: where the ball's centre is taken to be when the request names none,
@@ -102,6 +103,13 @@ function Kick:begin_step(w, T, ph1, ph2)
   local swing_left = w.support == walk.RIGHT
   if (req.foot == 'left') ~= swing_left then return T, ph1, ph2 end
   local cfg = self.p.walkKick[req.kind]
+  -- a kick step out of a faster walk throws the robot (the step's COM plan starts from the walk's
+  -- speed): the request waits for a slower step (or expires)
+  local v = w.vel
+  if math.abs(v[1]) > self.p.walkKick.maxSpeed[1] or math.abs(v[2]) > self.p.walkKick.maxSpeed[2]
+    or math.abs(v[3]) > self.p.walkKick.maxSpeed[3] then
+    return T, ph1, ph2
+  end
   self.pending = nil
   local sgn = swing_left and 1 or -1
   local sup = swing_left and w.uRight1 or w.uLeft1

@@ -18,11 +18,11 @@ local function new_walk(engine)
 end
 
 -- walks at vx for `before` s, asks for a kick, walks `after` s more; records each tick
-local function run(engine, kind, foot, ball, before, after)
+local function run(engine, kind, foot, ball, before, after, vx)
   local w, k, p = new_walk(engine)
   local q = {}
   for i = 1, #robot.joints do q[i] = 0 end
-  w:set_velocity(0.12, 0, 0)
+  w:set_velocity(vx or 0.12, 0, 0)
   w:start()
   local rec = { steps = {}, ticks = {} }
   local n1, n2 = math.floor(before / dt + 0.5), math.floor((before + after) / dt + 0.5)
@@ -41,6 +41,7 @@ local function run(engine, kind, foot, ball, before, after)
         l2 = { unpack(w.uLeft2) }, r2 = { unpack(w.uRight2) }, sup = k.cur and k.cur.sup }
     end
     if k.cur then
+      rec.ball_rel = rec.ball_rel or k.cur.ball
       local f = foot == 'left' and w.uLeft or w.uRight
       local rel = Walk.pose_relative(f, k.cur.sup)
       rec.ticks[#rec.ticks + 1] = { x = rel[1], y = (foot == 'left' and 1 or -1) * rel[2], z = w.swing_z,
@@ -88,8 +89,9 @@ for name, engine in pairs({ analytic = Walk, preview = WalkPreview }) do
       -- the contact point (the ball's x, less the foot's face and the ball's depth) is passed
       local kick_step
       for _, s in ipairs(rec.steps) do if s.kick then kick_step = s end end
-      -- (the support ankle is within 2 cm of the torso along x)
-      assert.is_true(maxx > ball[1] - cfg.contact.x, 'strike reaches the ball: ' .. maxx)
+      -- the ball (as the kick step saw it, from the support ankle) is met: the contact point passed
+      assert.is_true(rec.ball_rel[1] > 0.1 and rec.ball_rel[1] < ball[1])
+      assert.is_true(maxx > rec.ball_rel[1] - cfg.contact.x, 'strike reaches the ball: ' .. maxx)
       assert.is_true(maxz >= 0.04)
       assert.is_true(hip < -0.1, 'hip swings forward at the strike')
       -- landing: the last tick's foot is the step's landing target (z 0)
@@ -97,6 +99,14 @@ for name, engine in pairs({ analytic = Walk, preview = WalkPreview }) do
       local land = Walk.pose_relative(kick_step.l2, kick_step.sup)
       assert.is_near(land[1], last.x, 2e-3)
       assert.is_near(0, last.z, 1e-3)
+    end)
+
+    it('waits for a step no faster than walkKick.maxSpeed', function()
+      local rec, k, p = run(engine, 'forward', 'left', nil, 2.0, 0.5, 0.3)
+      assert.is_true(0.3 > p.walkKick.maxSpeed[1])
+      for _, s in ipairs(rec.steps) do assert.is_false(s.kick) end
+      assert.equal(0, k.count)
+      assert.equal(1, k:phase()) -- still asked (the motion process drops it after walkKick.expire)
     end)
 
     it('drops a request no step honours in time and refuses bad kinds', function()
