@@ -1,5 +1,5 @@
 -- Kicks out of the walk over a sweep of ball positions, run by ./run_repl in the sim's lockstep
--- with the motion process alone (Tests/motion/walk_kick_test.sh):
+-- with the motion process alone (Tests/motion/walk_kick_sweep.sh):
 --   ./run_repl Tests/motion/walk_kick_scenario.lua [SWEEPS] [FEET] [VX]
 -- SWEEPS 'forward=XS/YS;side=XS/YS' with XS, YS lists ('-0.03,0.03'): the ball's centre from the kick
 -- zone's nominal spot (m, ahead and outward: the walk config's walkKick.<kind>.ball); FEET

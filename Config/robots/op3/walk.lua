@@ -117,7 +117,7 @@ return {
   -- limit (4.8 rad/s) through it. Way-points relative to the contact point (see walk_kick.lua).
   -- forward: from the cross-entropy search of Tests/motion/walk_kick_tune.sh (walking at 0.12 m/s,
   -- both feet, ball positions across the zone, penalised for a fall or a stop): 0.55-0.92 m over
-  -- the sweep of Tests/motion/walk_kick_test.sh, the robot walking on; toe ~1.2-1.5 m/s, the foot
+  -- the sweep of Tests/motion/walk_kick_sweep.sh, the robot walking on; toe ~1.2-1.5 m/s, the foot
   -- pushes the ball more than it strikes it. Found the hard way: a kick step whose single support
   -- lasts 0.4 s or more with the foot reaching 0.18 m ahead fell every time (the pendulum plan of a
   -- long single support is fragile), and a harder strike (hip -1.5, torso back 0.3 rad) fell after
