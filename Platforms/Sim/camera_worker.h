@@ -29,7 +29,10 @@ class CameraWorker {
   CameraWorker &operator=(const CameraWorker &) = delete;
 
   struct Job {
-    Camera cam;
+    Camera cam;             // at the exposure's end (the frame's tick)
+    Camera cam_start;       // at its start (motion blur), if has_start
+    bool has_start = false;
+    double time = 0;        // s, exposure
     Scene scene;
     int self = 0;           // the robot whose camera it is
     uint32_t seq = 0;       // frame number for the sensor noise

@@ -27,6 +27,13 @@ double Config::num(const std::string &k, double dflt) const {
   return v;
 }
 
+bool Config::flag(const std::string &k) const {
+  char err[1024];
+  int v = 0;
+  if (dcm_config_bool(c_.get(), k.c_str(), &v, err, sizeof err) < 0) throw std::runtime_error(err);
+  return v != 0;
+}
+
 std::string Config::str(const std::string &k) const {
   char err[1024], v[1024];
   if (dcm_config_str(c_.get(), k.c_str(), v, sizeof v, err, sizeof err) < 0) throw std::runtime_error(err);

@@ -23,6 +23,7 @@ class Config {
   double num(const std::string &key) const;                 // required number
   double num(const std::string &key, double dflt) const;    // optional number
   std::string str(const std::string &key) const;            // required string
+  bool flag(const std::string &key) const;                  // required boolean
   // Lists of strings / numbers at key; required, non-empty.
   std::vector<std::string> strs(const std::string &key) const;
   std::vector<double> nums(const std::string &key) const;

@@ -27,8 +27,32 @@ void FrameQueue::close() {
   cam_.blk = nullptr;
 }
 
+bool FrameQueue::pose_at(double t, Vec3 *pos, Mat3 *rot) const {
+  if (poses_.empty() || t < poses_.front().t - 1e-9) return false;
+  for (size_t i = 1; i < poses_.size(); i++) {
+    const Pose &a = poses_[i - 1], &b = poses_[i];
+    if (t > b.t + 1e-12) continue;
+    const double s = b.t > a.t ? (t - a.t) / (b.t - a.t) : 1.0;
+    *pos = a.pos + s * (b.pos - a.pos);
+    *rot = Eigen::Quaterniond(a.rot).slerp(s, Eigen::Quaterniond(b.rot)).toRotationMatrix();
+    return true;
+  }
+  *pos = poses_.back().pos;
+  *rot = poses_.back().rot;
+  return true;
+}
+
 void FrameQueue::expose(const World &w, int r, uint32_t tick, double time, const double head[2], const Params &p,
                         const std::vector<int> *hide, Scene *scene, bool *have_scene) {
+  const bool blur = p.realism.on && p.realism.exposure > 0;
+  if (blur) {
+    // every tick: the poses of the last exposure time and a tick more
+    Pose x;
+    x.t = w.time();
+    w.camera_pose(r, &x.pos, &x.rot);
+    poses_.push_back(x);
+    while (poses_.size() > 2 && poses_[1].t < x.t - p.realism.exposure - 1e-9) poses_.pop_front();
+  }
   if (w.time() + 1e-9 < next_frame_) return;
   next_frame_ += 1.0 / p.cam_rate;
   if (!*have_scene) {
@@ -52,7 +76,16 @@ void FrameQueue::expose(const World &w, int r, uint32_t tick, double time, const
   w.camera_pose(r, &j.cam.pos, &j.cam.rot);
   j.cam.width = p.cam_width;
   j.cam.height = p.cam_height;
-  j.cam.fovy = p.cam_fovy;
+  j.cam.calibrate(p);
+  j.time = time;
+  j.has_start = blur && pose_at(w.time() - p.realism.exposure, &j.cam_start.pos, &j.cam_start.rot);
+  if (j.has_start) {
+    const Vec3 pos = j.cam_start.pos;
+    const Mat3 rot = j.cam_start.rot;
+    j.cam_start = j.cam;
+    j.cam_start.pos = pos;
+    j.cam_start.rot = rot;
+  }
   j.scene = *scene;
   j.self = r;
   j.hide = hide;

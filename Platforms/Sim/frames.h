@@ -46,6 +46,14 @@ class FrameQueue {
     std::vector<uint8_t> img;
     uint64_t render = 0, copy = 0;   // the worker's tickets (0: not queued yet)
   };
+  // the camera's pose at the last ticks (realism: the pose at the exposure's start, for its blur)
+  struct Pose {
+    double t;
+    Vec3 pos;
+    Mat3 rot;
+  };
+  std::deque<Pose> poses_;
+  bool pose_at(double t, Vec3 *pos, Mat3 *rot) const;
   dcm_blk_camera_image cam_ = {};
   size_t bytes_ = 0;
   double next_frame_ = 0;

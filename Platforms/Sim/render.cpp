@@ -17,11 +17,23 @@ constexpr uint8_t Renderer::kWhite[3];
 constexpr uint8_t Renderer::kOrange[3];
 constexpr uint8_t Renderer::kFloor[3];
 constexpr uint8_t Renderer::kSky[3];
+constexpr uint8_t Renderer::kBallWhite[3];
+constexpr uint8_t Renderer::kBallPatch[3];
 
 namespace {
 
 const double kNear = 0.01;
 const Vec3 kLight = Vec3(0.3, 0.2, 0.93).normalized();
+
+// The white ball's pattern: a dark patch around each of the 12 vertices of an icosahedron (the
+// pentagons of the classic truncated-icosahedron ball; 6 axes, a patch at each end). A patch's
+// angular radius of 0.30 rad lies between the pentagon's inscribed (0.28) and circumscribed (0.35)
+// angle on a truncated icosahedron: 27% of the surface dark, as on such a ball (28%).
+const double kPhi = 1.6180339887498949;
+const Vec3 kPatchAxes[6] = {Vec3(0, 1, kPhi).normalized(), Vec3(0, 1, -kPhi).normalized(),
+                            Vec3(1, kPhi, 0).normalized(), Vec3(1, -kPhi, 0).normalized(),
+                            Vec3(kPhi, 0, 1).normalized(), Vec3(kPhi, 0, -1).normalized()};
+const double kPatchCos = std::cos(0.30);
 
 // Writes pixels u0..u1 of a row: luma per pixel from ys (or y), chroma per YUYV pair; a pair only
 // half covered gets the average of its old chroma and the new one.
@@ -47,16 +59,74 @@ inline void put_span(uint8_t *row, int u0, int u1, const uint8_t *ys, int y, int
 
 }  // namespace
 
+// Noise and light of one frame: the clean camera's luma noise, or (realism) none here and the light
+// over the field.
+struct Renderer::Look {
+  Noise nz;
+  const Lighting *light;   // null: flat light (the clean camera)
+};
+
+Lens Camera::lens() const {
+  Lens l;
+  l.width = width;
+  l.height = height;
+  l.fx = fu();
+  l.fy = fv();
+  l.cx = pu();
+  l.cy = pv();
+  l.k1 = k1;
+  l.k2 = k2;
+  return l;
+}
+
+void Camera::calibrate(const Params &p) {
+  width = p.cam_width;
+  height = p.cam_height;
+  fovy = p.cam_fovy;
+  fx = p.cam_fx;
+  fy = p.cam_fy;
+  cx = p.cam_cx;
+  cy = p.cam_cy;
+  k1 = p.cam_k1;
+  k2 = p.cam_k2;
+}
+
 bool camera_project(const Camera &c, const Vec3 &p, double *u, double *v) {
   Vec3 q = c.rot.transpose() * (p - c.pos);
   if (q.x() <= kNear) return false;
-  const double f = c.focal();
-  *u = (c.width - 1) / 2.0 - f * q.y() / q.x();
-  *v = (c.height - 1) / 2.0 - f * q.z() / q.x();
+  double x = -q.y() / q.x(), y = -q.z() / q.x();
+  if (c.distorted()) {
+    const double k = c.lens().factor(x * x + y * y);
+    x *= k;
+    y *= k;
+    *u = c.pu() + c.fu() * x;
+    *v = c.pv() + c.fv() * y;
+    return true;
+  }
+  // the pinhole, in the arithmetic the renderer's clean frames were checked with
+  *u = c.pu() - c.fu() * q.y() / q.x();
+  *v = c.pv() - c.fv() * q.z() / q.x();
   return true;
 }
 
-Renderer::Renderer(const Params &p, uint64_t seed) : seed_(seed) {
+Shot shot_of(const World &w, const Camera &c, int self, const std::vector<int> *hide, uint32_t frame) {
+  Shot s;
+  s.cam = c;
+  s.ball = w.ball_position();
+  s.ball_rot = w.ball_rotation();
+  s.ball_radius = w.ball_radius();
+  s.self = self;
+  s.hide = hide;
+  s.frame = frame;
+  return s;
+}
+
+Renderer::Renderer(const Params &p, uint64_t seed)
+    : seed_(seed), white_ball_(p.ball_kind == "white"), real_(p.realism), dev_(seed) {
+  const double hl = p.field_length / 2 + p.border, hw = p.field_width / 2 + p.border;
+  half_diagonal_ = std::hypot(hl, hw);
+  light_dir_ = (double)((seed * 0x9e3779b97f4a7c15ull) >> 11) / (double)(1ull << 53) * 2 * M_PI;
+  zeros_.assign(65536 + kNoiseExtra, 0);
   // The markings are symmetric in |X| and |Y|: one quarter of the carpet at 1 cm, stored in
   // 8 x 8 texel tiles (one cache line each) so that rays walking in any direction stay cached.
   res_ = 0.01;
@@ -107,11 +177,11 @@ Renderer::Renderer(const Params &p, uint64_t seed) : seed_(seed) {
   std::copy(noise_.begin(), noise_.begin() + kNoiseExtra, noise_.begin() + 65536);
 }
 
-void Renderer::ground(const Camera &c, uint32_t frame, uint8_t *img) const {
-  const Noise nz{noise_.data(), noise_offset(frame)};
+void Renderer::ground(const Camera &c, const Look &look, uint8_t *img) const {
+  const Noise &nz = look.nz;
   const int W = c.width, H = c.height;
-  const double f = c.focal();
-  const double cu = (W - 1) / 2.0, cv = (H - 1) / 2.0;
+  const double f = c.fu(), fv = c.fv();
+  const double cu = c.pu(), cv = c.pv();
   const Mat3 &R = c.rot;
   const float cx = (float)c.pos.x(), cy = (float)c.pos.y(), cz = (float)c.pos.z();
   const Vec3 du = R * Vec3(0, -1.0 / f, 0);
@@ -124,9 +194,10 @@ void Renderer::ground(const Camera &c, uint32_t frame, uint8_t *img) const {
   const uint8_t *cells = cells_.data();
   const int cells_x = cells_x_;
   std::vector<uint8_t> cls(W);
+  std::vector<int> lt(look.light ? W : 0);   // realism: light x 256 per pixel of the row
   for (int v = 0; v < H; v++) {
     uint8_t *row = img + (size_t)v * W * 2;
-    const Vec3 d0 = R * Vec3(1, cu / f, -(v - cv) / f);
+    const Vec3 d0 = R * Vec3(1, cu / f, -(v - cv) / fv);
     const float dx0 = (float)d0.x(), dy0 = (float)d0.y(), dz0 = (float)d0.z();
     // the ray hits the ground where dz(u) = dz0 + u * duz < 0: one interval of u per row
     int ua = 0, ub = W - 1;
@@ -192,6 +263,41 @@ void Renderer::ground(const Camera &c, uint32_t frame, uint8_t *img) const {
       cls[u] = lookup(gx, gy);
     }
     const uint32_t base = (uint32_t)(v * W);
+    if (look.light) {
+      // the light at the ground point every 8 pixels, linear in between (it changes over decimetres)
+      auto light = [&](int uu) {
+        float gx, gy;
+        ground_xy(uu, &gx, &gy);
+        // beyond the carpet (rays near the horizon reach kilometres) the light is the carpet edge's
+        const double x = std::max(-(double)fw, std::min((double)fw, (double)gx)) * res_ + x0_;
+        const double y = std::max(-(double)fh, std::min((double)fh, (double)gy)) * res_ + y0_;
+        return (int)std::lround(256 * look.light->at(x, y));
+      };
+      const int a = std::max(ua, 0);
+      if (ub >= a) {
+        int l0 = light(a);
+        lt[a] = l0;
+        for (int u0 = a; u0 < ub; u0 += 8) {
+          const int u1 = std::min(u0 + 8, ub);
+          const int l1 = light(u1);
+          const int step = ((l1 - l0) << 16) / (u1 - u0);   // 16.16 fixed point
+          int l = l0 << 16;
+          for (int k = u0 + 1; k <= u1; k++) lt[k] = (l += step) >> 16;
+          l0 = l1;
+        }
+      }
+      for (u = 0; u < W; u += 2) {
+        const int ca = cls[u], cb = cls[u + 1];
+        const int la = ca == 3 ? 256 : lt[u], lb = cb == 3 ? 256 : lt[u + 1];
+        const uint8_t *A = col[ca], *B = col[cb];
+        uint8_t *p = row + 2 * u;
+        p[0] = sat((A[0] * la) >> 8);
+        p[1] = sat(128 + ((((A[1] - 128) * la) >> 8) + (((B[1] - 128) * lb) >> 8)) / 2);
+        p[2] = sat((B[0] * lb) >> 8);
+        p[3] = sat(128 + ((((A[2] - 128) * la) >> 8) + (((B[2] - 128) * lb) >> 8)) / 2);
+      }
+      continue;
+    }
     u = 0;
 #ifdef __SSE2__
     // 16 pixels at a time, the same integer arithmetic as the loop below (bit-identical output):
@@ -235,15 +341,19 @@ void Renderer::ground(const Camera &c, uint32_t frame, uint8_t *img) const {
   }
 }
 
-void Renderer::solid(const Camera &c, const Solid &s, uint32_t frame, uint8_t *img) const {
-  const Noise nz{noise_.data(), noise_offset(frame)};
+void Renderer::solid(const Camera &c, const Solid &s, const Look &look, uint8_t *img) const {
+  const Noise &nz = look.nz;
   const int W = c.width, H = c.height;
-  const double f = c.focal(), cu = (W - 1) / 2.0, cv = (H - 1) / 2.0;
+  const double f = c.fu(), fv = c.fv(), cu = c.pu(), cv = c.pv();
   Vec3 centre = Vec3::Zero();
   for (const Vec3 &p : s.v) centre += p;
   centre /= (double)s.v.size();
   std::vector<Vec3> poly, clipped;
   std::vector<double> pu, pv;
+  // realism: the light where the solid stands (its chroma scaled with it)
+  const double lit = look.light ? look.light->ambient(centre.x(), centre.y()) : 1.0;
+  const int su = look.light ? sat(128 + (int)std::lround((s.yuv[1] - 128) * lit)) : s.yuv[1];
+  const int sv = look.light ? sat(128 + (int)std::lround((s.yuv[2] - 128) * lit)) : s.yuv[2];
   for (const std::vector<int> &face : s.faces) {
     if (face.size() < 3) continue;
     // outward normal (whatever the winding) and back-face culling
@@ -271,11 +381,11 @@ void Renderer::solid(const Camera &c, const Solid &s, uint32_t frame, uint8_t *i
     double vmin = 1e30, vmax = -1e30;
     for (const Vec3 &q : clipped) {
       pu.push_back(cu - f * q.y() / q.x());
-      pv.push_back(cv - f * q.z() / q.x());
+      pv.push_back(cv - fv * q.z() / q.x());
       vmin = std::min(vmin, pv.back());
       vmax = std::max(vmax, pv.back());
     }
-    const double shade = 0.75 + 0.25 * std::max(0.0, n.dot(kLight));
+    const double shade = (0.75 + 0.25 * std::max(0.0, n.dot(kLight))) * lit;
     const int Y = std::min(255, (int)std::lround(s.yuv[0] * shade));
     const int v0 = std::max(0, (int)std::ceil(vmin)), v1 = std::min(H - 1, (int)std::floor(vmax));
     const size_t m = pu.size();
@@ -296,15 +406,16 @@ void Renderer::solid(const Camera &c, const Solid &s, uint32_t frame, uint8_t *i
         }
       }
       const int u0 = std::max(0, (int)std::ceil(xl)), u1 = std::min(W - 1, (int)std::floor(xr));
-      if (u0 <= u1) put_span(img + (size_t)v * W * 2, u0, u1, nullptr, Y, s.yuv[1], s.yuv[2], nz, (uint32_t)(v * W));
+      if (u0 <= u1) put_span(img + (size_t)v * W * 2, u0, u1, nullptr, Y, su, sv, nz, (uint32_t)(v * W));
     }
   }
 }
 
-void Renderer::ball(const Camera &c, const Vec3 &centre, double r, uint32_t frame, uint8_t *img) const {
-  const Noise nz{noise_.data(), noise_offset(frame)};
+void Renderer::ball(const Camera &c, const Vec3 &centre, const Mat3 &brot, double r, const Look &look,
+                    uint8_t *img) const {
+  const Noise &nz = look.nz;
   const int W = c.width, H = c.height;
-  const double f = c.focal(), cu = (W - 1) / 2.0, cv = (H - 1) / 2.0;
+  const double f = c.fu(), fv = c.fv(), cu = c.pu(), cv = c.pv();
   const Vec3 s = c.rot.transpose() * (centre - c.pos);
   if (s.x() + r <= kNear) return;
   int u0 = 0, u1 = W - 1, v0 = 0, v1 = H - 1;
@@ -313,7 +424,7 @@ void Renderer::ball(const Camera &c, const Vec3 &centre, double r, uint32_t fram
     double umin = 1e30, umax = -1e30, vmin = 1e30, vmax = -1e30;
     for (int k = 0; k < 8; k++) {
       const Vec3 q = s + r * Vec3(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1);
-      const double pu = cu - f * q.y() / q.x(), pv = cv - f * q.z() / q.x();
+      const double pu = cu - f * q.y() / q.x(), pv = cv - fv * q.z() / q.x();
       umin = std::min(umin, pu);
       umax = std::max(umax, pu);
       vmin = std::min(vmin, pv);
@@ -327,11 +438,18 @@ void Renderer::ball(const Camera &c, const Vec3 &centre, double r, uint32_t fram
   }
   const double r2 = r * r, ss = s.squaredNorm();
   const Vec3 lc = c.rot.transpose() * kLight;   // light direction in camera coordinates
-  const double sx = s.x(), sy = s.y(), sz = s.z(), inv_f = 1.0 / f, inv_r = 1.0 / r;
+  const double sx = s.x(), sy = s.y(), sz = s.z(), inv_f = 1.0 / f, inv_fv = 1.0 / fv, inv_r = 1.0 / r;
+  // camera-frame normal -> ball frame, for the pattern
+  const Mat3 to_ball = brot.transpose() * c.rot;
+  const uint8_t *col = white_ball_ ? kBallWhite : kOrange;
+  // realism: the light where the ball is (its chroma scaled with it)
+  const double lit = look.light ? look.light->ambient(centre.x(), centre.y()) : 1.0;
+  const int bu = look.light ? sat(128 + (int)std::lround((col[1] - 128) * lit)) : col[1];
+  const int bv = look.light ? sat(128 + (int)std::lround((col[2] - 128) * lit)) : col[2];
   std::vector<uint8_t> ys(W);
   for (int v = v0; v <= v1; v++) {
     int first = -1, last = -2;
-    const double dz = -(v - cv) * inv_f;
+    const double dz = -(v - cv) * inv_fv;
     for (int u = u0; u <= u1; u++) {
       const double dy = -(u - cu) * inv_f;   // ray (1, dy, dz)
       const double dd = 1 + dy * dy + dz * dz, sd = sx + sy * dy + sz * dz;
@@ -341,14 +459,25 @@ void Renderer::ball(const Camera &c, const Vec3 &centre, double r, uint32_t fram
       const double t = (sd - std::sqrt(disc)) / dd;
       if (t < kNear) continue;
       const double nx = (t - sx) * inv_r, ny = (t * dy - sy) * inv_r, nzz = (t * dz - sz) * inv_r;
-      const double shade = 0.45 + 0.55 * std::max(0.0, nx * lc.x() + ny * lc.y() + nzz * lc.z());
+      const double shade = (0.45 + 0.55 * std::max(0.0, nx * lc.x() + ny * lc.y() + nzz * lc.z())) * lit;
       if (first < 0) first = u;
       last = u;
-      ys[u - first] = (uint8_t)std::min(255, (int)(kOrange[0] * shade + 0.5));
+      int base = col[0];
+      if (white_ball_) {
+        const Vec3 nb = to_ball * Vec3(nx, ny, nzz);
+        for (const Vec3 &a : kPatchAxes) {
+          if (std::fabs(nb.dot(a)) > kPatchCos) {
+            base = kBallPatch[0];
+            break;
+          }
+        }
+      }
+      ys[u - first] = (uint8_t)std::min(255, (int)(base * shade + 0.5));
     }
-    // the silhouette of a sphere is convex: one span per row
+    // the silhouette of a sphere is convex: one span per row (the patches are neutral grey: the
+    // chroma stays the ball's)
     if (first >= 0) {
-      put_span(img + (size_t)v * W * 2, first, last, ys.data(), 0, kOrange[1], kOrange[2], nz, (uint32_t)(v * W));
+      put_span(img + (size_t)v * W * 2, first, last, ys.data(), 0, bu, bv, nz, (uint32_t)(v * W));
     }
   }
 }
@@ -357,32 +486,130 @@ uint32_t Renderer::noise_offset(uint32_t frame) const {
   return (uint32_t)((frame * 2654435761u) ^ (uint32_t)seed_);
 }
 
-void Renderer::render(const Camera &c, const std::vector<Solid> &solids, int self,
-                      const std::vector<int> &hide, const Vec3 &ball_centre, double ball_radius,
-                      uint32_t frame, uint8_t *img) const {
-  if (!c.pos.allFinite() || !c.rot.allFinite()) {
-    memset(img, 0, (size_t)c.width * c.height * 2);   // a broken pose: a black frame, never a crash
-    return;
+const LensMap &Renderer::lens_map(const Lens &l) const {
+  std::lock_guard<std::mutex> g(maps_mu_);
+  for (const auto &m : maps_) {
+    const Lens &k = m->lens;
+    if (k.width == l.width && k.height == l.height && k.fx == l.fx && k.fy == l.fy && k.cx == l.cx &&
+        k.cy == l.cy && k.k1 == l.k1 && k.k2 == l.k2)
+      return *m;
   }
-  ground(c, frame, img);
+  maps_.emplace_back(new LensMap);
+  lens_map_build(l, maps_.back().get());
+  return *maps_.back();
+}
+
+// The blur, gains and noise of a frame (realism).
+void Renderer::develop_settings(const Shot &sh, Develop *d) const {
+  realism_drift(real_, seed_, sh.self, sh.time, &d->gain, &d->wb_red, &d->wb_blue);
+  d->noise_luma = real_.noise_luma;
+  d->noise_chroma = real_.noise_chroma;
+  d->noise_offset = noise_offset(sh.frame) * 2;
+  d->taps = 1;
+  if (!sh.has_start || !sh.cam_start.pos.allFinite() || !sh.cam_start.rot.allFinite()) return;
+  // motion blur: where the point seen at the image centre at the end of the exposure was seen at
+  // its start (the ground point there, or one 5 m away above the horizon); the image moves along
+  // that flow during the exposure (rotation about the optical axis is left out: uniform blur)
+  const Camera &c = sh.cam;
+  const Vec3 dir = c.rot.col(0);
+  const double t = dir.z() < -1e-3 ? std::min(5.0, -c.pos.z() / dir.z()) : 5.0;
+  double u, v;
+  if (!camera_project(sh.cam_start, c.pos + t * dir, &u, &v)) return;
+  const double fu = u - c.pu(), fv = v - c.pv(), len = std::hypot(fu, fv);
+  if (!(len >= 0.5)) return;
+  // samples 1 px apart along the flow, at most 8 (a longer smear is sampled more sparsely: a fast
+  // head turn's 20 px smear every 2.5 px, which the eye and a detector hardly tell from a continuous one)
+  const int n = std::min(Develop::kMaxTaps, (int)std::ceil(len));
+  d->taps = n;
+  for (int k = 0; k < n; k++) {
+    const double s = (k + 0.5) / n;   // the frame at time s of the exposure, seen back from its end
+    d->dx[k] = (int)std::lround(s * fu);
+    d->dy[k] = (int)std::lround(s * fv);
+  }
+}
+
+void Renderer::draw(const Shot &sh, const Camera &c, const std::vector<Solid> &solids, const Look &look,
+                    uint8_t *img) const {
+  ground(c, look, img);
   // painter's order: farthest first; index -1 is the ball
   std::vector<std::pair<double, int>> order;
   for (size_t i = 0; i < solids.size(); i++) {
     const Solid &s = solids[i];
-    if (s.robot == self && std::find(hide.begin(), hide.end(), s.link) != hide.end()) continue;
+    if (s.robot == sh.self && sh.hide && std::find(sh.hide->begin(), sh.hide->end(), s.link) != sh.hide->end())
+      continue;
     Vec3 centre = Vec3::Zero();
     for (const Vec3 &p : s.v) centre += p;
     centre /= (double)s.v.size();
     order.push_back({(centre - c.pos).norm(), (int)i});
   }
-  order.push_back({(ball_centre - c.pos).norm(), -1});
+  order.push_back({(sh.ball - c.pos).norm(), -1});
   std::sort(order.begin(), order.end(), [](const std::pair<double, int> &a, const std::pair<double, int> &b) {
     return a.first > b.first || (a.first == b.first && a.second < b.second);
   });
   for (const auto &o : order) {
-    if (o.second < 0) ball(c, ball_centre, ball_radius, frame, img);
-    else solid(c, solids[o.second], frame, img);
+    if (o.second < 0) ball(c, sh.ball, sh.ball_rot, sh.ball_radius, look, img);
+    else solid(c, solids[o.second], look, img);
   }
+}
+
+void Renderer::render(const Shot &sh, const std::vector<Solid> &solids, uint8_t *img) const {
+  const Camera &c = sh.cam;
+  if (!c.pos.allFinite() || !c.rot.allFinite()) {
+    memset(img, 0, (size_t)c.width * c.height * 2);   // a broken pose: a black frame, never a crash
+    return;
+  }
+  if (!real_.on && !c.distorted()) {
+    // the clean camera: drawn in place, its luma noise as it goes
+    draw(sh, c, solids, Look{Noise{noise_.data(), noise_offset(sh.frame)}, nullptr}, img);
+    return;
+  }
+  // a pinhole image into a scratch (larger than the frame where the lens shows more), then developed
+  Develop d;
+  Camera pin = c;
+  if (c.distorted()) {
+    d.map = &lens_map(c.lens());
+    pin.width = d.map->width;
+    pin.height = d.map->height;
+    pin.fx = c.fu();
+    pin.fy = c.fv();
+    pin.cx = d.map->cx;
+    pin.cy = d.map->cy;
+    pin.k1 = pin.k2 = 0;
+  }
+  if (real_.on) develop_settings(sh, &d);
+  // without a lens map and a blur the pinhole image is the frame: drawn and developed in place
+  thread_local std::vector<uint8_t> scratch_buf;
+  uint8_t *scratch = img;
+  if (d.map || d.taps > 1) {
+    scratch_buf.resize((size_t)pin.width * pin.height * 2);
+    scratch = scratch_buf.data();
+  }
+  if (!real_.on) {
+    draw(sh, pin, solids, Look{Noise{noise_.data(), noise_offset(sh.frame)}, nullptr}, scratch);
+  } else {
+    // the light over the field: a gradient across the carpet, soft shadows under each robot's torso
+    // and under the ball
+    Lighting light;
+    const double a = real_.light_gradient / half_diagonal_;
+    light.gx = a * std::cos(light_dir_);
+    light.gy = a * std::sin(light_dir_);
+    int last_robot = -1;
+    for (const Solid &s : solids) {
+      if (s.robot < 0 || s.link != 0 || s.robot == last_robot || real_.shadow_robot <= 0) continue;
+      last_robot = s.robot;
+      Vec3 m = Vec3::Zero();
+      for (const Vec3 &p : s.v) m += p;
+      m /= (double)s.v.size();
+      const double sg = real_.shadow_robot_radius;
+      light.casters.push_back({m.x(), m.y(), 1 / (2 * sg * sg), real_.shadow_robot});
+    }
+    if (real_.shadow_ball > 0) {
+      const double sg = 0.7 * sh.ball_radius;   // a contact shadow, darkest where the ball touches
+      light.casters.push_back({sh.ball.x(), sh.ball.y(), 1 / (2 * sg * sg), real_.shadow_ball});
+    }
+    draw(sh, pin, solids, Look{Noise{zeros_.data(), 0}, &light}, scratch);
+  }
+  dev_.run(d, scratch, c.width, c.height, img);
 }
 
 }  // namespace sim

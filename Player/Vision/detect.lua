@@ -105,13 +105,14 @@ end
 -- inside a run, never field), width_tolerance {low, high} (factor on the expected width), max_range (m).
 local col_top, col_bot, col_ok = {}, {}, {}
 
--- the label row (continuous) of the horizon in full-resolution column u, or nil
+-- the label row (continuous) of the horizon in full-resolution column u, or nil (the pinhole's:
+-- a webcam lens bends it by a few pixels at most, within the posts' tolerances)
 local function horizon_v(cm, pose, u)
   local R = pose.R
   if math.abs(R[9]) < 1e-3 then return nil end
-  local b = -(u - cm.cx) / cm.f
+  local b = -(u - cm.cx) / cm.fx
   local c = -(R[7] + R[8] * b) / R[9]
-  return cm.cy - cm.f * c
+  return cm.cy - cm.fy * c
 end
 
 function M.goal_posts(p, cm, pose, cfg, out)

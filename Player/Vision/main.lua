@@ -47,7 +47,8 @@ local vcfg = Config.load('vision', { scale = 'number', block = 'number', colors 
            max_aspect = 'number', green_below = 'number', max_range = 'number' },
   goal = { color = 'number', diameter = 'number', min_rise = 'number' } })
 local ccfg = Config.load('camera', { driver = 'string', width = 'number', height = 'number',
-  fps = 'number', fovy = 'number' })
+  fps = 'number', fovy = 'number', intrinsics = { fx = 'number', fy = 'number', cx = 'number', cy = 'number' },
+  distortion = { k1 = 'number', k2 = 'number' } })
 
 -- the camera's settings with the command line's overrides
 local cam_settings = {}
@@ -75,7 +76,8 @@ local function rebuild(key)
   local fresh, perr = pipeline.new(vcfg, ccfg, model)
   if fresh then vp = fresh else log('%s: pipeline not rebuilt: %s', key, perr) end
 end
-for _, key in ipairs({ 'vision.scale', 'vision.block', 'vision.lut', 'vision.colors', 'camera.fovy' }) do
+for _, key in ipairs({ 'vision.scale', 'vision.block', 'vision.lut', 'vision.colors', 'camera.fovy',
+                       'camera.intrinsics', 'camera.distortion', 'vision.ball.kind', 'vision.ball.white.model' }) do
   params_live:on(key, rebuild)
 end
 params_live:on('camera.fps', function(_, fps) cam_settings.fps = fps end)
@@ -128,6 +130,16 @@ local function publish(frame, det)
   b.goal_posts[0] = goals.n
   for i = 1, goals.n do
     b.goal_position[2 * i - 2], b.goal_position[2 * i - 1] = goals[i].x, goals[i].y
+  end
+  b.ball_kind[0] = ball.kind
+  b.ball_score[0] = ball.detected and ball.score or 0
+  local robots = det.robots
+  b.robots[0] = robots.n
+  for i = 1, robots.n do
+    local r, k = robots[i], 4 * (i - 1)
+    b.robot_position[2 * i - 2], b.robot_position[2 * i - 1] = r.x, r.y
+    b.robot_image[k], b.robot_image[k + 1], b.robot_image[k + 2], b.robot_image[k + 3] = r.u0, r.v0, r.u1, r.v1
+    b.robot_team[i - 1] = r.team
   end
   b.fps[0] = fps
   b:end_write()

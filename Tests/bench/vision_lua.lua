@@ -21,7 +21,7 @@ q[2] = -0.5
 local rpy = { 0, 0 }
 -- the ball drawn where the camera sees a ball 1.5 m ahead, 0.2 m left
 local pose = model:camera_pose(q, rpy)
-local cm = project.camera(W, H, ccfg.fovy)
+local cm = project.from_config(ccfg)
 local bu, bv, depth = project.to_image(cm, pose, 1.5, 0.2, 0.07)
 local br = cm.f * 0.07 / depth
 

@@ -23,7 +23,7 @@ local scfg = Config.load('sim')
 local vcfg, ccfg = Config.load('vision'), Config.load('camera')
 local model = assert(kinematics.load())
 local vp = assert(pipeline.new(vcfg, ccfg, model))
-local cm = project.camera(ccfg.width, ccfg.height, ccfg.fovy)
+local cm = project.from_config(ccfg)
 local cam = assert(camera.open({ driver = 'sim', width = ccfg.width, height = ccfg.height }))
 
 local sensor, act, sim, sync = shm.open('dcm.sensor'), shm.open('dcm.actuator'), shm.open('sim'), shm.open('sync')

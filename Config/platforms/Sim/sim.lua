@@ -58,6 +58,21 @@ return {
     rolling = 0.007,
     bounce = 0.5,                -- restitution on the carpet, posts and robots
     start = { 0, 0 },
+    -- how the camera sees it: 'white' (today's Humanoid League ball: white with a dark patch
+    -- around each of the 12 pentagon centres of a truncated icosahedron, turning with the ball) or
+    -- 'orange' (plain, the seed's ball, which the colour-table vision finds)
+    kind = 'orange',
+  },
+
+  -- Team colours as the cameras see them: each robot's torso (its root link) wears its team's jersey.
+  teams = {
+    -- Y, U, V (BT.601 full range, as the camera's frames) of team 1 and team 2: red (RGB 200, 30, 45)
+    -- and blue (RGB 30, 70, 190), the Humanoid League's usual pair. The red keeps U >= 104, clear of
+    -- the orange ball's U (52) and of the colour table's orange box (Config/common/vision.lua).
+    colours = { { 83, 107, 212 }, { 72, 195, 98 } },
+    -- the team (1 or 2) of each robot in the order of --robots; robots beyond the list: the first
+    -- half of the world's robots team 1, the rest team 2 (as Tests/bench/match.sh gives them out)
+    of_robot = {},
   },
 
   -- the simulated camera: size, rate and field of view are the body's (Config/robots/<ROBOT>/camera.lua),
@@ -65,7 +80,37 @@ return {
   camera = {
     frame = 'camera_link',       -- URDF frame: x along the optical axis, z image-up
     latency_ticks = 4,           -- a frame exposed at tick N is delivered with sensor tick N + 4 (32 ms)
-    noise = 2,                   -- standard deviation of the luma noise, grey levels
+    noise = 2,                   -- the clean camera's luma noise (standard deviation, grey levels)
+    -- The camera's imperfections (Platforms/Sim/effects.h): true in every sim run and scenario test;
+    -- false: the clean camera (flat light, only the luma noise above) for exact regression tests.
+    -- The lens's distortion (the body's camera.lua calibration) is drawn either way: it is the
+    -- camera's geometry, which the vision undoes, not a disturbance. Deterministic for a seed.
+    realism = true,
+    -- s the shutter is open: the image smears along the camera's motion from the pose at its start
+    -- to the one at its end (head and body). 10 ms: a C920 at exposure_absolute 100 (units of
+    -- 100 us), a usual fixed indoor setting that keeps the gain low; darker halls need longer.
+    exposure = 0.010,
+    -- sensor noise after the camera's own processing (grey levels, standard deviation): luma at
+    -- mid-grey 128, growing with the square root of the signal (shot noise), and chroma. A C920 in a
+    -- lit hall measures ~2-3 in luma on a flat grey card; chroma less, the UV planes being averaged
+    -- over two pixels.
+    noise_luma = 3.0,
+    noise_chroma = 2.0,
+    -- exposure and white balance drift over time with fixed camera settings (the light changes:
+    -- daylight through windows, lamps warming up): relative amplitude of the brightness, of the red
+    -- and blue gains, and the slower period in s (a second one at period / 2.71)
+    gain_drift = 0.06,
+    wb_drift = 0.03,
+    drift_period = 20,
+    -- uneven light: the illumination changes by this fraction across the carpet's half-diagonal
+    -- (a seeded direction; the HL asks for no particular light, halls vary by 20-30% over a field)
+    light_gradient = 0.10,
+    -- soft shadows of the hall's overhead lights: the darkening at the centre of a shadow under a
+    -- robot's torso (Gaussian, standard deviation shadow_robot_radius m) and under the ball (a
+    -- contact shadow, 0.7 ball radii)
+    shadow_robot = 0.35,
+    shadow_robot_radius = 0.12,
+    shadow_ball = 0.5,
   },
 
   -- Start poses of the robots in the order of --robots (x, y, yaw); more robots wrap around.

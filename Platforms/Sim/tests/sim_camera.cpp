@@ -1,5 +1,6 @@
-// sim_camera: the head camera's rasterizer (TAP). The ball's rendered centroid must match the
-// projection of its centre, its size the pinhole model; the goal and lines must show up white.
+// sim_camera: the head camera's rasterizer, the clean camera (TAP). The ball's rendered centroid must
+// match the projection of its centre, its size the pinhole model, and through the lens's distortion
+// the distorted projection; the goal and lines must show up white. (The realism: sim_realism.cpp.)
 // Frames rendered on the worker thread while the world steps on must equal those rendered in place.
 #include <cmath>
 #include <cstdio>
@@ -17,6 +18,7 @@ int main() {
     sim::Params p;
     sim::Model m;
     sim::load_all(&p, &m);
+    p.realism.on = false;   // the clean camera, whatever sim.lua says
     sim::World w(p, m, 1, 3);
     sim::Renderer ren(p, 3);
     const int W = p.cam_width, H = p.cam_height;
@@ -31,7 +33,7 @@ int main() {
     std::mt19937 rng(11);
     std::uniform_real_distribution<double> U(0, 1);
     int scenes = 0, inview = 0, worst_scene = -1;
-    double worst = 0, worst_size = 0;
+    double worst = 0, worst_size = 0, worst_lens = 0;
     while (scenes < 60) {
       // robot somewhere in its half facing roughly forward, ball 0.3..4 m ahead, head anywhere
       std::vector<double> q = sim::stance_pose(m, p);
@@ -45,7 +47,9 @@ int main() {
       w.camera_pose(0, &c.pos, &c.rot);
       c.width = W;
       c.height = H;
-      c.fovy = p.cam_fovy;
+      c.calibrate(p);
+      const sim::Camera lens = c;   // the body's calibration, with its distortion
+      c.k1 = c.k2 = 0;              // this part: the pinhole
       double pu, pv;
       const sim::Vec3 ball = w.ball_position();
       scenes++;
@@ -58,18 +62,26 @@ int main() {
       // the robot's own arms may hide the ball: this part checks the projection, so hide them all
       std::vector<int> all;
       for (size_t i = 0; i < m.links.size(); i++) all.push_back((int)i);
-      ren.render(c, solids, 0, all, ball, w.ball_radius(), (uint32_t)scenes, img.data());
-      double su = 0, sv = 0, n = 0;
-      for (int v = 0; v < H; v++) {
-        for (int u = 0; u < W; u++) {
-          const uint8_t *px = &img[(size_t)v * W * 2 + 4 * (u / 2)];
-          if (px[1] < 90 && px[3] > 180) {   // orange chroma
-            su += u;
-            sv += v;
-            n++;
+      // the centroid of the orange pixels (n of them) of a frame
+      auto centroid = [&](const sim::Camera &cam, double *cu, double *cv, double *count) {
+        ren.render(sim::shot_of(w, cam, 0, &all, (uint32_t)scenes), solids, img.data());
+        double su = 0, sv = 0, k = 0;
+        for (int v = 0; v < H; v++) {
+          for (int u = 0; u < W; u++) {
+            const uint8_t *px = &img[(size_t)v * W * 2 + 4 * (u / 2)];
+            if (px[1] < 90 && px[3] > 180) {   // orange chroma
+              su += u;
+              sv += v;
+              k++;
+            }
           }
         }
-      }
+        *cu = k > 0 ? su / k : 0;
+        *cv = k > 0 ? sv / k : 0;
+        *count = k;
+      };
+      double mu, mv, n;
+      centroid(c, &mu, &mv, &n);
       if (n < 3) {
         printf("# scene %d: ball at %.2f m not found (occluded by the robot itself?)\n", scenes, dist);
         continue;
@@ -92,7 +104,18 @@ int main() {
         eu += (pu - (W - 1) / 2.0) / rn * f * x0;
         ev += (pv - (H - 1) / 2.0) / rn * f * x0;
       }
-      const double err = std::hypot(su / n - eu, sv / n - ev);
+      const double err = std::hypot(mu - eu, mv - ev);
+      if (lens.distorted()) {
+        // through the lens: the silhouette's centre moved as a point; the frame takes each pixel from
+        // the nearest pinhole pixel (up to 0.5 px) and the ellipse bends a little itself (a near ball
+        // is 100 px across): 1.5 px
+        const double xn = (eu - lens.pu()) / lens.fu(), yn = (ev - lens.pv()) / lens.fv();
+        const double k = lens.lens().factor(xn * xn + yn * yn);
+        double lu, lv, ln;
+        centroid(lens, &lu, &lv, &ln);
+        if (ln >= 3) worst_lens = std::max(worst_lens, std::hypot(lu - (lens.pu() + lens.fu() * xn * k),
+                                                                  lv - (lens.pv() + lens.fv() * yn * k)));
+      }
       const double expect_r = f * std::sqrt(semi_a * semi_b);
       const double size_err = std::fabs(std::sqrt(n / M_PI) - expect_r) / expect_r;
       if (std::hypot(eu - pu, ev - pv) > 0.5) {
@@ -110,6 +133,13 @@ int main() {
            "radius error max %.1f%%\n", scenes, inview, worst, worst_scene, 100 * worst_size);
     check(inview >= 20, "enough scenes with the ball in view");
     check(worst < 1.0, "ball's rendered centroid within 1 px of its projection (exact sphere silhouette)");
+    {
+      sim::Camera lc;
+      lc.calibrate(p);
+      printf("# through the body's lens (k1 %g, k2 %g): centroid vs distorted projection max %.2f px\n", lc.k1, lc.k2,
+             worst_lens);
+      check(worst_lens < 1.5, "through the lens's distortion the ball's centroid is within 1.5 px of its distorted projection");
+    }
     check(worst_size < 0.05, "ball's rendered area within 5% of the projected silhouette's");
 
     // a goal and the lines: looking at the +x goal from the penalty mark
@@ -121,9 +151,9 @@ int main() {
     w.camera_pose(0, &c.pos, &c.rot);
     c.width = W;
     c.height = H;
-    c.fovy = p.cam_fovy;
+    c.calibrate(p);
     w.solids(&solids);
-    ren.render(c, solids, 0, hide, w.ball_position(), w.ball_radius(), 0, img.data());
+    ren.render(sim::shot_of(w, c, 0, &hide, 0), solids, img.data());
     double pu, pv;
     const double post_y = p.goal_width / 2 + p.post_diameter / 2;
     bool ok = sim::camera_project(c, sim::Vec3(p.field_length / 2, post_y, 0.8), &pu, &pv);
@@ -160,7 +190,7 @@ int main() {
         w2.camera_pose(0, &j.cam.pos, &j.cam.rot);
         j.cam.width = W;
         j.cam.height = H;
-        j.cam.fovy = p.cam_fovy;
+        j.cam.calibrate(p);
         w2.snapshot(&j.scene);
         j.self = 0;
         j.seq = (uint32_t)k;
@@ -170,7 +200,7 @@ int main() {
         sim::Camera c2 = j.cam;
         last = worker.submit(j);
         w2.solids(&solids);
-        ren.render(c2, solids, 0, hide2, w2.ball_position(), w2.ball_radius(), (uint32_t)k, direct[k].data());
+        ren.render(sim::shot_of(w2, c2, 0, &hide2, (uint32_t)k), solids, direct[k].data());
       }
       worker.wait(last);
       int same = 0;

@@ -82,7 +82,7 @@ int main(int argc, char **argv) {
           w.camera_pose(r, &c.pos, &c.rot);
           c.width = p.cam_width;
           c.height = p.cam_height;
-          c.fovy = p.cam_fovy;
+          c.calibrate(p);
           last_img = bufs[frames % in_flight].data();
           if (worker) {
             sim::CameraWorker::Job j;
@@ -93,7 +93,7 @@ int main(int argc, char **argv) {
             j.out = last_img;
             pending.push_back({t + 1 + latency, worker->submit(std::move(j))});
           } else {
-            ren.render(c, solids, r, hide, w.ball_position(), w.ball_radius(), frames, last_img);
+            ren.render(sim::shot_of(w, c, r, &hide, (uint32_t)frames), solids, last_img);
           }
           frames++;
         }
