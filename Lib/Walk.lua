@@ -8,6 +8,10 @@
 --   Walk.reload()                    -- re-read the body's walk.lua (Config/robots/<ROBOT>/) in the motion process
 --   Walk.param_status()              -- 'applied' / 'pending' / the reason of a refusal
 --   Walk.get('tStep')                -- value in the config file (as this process read it)
+--   Walk.kick('forward', 'left', 0.2, 0.05)  -- a kick out of the walk ('forward' or 'side') with that
+--                                     -- foot on its next step, through the ball at (x, y) m in the
+--                                     -- robot frame (optional: else the config's nominal spot);
+--                                     -- Walk.kick_status(): phase ('none', 'asked', 'kicking'), kicks done
 -- Talks to the motion process through the `motion` shm block (velocity, param_*).
 local shm = require('shm')
 local Config = require('Config')
@@ -42,6 +46,36 @@ function M.velocity()
 end
 function M.stop() return M.set_velocity(0, 0, 0) end
 
+local function finite(x) return type(x) == 'number' and x == x and x ~= math.huge and x ~= -math.huge end
+
+local KINDS = { forward = 1, side = 2 }
+local PHASES = { [0] = 'none', [1] = 'asked', [2] = 'kicking' }
+
+-- Asks the walk for a kick out of the walk (see the header); errors on a caller mistake.
+-- Walk.kick(nil) cancels a request not yet honoured.
+function M.kick(kind, foot, bx, by)
+  local k = 0
+  if kind ~= nil then
+    k = KINDS[kind] or error("Walk.kick: kind must be 'forward' or 'side', got '" .. tostring(kind) .. "'", 2)
+    if foot ~= 'left' and foot ~= 'right' then
+      error("Walk.kick: foot must be 'left' or 'right', got '" .. tostring(foot) .. "'", 2)
+    end
+    if bx ~= nil and not (finite(bx) and finite(by)) then error('Walk.kick: the ball needs finite x and y', 2) end
+  end
+  motion():write(function(m)
+    m.kick_request[0], m.kick_request[1] = k, foot == 'right' and 1 or 0
+    m.kick_ball[0], m.kick_ball[1], m.kick_ball[2] = bx or 0, by or 0, bx and 1 or 0
+    m.kick_seq[0] = m.kick_seq[0] + 1
+  end)
+  return true
+end
+
+-- The walk kick's phase ('none', 'asked', 'kicking') and the number of kicks done.
+function M.kick_status()
+  local m = motion()
+  return PHASES[m.kick_phase[0]] or tostring(m.kick_phase[0]), m.kicks[0]
+end
+
 -- Resolves a key path 'a.b' in a table: returns parent table, last key, current value.
 local function lookup(t, path)
   local parent, key = t, nil
@@ -57,8 +91,6 @@ local function lookup(t, path)
   return parent, key, rawget(parent, key)
 end
 M.lookup = lookup
-
-local function finite(x) return type(x) == 'number' and x == x and x ~= math.huge and x ~= -math.huge end
 
 -- Checks a change of walk parameter `name` to `value` against params; returns the list of values
 -- or nil, status code, message.

@@ -25,6 +25,7 @@ bench white_score Tests/bench/white_score.sh
 bench sim_lockstep bash Tests/bench/sim_lockstep.sh 30
 bench camera_realism bash Tests/bench/camera_realism.sh 40
 bench walk_sim Tests/bench/walk_sim.sh
+bench walk_kick Tests/motion/walk_kick_sweep.sh
 bench score_given_pose Tests/bench/score_given_pose.sh
 bench standup_op3 env ROBOT=op3 Tests/motion/standup_stats.sh
 bench standup_darwin env ROBOT=darwin Tests/motion/standup_stats.sh

@@ -141,6 +141,22 @@ return {
       turn_gain = 0.8,           -- 1/s
       max_va = 0.4,              -- rad/s
     },
+    -- shooting with a kick out of the walk (Player/BodyFSM/shot.lua, kick.lua): off by default (a
+    -- body whose walk config has walkKick turns it on in its behavior.lua, with its kick zone)
+    walk_kick = {
+      enabled = false,
+      x = { 0.15, 0.28 },      -- m: the ball's centre this far ahead of the torso ...
+      y = { 0.02, 0.11 },      -- m: ... and this far to the side (of the kicking foot)
+      max_age = 0.5,           -- s: the ball seen this recently
+      max_angle = 0.3,         -- rad: the goal's direction from the ball this near the heading ...
+      margin = 0.3,            -- m: ... and within the goal's mouth less this margin each side
+      max_range = 6.0,         -- m: the goal this near
+      max_vy = 0.03,           -- m/s: the walk's sideways speed at most this ...
+      max_va = 0.2,            -- rad/s: ... and its turning
+      speed = 0.08,            -- m/s: walking on straight while the kick is asked for and made
+      max_vx = 0.13,           -- m/s: the kick is asked for once the walk is this slow
+      timeout = 2.0,           -- s waiting for the kick
+    },
     attack_depth = 0.5,        -- m behind the goal line: the point aimed at
     dribble_distance = 1.2,    -- m: nearer than this to the goal line, walk the ball in
     follow_time = 3.0,         -- s walking after the ball following a kick

@@ -83,6 +83,28 @@ function M.kick(side)
   return true
 end
 
+-- A kick out of the walk ('forward' or 'side') with the left or right foot through the ball at
+-- (bx, by) m, robot frame: the walk goes on. False when the robot is not walking.
+function M.walk_kick(kind, foot, bx, by)
+  if not (Walk and Walk.kick) or M.motion_state() ~= 'walk' then return false end
+  Walk.kick(kind, foot, bx, by)
+  M.kicks = M.kicks + 1
+  return true
+end
+
+-- The walk's current (rate-limited) velocity: vx, vy (m/s), va (rad/s).
+function M.walk_velocity()
+  if not (Walk and Walk.velocity) then return last.vx, last.vy, last.va end
+  return Walk.velocity()
+end
+
+-- The kicks out of the walk the motion process has made (a counter).
+function M.walk_kicks()
+  if not (Walk and Walk.kick_status) then return 0 end
+  local _, n = Walk.kick_status()
+  return n
+end
+
 -- Head angles (rad): pan, tilt in the joint convention of Config/<platform>/robot.lua.
 function M.head(pan, tilt)
   motion.head_command[0], motion.head_command[1] = pan, tilt

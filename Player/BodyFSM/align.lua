@@ -1,6 +1,7 @@
 -- Fine positioning: the ball just ahead of one foot, facing the opponent goal.
 local nav = require('BodyFSM.nav')
 local localize = require('BodyFSM.localize')
+local shot = require('BodyFSM.shot')
 
 local M = {}
 local t0, good, side
@@ -14,6 +15,8 @@ function M.update(ctx)
   local cfg = ctx.cfg.body
   if not ctx.world:ball_known() then return 'lost' end
   if localize.needed(ctx) then return 'unsure' end
+  local foot = shot.foot(ctx)
+  if foot then ctx.kick_side = foot return 'shoot' end
   local bx, by, ux, uy = nav.attack(ctx)
   local dist = math.sqrt(bx * bx + by * by)
   if dist > cfg.align_distance + cfg.align_far then return 'far' end

@@ -1,6 +1,7 @@
 -- Walk to the point behind the ball on the line from the opponent goal.
 local nav = require('BodyFSM.nav')
 local localize = require('BodyFSM.localize')
+local shot = require('BodyFSM.shot')
 
 local M = {}
 
@@ -8,6 +9,8 @@ function M.update(ctx)
   local cfg = ctx.cfg.body
   if not ctx.world:ball_known() then return 'lost' end
   if localize.needed(ctx) then return 'unsure' end
+  local foot = shot.foot(ctx)
+  if foot then ctx.kick_side = foot return 'shoot' end
   local tx, ty, ha = nav.behind_ball(ctx)
   local vx, vy, va, d = nav.go_to(ctx, tx, ty, ha)
   ctx.act.walk(vx, vy, va)

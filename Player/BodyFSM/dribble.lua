@@ -3,6 +3,7 @@
 -- instead of kicking when the kick moves the ball little (config body.dribble).
 local nav = require('BodyFSM.nav')
 local localize = require('BodyFSM.localize')
+local shot = require('BodyFSM.shot')
 
 local M = {}
 
@@ -11,6 +12,8 @@ function M.update(ctx)
   local d = cfg.dribble
   if not ctx.world:ball_known() then return 'lost' end
   if localize.needed(ctx) then return 'unsure' end
+  local foot = shot.foot(ctx)
+  if foot then ctx.kick_side = foot return 'shoot' end
   local bx, by, ux, uy = nav.attack(ctx)
   local ea = nav.wrap(math.atan2(uy, ux))
   -- the ball got away (ahead, behind or to the side) or the goal is no longer ahead: align again

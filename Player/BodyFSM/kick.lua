@@ -1,16 +1,36 @@
--- Kick with the foot on the ball's side; without a kick (or when it is refused) walk through the ball.
+-- Kick with the foot on the ball's side: while walking, a kick out of the walk (the walk goes on,
+-- config body.walk_kick); standing, the kick motion; without a kick (or when it is refused) walk
+-- through the ball.
 local M = {}
-local t0, kicked, seen_kick
+local t0, kicked, seen_kick, walking, kicks0
 
 function M.entry(ctx)
+  local cfg = ctx.cfg.body
   t0 = ctx.t
   seen_kick = false
-  kicked = ctx.cfg.body.use_kick and ctx.act.kick(ctx.kick_side or 'left')
+  local wk = cfg.walk_kick
+  walking = wk and wk.enabled and ctx.act.motion_state() == 'walk'
+  if walking then
+    kicks0 = ctx.act.walk_kicks()
+    kicked = false
+  else
+    kicked = cfg.use_kick and ctx.act.kick(ctx.kick_side or 'left')
+  end
 end
 
 function M.update(ctx)
   local cfg = ctx.cfg.body
-  if kicked then
+  if walking then
+    -- walk on straight; the kick is asked for once the walk is as slow as the kick is made for
+    -- (a kick step out of a faster walk throws the robot back), the walk takes it on its next step
+    local wk = cfg.walk_kick
+    ctx.act.walk(wk.speed, 0, 0)
+    if not kicked and ctx.act.walk_velocity() <= wk.max_vx then
+      local b = ctx.world.ball
+      kicked = ctx.act.walk_kick('forward', ctx.kick_side or (b.y >= 0 and 'left' or 'right'), b.x, b.y)
+    end
+    if ctx.act.walk_kicks() > kicks0 or ctx.t - t0 > wk.timeout then return 'done' end
+  elseif kicked then
     local s = ctx.act.motion_state() or ''
     if s:find('kick') then seen_kick = true end
     if (seen_kick and not s:find('kick')) or ctx.t - t0 > cfg.kick_timeout then return 'done' end

@@ -1,6 +1,7 @@
 -- The body's state machine: search (turn, then wander), approach the ball, align behind it towards
 -- the opponent goal, kick (or dribble), follow up; reposition when the ball is lost; stand and
--- localize when the pose is not trusted before attacking by it.
+-- localize when the pose is not trusted before attacking by it. With the ball in the kick zone and
+-- the goal in front (BodyFSM/shot.lua) approach, align and dribble shoot: a kick out of the walk.
 return {
   states = { 'idle', 'search', 'wander', 'approach', 'align', 'kick', 'follow', 'reposition', 'dribble',
     'localize' },
@@ -8,9 +9,10 @@ return {
   transitions = {
     search = { ball = 'approach', timeout = 'wander' },
     wander = { ball = 'approach', timeout = 'search' },
-    approach = { near = 'align', lost = 'reposition', unsure = 'localize' },
-    align = { far = 'approach', done = 'kick', dribble = 'dribble', lost = 'reposition', unsure = 'localize' },
-    dribble = { realign = 'approach', lost = 'reposition', unsure = 'localize' },
+    approach = { near = 'align', lost = 'reposition', unsure = 'localize', shoot = 'kick' },
+    align = { far = 'approach', done = 'kick', dribble = 'dribble', lost = 'reposition', unsure = 'localize',
+      shoot = 'kick' },
+    dribble = { realign = 'approach', lost = 'reposition', unsure = 'localize', shoot = 'kick' },
     localize = { done = 'approach' },
     kick = { done = 'follow' },
     follow = { ball = 'approach', timeout = 'search' },

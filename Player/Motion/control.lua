@@ -24,6 +24,7 @@ local Walk = require('Motion.walk')
 local WalkPreview = require('Motion.walk_preview')
 local keyframe = require('Motion.keyframe')
 local Kick = require('Motion.kick')
+local WalkKick = require('Motion.walk_kick')
 local balance = require('Motion.balance')
 
 local abs = math.abs
@@ -124,6 +125,8 @@ function M.new(opts)
   c.walk = M.walk_engine(params, opts.walk_files).new(params, opts.model):bind(robot, opts.walk_files)
   c.balance = balance.new(params, opts.walk_files)
   c.kick = Kick.new(c.walk)
+  c.walk_kick = WalkKick.new(params)
+  c.walk.step_hook = c.walk_kick
   c.ji = c.walk.ji
   c.roles = roles(c, robot)
   -- keyframe motions are checked at start: a bad file stops the process with the file named
@@ -277,6 +280,7 @@ function Ctl:tick(t)
     m:event('fall', self)
   end
   m:update(self)
+  self.walk_kick:expire(t, m.current == 'walk' and self.walk:is_active())
   -- only the current state's joints keep what was written; a taken joint gets the caller's command
   local owned, taken, write, owner, touch = self.owned, self.taken, self.write, self.owner, self.touch
   for i = 1, n do

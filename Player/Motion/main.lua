@@ -4,7 +4,8 @@
 -- alone; `luajit Player/Motion/main.lua [--initial STATE]` with the env of Run/env.sh too.
 --
 -- Inputs through the `motion` shm block (Lib/Motion.lua, Lib/Walk.lua): request/request_seq,
--- velocity, head_command, param_* (walk parameter changes and config re-reads), taken and
+-- velocity, head_command, kick_* (a kick out of the walk: Walk.kick; out: kick_ack, kick_phase,
+-- kicks), param_* (walk parameter changes and config re-reads), taken and
 -- taken_command (joints a caller took with Body.set_command & co.: written with the caller's
 -- command until Body.release or a request whose state owns them). Outputs: state, walking, fallen,
 -- falls, fall_time, odometry, walk_velocity, the walk's COM, ZMP, feet and capture error, zmp and
@@ -20,6 +21,8 @@ local Motion = require('Motion')
 local WalkAPI = require('Walk')
 local kin = require('kinematics')
 local control = require('Motion.control')
+local walkgen = require('Motion.walk')
+local walk_kick = require('Motion.walk_kick')
 local param = require('param')
 
 ffi.cdef [[ int getpid(void); ]]
@@ -58,6 +61,23 @@ local my_pid = ffi.C.getpid()
 local last_request = motion.request_seq[0]
 motion.pid[0] = my_pid
 local last_param = motion.param_seq[0]
+local last_kick = motion.kick_seq[0]
+
+-- A kick out of the walk from the motion block (Lib/Walk.lua Walk.kick): the ball given in the
+-- robot frame goes into the walk's ground frame through the torso's pose now.
+local function apply_kick()
+  local kind, foot = motion.kick_request[0], motion.kick_request[1]
+  if kind == 0 then ctl.walk_kick:cancel() return end
+  local ball
+  if motion.kick_ball[2] ~= 0 then
+    local w = ctl.walk
+    ball = walkgen.pose_global({ motion.kick_ball[0], motion.kick_ball[1], 0 },
+      { w.torso_x or w.uTorso[1], w.torso_y or w.uTorso[2], w.uTorso[3] })
+  end
+  local ok, err = ctl.walk_kick:request(walk_kick.KIND_NAMES[kind], foot == 0 and 'left' or 'right',
+    ball, ctl.t)
+  if not ok then io.stderr:write('motion: ', err, '\n') end
+end
 
 -- Applies a walk parameter change or a config re-read from the motion block.
 local function apply_param()
@@ -137,6 +157,11 @@ while true do
       last_param = motion.param_seq[0]
       apply_param()
     end
+    if motion.kick_seq[0] ~= last_kick then
+      last_kick = motion.kick_seq[0]
+      apply_kick()
+      motion.kick_ack[0] = last_kick
+    end
     local v = ctl.vel_cmd
     v[1], v[2], v[3] = motion.velocity[0], motion.velocity[1], motion.velocity[2]
     ctl.head[1], ctl.head[2] = motion.head_command[0], motion.head_command[1]
@@ -169,6 +194,7 @@ while true do
       local e = w.cp_err
       m.capture_error[0], m.capture_error[1] = e and e[1] or 0, e and e[2] or 0
       m.walk_steps[0], m.steps_adjusted[0] = w.stats.steps, w.stats.adjusted or 0
+      m.kick_phase[0], m.kicks[0] = ctl.walk_kick:phase(), ctl.walk_kick.count
       local b = ctl.balance
       m.zmp[0], m.zmp[1], m.zmp[2], m.zmp[3] = b.zmp[1], b.zmp[2], w.zmp[1], w.zmp[2]
       m.zmp[4], m.zmp[5], m.zmp_contact[0] = b.shift[1], b.shift[2], b.contact and 1 or 0

@@ -269,8 +269,11 @@ function Walk:begin_step()
   local mid = interp(0.5, self.uLeft2, self.uRight2)
   self.uTorso2 = pose_global({ p.supportX, 0, 0 }, mid)
   -- the step keeps the duration and single-support phase it was planned with (its COM plan is only
-  -- valid for them): a live change of tStep or phSingle (Lib/param.lua) lands at the next step
-  self.T, self.ph1, self.ph2 = T, p.phSingle[1], p.phSingle[2]
+  -- valid for them): a live change of tStep or phSingle (Lib/param.lua) lands at the next step;
+  -- a step hook (a kick out of the walk: Motion.walk_kick) may make this step its own
+  local ph1, ph2 = p.phSingle[1], p.phSingle[2]
+  if self.step_hook then T, ph1, ph2 = self.step_hook:begin_step(self, T, ph1, ph2) end
+  self.T, self.ph1, self.ph2 = T, ph1, ph2
   self:plan_com(T, self.ph1 * T, self.ph2 * T)
   self.stats.steps = self.stats.steps + 1
   return true
@@ -375,6 +378,7 @@ function Walk:advance(dt)
       interp_into(self.uLeft, s, self.uLeft1, self.uLeft2)
       copy3(self.uRight, self.uRight1)
     end
+    if self.step_hook then self.step_hook:swing(self, t) end
     -- heading: turns at a constant rate over the whole step (no yaw jerk from the swing)
     local a1 = wrap(self.uLeft1[3] + 0.5 * wrap(self.uRight1[3] - self.uLeft1[3]))
     local a2 = wrap(self.uLeft2[3] + 0.5 * wrap(self.uRight2[3] - self.uLeft2[3]))
@@ -399,6 +403,7 @@ function Walk:place_feet()
     if self.support == LEFT then rz = self.swing_z else lz = self.swing_z end
   end
   local tz, tp, tr = p.bodyHeight, p.bodyTilt, 0
+  if self.step_hook then tp = tp + self.step_hook.tilt end
   local uL, uR = self.uLeft, self.uRight
   foot_in_torso(self.lpose, uL[1], uL[2], lz, uL[3], tx, ty, tz, ta, tp, tr)
   foot_in_torso(self.rpose, uR[1], uR[2], rz, uR[3], tx, ty, tz, ta, tp, tr)
@@ -519,6 +524,7 @@ function Walk:joint_angles(q, sensors, dt, support)
     if larm and larm.pitch then add_rot(self, q, larm.pitch, 0, p.armSwing * rel[1]) end
     if rarm and rarm.pitch then add_rot(self, q, rarm.pitch, 0, -p.armSwing * rel[1]) end
   end
+  if self.step_hook then self.step_hook:joints(self, q) end
   -- which leg carries the robot: the support leg while stepping, both at stance
   local ss = support and 1 or self:single_support()
   local sup = support or (self.active and self.support or nil)

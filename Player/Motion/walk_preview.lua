@@ -193,7 +193,8 @@ end
 -- Called by begin_step(): this step's ZMP and the planned steps' over the preview window.
 function Preview:plan_com()
   local K = self:gains()
-  local n = self:step_samples()
+  -- this step's samples (a step hook may have made it longer than tStep: Motion.walk_kick)
+  local n = max(1, floor(self.T / self.dt + 0.5))
   local N = K.N
   -- the step begins at the next tick's sample, or after the lead-in of a walk that starts
   local k0 = self.first_k or self.k

@@ -1,8 +1,8 @@
 -- luacheck: std +busted
 -- The behavior (world model + game/head/body machines) closing the loop with an idealised robot:
 -- a kinematic stand-in for the motion process and the camera (the robot moves exactly as
--- commanded, the camera sees what is inside its field of view with range noise, a kick sends
--- the ball off). It checks the soccer logic on its own -- localization from goal posts, approach,
+-- commanded, the camera sees what is inside its field of view with range noise, a kick or a kick
+-- out of the walk sends the ball off). It checks the soccer logic on its own -- localization from goal posts, approach,
 -- alignment, kick -- before physics gets a say; the sim scenario (Tests/scenarios/) checks the rest.
 local shm = require('shm')
 local Motion = require('Motion')
@@ -30,6 +30,7 @@ local function play(behavior, seed, limit)
   local bvx, bvy = 0, 0
   local ox, oy, oa = 0, 0, 0 -- odometry
   local kick_until = -1
+  local walk_kick_seq, walk_kick_at = motion.kick_seq[0], nil
   local noise = lcg(seed + 1000)
   local t0 = sensor.time[0]
   local posts = { { 4.5, 1.3 }, { 4.5, -1.3 }, { -4.5, 1.3 }, { -4.5, -1.3 } }
@@ -54,6 +55,21 @@ local function play(behavior, seed, limit)
       kick_until = -1
       motion.state[0] = Motion.INDEX.stance
       motion.request[0] = Motion.INDEX.stance
+    end
+    -- a kick out of the walk (Walk.kick): taken a step later, the robot walking on
+    if motion.kick_seq[0] ~= walk_kick_seq then
+      walk_kick_seq = motion.kick_seq[0]
+      if motion.kick_request[0] ~= 0 then walk_kick_at = t + 0.3 end
+    end
+    if walk_kick_at and t >= walk_kick_at then
+      walk_kick_at = nil
+      motion.kicks[0] = motion.kicks[0] + 1
+      local c, s = math.cos(-ra), math.sin(-ra)
+      local lx, ly = c * (bx - rx) - s * (by - ry), s * (bx - rx) + c * (by - ry)
+      local foot = motion.kick_request[1] == 0 and 0.05 or -0.05
+      if lx > 0.05 and lx < 0.35 and math.abs(ly - foot) < 0.08 then
+        bvx, bvy = 1.6 * math.cos(ra), 1.6 * math.sin(ra)
+      end
     end
     if kick_until < 0 then
       local walking = req == 'walk'

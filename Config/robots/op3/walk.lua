@@ -109,6 +109,54 @@ return {
       { duration = 0.45 },
     },
   },
+  -- kicks out of the walk (Player/Motion/walk_kick.lua): the kicking foot's swing on a longer step,
+  -- the COM plan and the support foot walking on. The foot's striking face from the URDF's sole
+  -- plate (l_ank_roll_link): its front 0.063 m ahead of the sole point, its outer edge 0.052 m
+  -- outward; the ball's radius 0.07 m, met about 0.06 m above the ground (contact x, y: face +
+  -- the ball's depth at that height). The strike is a short phase: the servos run at their speed
+  -- limit (4.8 rad/s) through it. Way-points relative to the contact point (see walk_kick.lua).
+  -- forward: from the cross-entropy search of Tests/motion/walk_kick_tune.sh (walking at 0.12 m/s,
+  -- both feet, ball positions across the zone, penalised for a fall or a stop): 0.55-0.92 m over
+  -- the sweep of Tests/motion/walk_kick_sweep.sh, the robot walking on; toe ~1.2-1.5 m/s, the foot
+  -- pushes the ball more than it strikes it. Found the hard way: a kick step whose single support
+  -- lasts 0.4 s or more with the foot reaching 0.18 m ahead fell every time (the pendulum plan of a
+  -- long single support is fragile), and a harder strike (hip -1.5, torso back 0.3 rad) fell after
+  -- the kick. side: set by hand (0.5-0.65 m sideways in its zone, not tuned).
+  walkKick = {
+    expire = 1.0,            -- s: a request no step honoured by then is dropped
+    maxSpeed = { 0.15, 0.04, 0.3 }, -- m/s, m/s, rad/s: the walk no faster at the kick step's start
+                             -- (tuned at 0.12 m/s straight; out of a 0.25 m/s walk it fell)
+    forward = {
+      tStep = 0.565, phSingle = { 0.06, 0.94 },
+      ball = { x = 0.21, y = 0.013 },
+      contact = { x = 0.13, y = 0.013 },
+      reach = { x = { -0.07, 0.14 }, y = { 0.07, 0.16 } },
+      support = { x = 0.006, y = 0.003 },
+      phases = {
+        { duration = 0.05, x = -0.10, z = 0.04 },
+        { duration = 0.1874, x = -0.2, z = 0.0612, hip = -0.0857, knee = 0.5811, ankle = -0.4477, arm = 0.3 },
+        { duration = 0.03, x = 0.035, z = 0.0302, hip = -0.5656, knee = -0.1176, ankle = 0.2674, arm = 0.2,
+          tilt = -0.2389, arms = 0.3789 },
+        { duration = 0.0912, x = 0.035, z = 0.0302, hip = -0.5656, knee = -0.1176, ankle = 0.2674, arm = 0.2,
+          tilt = -0.2389, arms = 0.3789 },
+        { duration = 0.0786, x = -0.04, z = 0.045 },
+      },
+    },
+    side = {
+      tStep = 0.7, phSingle = { 0.08, 0.92 },
+      ball = { x = 0.05, y = 0.13 },
+      contact = { x = 0.0, y = 0.12 },
+      reach = { x = { -0.06, 0.12 }, y = { 0.07, 0.2 } },
+      support = { x = 0.0, y = 0.0 },
+      phases = {
+        { duration = 0.06, y = -0.02, z = 0.04 },
+        { duration = 0.17, y = -0.06, z = 0.05, hipRoll = -0.2, knee = 0.0, ankle = 0.0 },
+        { duration = 0.04, y = 0.08, z = 0.05, hipRoll = 0.3, knee = 0.0, ankle = 0.0, tilt = 0.0 },
+        { duration = 0.1, y = 0.08, z = 0.05, hipRoll = 0.3, knee = 0.0, ankle = 0.0, tilt = 0.0 },
+        { duration = 0.12, y = 0.0, z = 0.04 },
+      },
+    },
+  },
   -- stance and transitions
   tStance = 1.0,             -- s, to move into the stance from the current pose
   hardnessLegs = 1.0,

@@ -28,11 +28,15 @@ function M.update(c)
   end
   c:balance_update()
   local active = w:advance(c.dt)
+  -- a kick out of the walk may throw the torso back on purpose: the fall detection allows for it
+  c.tilt = w.step_hook and w.step_hook.tilt or 0
   w:joint_angles(c.q, c.sensors, c.dt)
   c:head_angles(c.q)
   w:update_com_offset(c.q)
   c:set_hardness(c.p.hardnessLegs, c.p.hardnessArms, c.p.hardnessHead)
   if not active then return 'done' end
 end
+
+function M.exit(c) c.tilt = 0 end
 
 return M

@@ -1,0 +1,29 @@
+-- Whether to shoot now with a kick out of the walk (Lib/Walk.lua Walk.kick): the ball in the kick
+-- zone ahead of one foot and the goal in front (the kick goes along the robot's heading), the pose
+-- trusted, the walk going straight (the kick is made for that). Config body.walk_kick
+-- (Config/common/behavior.lua; the body's zone in its behavior.lua).
+local nav = require('BodyFSM.nav')
+local localize = require('BodyFSM.localize')
+
+local M = {}
+
+-- The kicking foot ('left' or 'right') when a shot is on, else nil.
+function M.foot(ctx)
+  local cfg = ctx.cfg.body
+  local wk = cfg.walk_kick
+  if not (wk and wk.enabled) or not ctx.world:ball_known() or localize.needed(ctx) then return nil end
+  if ctx.world:ball_age() > wk.max_age then return nil end
+  local bx, by, ux, uy, dist = nav.attack(ctx)
+  if bx < wk.x[1] or bx > wk.x[2] or math.abs(by) < wk.y[1] or math.abs(by) > wk.y[2] then return nil end
+  if dist > wk.max_range then return nil end
+  -- the kick is made for walking straight on: not while side-stepping or turning
+  local _, vy, va = ctx.act.walk_velocity()
+  if math.abs(vy) > wk.max_vy or math.abs(va) > wk.max_va then return nil end
+  -- the goal's direction from the ball within the angle the goal's mouth (less a margin) allows
+  local gw = ctx.world.cfg.field.goal_width / 2 - wk.margin
+  local allowed = math.min(wk.max_angle, math.atan2(math.max(gw, 0), math.max(dist - (cfg.attack_depth or 0), 0.1)))
+  if math.abs(nav.wrap(math.atan2(uy, ux))) > allowed then return nil end
+  return by > 0 and 'left' or 'right'
+end
+
+return M
