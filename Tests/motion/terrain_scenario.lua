@@ -1,0 +1,77 @@
+-- Walking over terrain in the sim's lockstep (Tests/motion/terrain_test.sh puts the layout's boxes
+-- into the world through a site overlay: Tests/motion/terrain.lua):
+--   ./run_repl Tests/motion/terrain_scenario.lua LAYOUT [fb|nofb]...
+-- For each case: the robot from its start in front of the layout walks forward (0.15 m/s) over it
+-- until it is past its far end: no fall, and it gets there within 40 s. `fb`: the walk's IMU
+-- feedback as configured (the OP3 has no foot force sensors on the real robot, so its F/T balance
+-- stays off: Config/robots/op3/walk.lua); `nofb`: the gyro feedback switched off as well.
+-- Prints TAP lines and "# " figures (the torso's height change tells the robot was up there).
+-- luacheck: globals Sim Motion Walk wait Body
+package.path = os.getenv('HRP_ROOT') .. '/Tests/motion/?.lua;' .. package.path
+if not Sim then Sim = require('sim_shim') end -- luacheck: ignore Sim
+local terrain = require('terrain')
+local ks = require('kick_setup')
+local sc = require('Tests.scenario_lib').new(wait, Body)
+local tap, note, wait_until = sc.tap, sc.note, sc.wait_until
+
+local layout_name = arg[1]
+local layout = terrain[layout_name or '']
+if type(layout) ~= 'table' or not layout.objects then
+  tap(false, 'terrain: unknown layout ' .. tostring(layout_name))
+  os.exit(1)
+end
+if not ks.wait_for_motion(wait) then
+  tap(false, 'the motion process is not running')
+  os.exit(1)
+end
+
+-- the gyro feedback's gains as configured, and switched off
+local FB = {}
+for _, k in ipairs({ 'ankle', 'knee', 'hip', 'arm' }) do
+  local v = Walk.get('feedback.' .. k)
+  FB[k] = type(v) == 'table' and { v[1], v[2] } or v
+end
+local function feedback(on)
+  for k, v in pairs(FB) do
+    local off = type(v) == 'table' and { 0, 0 } or 0
+    while not Walk.set('feedback.' .. k, on and v or off) do wait(0.01) end
+  end
+end
+
+local function walk_over(mode)
+  feedback(mode ~= 'nofb')
+  Sim.reset()
+  wait(0.2)
+  Sim.teleport_robot(layout.start[1], layout.start[2], layout.start[3])
+  wait(0.2)
+  Walk.set_velocity(0, 0, 0)
+  Motion.request('stand')
+  wait_until(function() return Motion.state() == 'stance' end, 10)
+  wait(1.5)
+  local a = Sim.truth()
+  local falls0 = Motion.falls()
+  Motion.request('walk')
+  Walk.set_velocity(0.15, 0, 0)
+  local fell, zmax, zmin = false, a.z, a.z
+  local arrived = wait_until(function()
+    local s = Sim.truth()
+    zmax, zmin = math.max(zmax, s.z), math.min(zmin, s.z)
+    if s.fallen or Motion.falls() > falls0 then fell = true end
+    return fell or s.x >= layout.finish
+  end, 40)
+  local b = Sim.truth()
+  Walk.set_velocity(0, 0, 0)
+  Motion.request('stand')
+  wait(1.5)
+  fell = fell or Sim.truth().fallen or Motion.falls() > falls0
+  note('terrain %s (%s): walked %.2f m in x, sideways %.2f m, the torso rose %.3f m at most (and sank %.3f m), %s',
+    layout_name, mode, b.x - a.x, b.y - a.y, zmax - a.z, a.z - zmin, fell and 'FELL' or 'no fall')
+  tap(arrived and not fell, string.format('terrain %s, feedback %s: walks over it without a fall (reached x = %.2f of %.2f)',
+    layout_name, mode == 'nofb' and 'off' or 'on', b.x, layout.finish))
+end
+
+local modes = { select(2, unpack(arg)) }
+if #modes == 0 then modes = { 'fb', 'nofb' } end
+for _, m in ipairs(modes) do walk_over(m) end
+feedback(true)
+Walk.set_velocity(0, 0, 0)
