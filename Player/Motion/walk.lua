@@ -16,6 +16,7 @@
 -- was created). Feet are the foot frames of Lib/kinematics (sole point below the ankle).
 -- Every parameter is read from the params table at each step/tick, so a change lands while walking.
 local lipm = require('Motion.lipm')
+local step_adjust = require('Motion.step_adjust')
 
 local sin, cos, atan2, asin = math.sin, math.cos, math.atan2, math.asin
 local abs, pi = math.abs, math.pi
@@ -173,6 +174,7 @@ function Walk:start()
     self.stepping = false
     self.support = nil
     self.steps_still = 0
+    self.touchdown = nil
   end
   self.stopping = false
 end
@@ -234,6 +236,9 @@ function Walk:begin_step()
   local T = self:step_time()
   self.uLeft1, self.uRight1 = self.uLeft2, self.uRight2
   self.uTorso1 = self.uTorso2
+  -- a step ended early (step adjustment's touch-down): the next one starts from the COM's plan now
+  if self.touchdown then self.uTorso1 = { self.com[1], self.com[2], self.uTorso[3] } end
+  self.touchdown = nil
   self:update_velocity()
   local v = self.vel
   local still = abs(v[1]) < 1e-4 and abs(v[2]) < 1e-4 and abs(v[3]) < 1e-4
@@ -251,6 +256,8 @@ function Walk:begin_step()
   else
     self.support = 1 - self.support
   end
+  -- a push sideways: the foot on its side swings (Motion.step_adjust)
+  self.support = step_adjust.support(self, self.support)
   local sY = p.supportY
   -- heading correction from outside (IMU yaw against the commanded turning), rad/s
   local ve = self.vel_eff
@@ -265,7 +272,7 @@ function Walk:begin_step()
     self.uRight2 = self.uRight1
     self.uSupport = pose_global({ p.supportX, -sY, 0 }, self.uRight1)
   end
-  self:adjust_step()
+  step_adjust.begin_step(self)
   local mid = interp(0.5, self.uLeft2, self.uRight2)
   self.uTorso2 = pose_global({ p.supportX, 0, 0 }, mid)
   -- the step keeps the duration and single-support phase it was planned with (its COM plan is only
@@ -274,34 +281,6 @@ function Walk:begin_step()
   self:plan_com(T, self.ph1 * T, self.ph2 * T)
   self.stats.steps = self.stats.steps + 1
   return true
-end
-
--- Step adjustment (capture point): when a push has moved the capture point away from where the walk
--- plans it, the swing foot of the step that begins lands that much further (stepAdjust.gain beyond
--- a dead band, at most stepAdjust.max), within the step limits. The error is estimated each tick
--- from the IMU (Walk:joint_angles): the whole robot tips about its support foot, so the COM is off
--- by h sin(tilt) and moves at h * tilt rate; the capture point error is that offset plus velocity
--- over omega = 1 / tZmp.
-function Walk:adjust_step()
-  local p = self.p
-  local sa = rawget(p, 'stepAdjust')
-  local e = self.cp_err
-  if not sa or sa.gain <= 0 or not e then return end
-  local function beyond(v, d) if v > d then return v - d elseif v < -d then return v + d end return 0 end
-  local ox = clamp(sa.gain * beyond(e[1], sa.deadband[1]), -sa.max[1], sa.max[1])
-  local oy = clamp(sa.gain * beyond(e[2], sa.deadband[2]), -sa.max[2], sa.max[2])
-  if ox == 0 and oy == 0 then return end
-  local left = self.support == RIGHT
-  local sup = left and self.uRight1 or self.uLeft1
-  local target = left and self.uLeft2 or self.uRight2
-  local rel = pose_relative(target, sup)
-  -- the offset is in the heading frame (torso); the swing foot's frame is close enough to it
-  local sgn = left and 1 or -1
-  rel[1] = clamp(rel[1] + ox, p.stepLimitX[1], p.stepLimitX[2])
-  rel[2] = sgn * clamp(sgn * (rel[2] + oy), p.stepLimitY[1], p.stepLimitY[2])
-  local adjusted = pose_global(rel, sup)
-  if left then self.uLeft2 = adjusted else self.uRight2 = adjusted end
-  self.stats.adjusted = (self.stats.adjusted or 0) + 1
 end
 
 -- The COM over the step that begins (engine-specific): the analytic engine solves the linear
@@ -332,9 +311,11 @@ function Walk:advance(dt)
   local p = self.p
   if self.active then
     local T = self.T or self:step_time()
+    -- a step the step adjustment put down early ends with its touch-down
+    local t_end = self.touchdown and self.touchdown.t_end or T
     self.t = self.t + dt
-    if self.t >= T - 1e-9 then
-      self.t = self.t - T
+    if self.t >= t_end - 1e-9 then
+      self.t = self.t - t_end
       if self.t < 0 then self.t = 0 end
       if not self:begin_step() then
         self.t = 0
@@ -368,6 +349,9 @@ function Walk:advance(dt)
     local s = smooth(clamp(phs / p.swingLead, 0, 1))
     local lift = 16 * phs * phs * (1 - phs) * (1 - phs)
     self.swing_z = p.stepHeight * lift
+    -- capture point stepping: the landing moves, or the swing foot is put down (Motion.step_adjust)
+    step_adjust.tick(self, t, s)
+    if self.touchdown then self.swing_z = step_adjust.touchdown_z(self, t) end
     if self.support == LEFT then
       interp_into(self.uRight, s, self.uRight1, self.uRight2)
       copy3(self.uLeft, self.uLeft1)
@@ -569,6 +553,8 @@ function Walk:joint_angles(q, sensors, dt, support)
       add_rot(self, q, legi[6], ankx, 0)
     end
   end
+  -- the swing foot lands flat on a leaning robot (Motion.step_adjust)
+  if not support then step_adjust.level_swing(self, q, sensors, dt, ss > 0 and sup or nil) end
   local armx, army = clamp(fb.arm[1] * gx, -lim, lim), clamp(fb.arm[2] * gy, -lim, lim)
   for _, arm in pairs(self.arms) do
     if arm.pitch then add_rot(self, q, arm.pitch, 0, army) end
@@ -605,4 +591,5 @@ function Walk:update_com_offset(q, alpha)
 end
 
 M.Walk = Walk
+step_adjust.bind(M)
 return M

@@ -66,8 +66,9 @@ local function walk_over(mode)
   fell = fell or Sim.truth().fallen or Motion.falls() > falls0
   note('terrain %s (%s): walked %.2f m in x, sideways %.2f m, the torso rose %.3f m at most (and sank %.3f m), %s',
     layout_name, mode, b.x - a.x, b.y - a.y, zmax - a.z, a.z - zmin, fell and 'FELL' or 'no fall')
-  tap(arrived and not fell, string.format('terrain %s, feedback %s: walks over it without a fall (reached x = %.2f of %.2f)',
-    layout_name, mode == 'nofb' and 'off' or 'on', b.x, layout.finish))
+  tap(arrived and not fell, string.format(
+    'terrain %s, feedback %s: walks over it without a fall (reached x = %.2f of %.2f)', layout_name,
+    mode == 'nofb' and 'off' or 'on', b.x, layout.finish))
 end
 
 local modes = { select(2, unpack(arg)) }
