@@ -59,6 +59,17 @@ end
 -- quintic 0..1 with zero velocity and acceleration at both ends
 local function smooth(t) return t * t * t * (10 + t * (-15 + 6 * t)) end
 
+-- 0..1 at constant rate between ramps of fraction r at either end (zero rate at both ends; the
+-- peak rate is 1 / (1 - r) of the mean)
+function M.trapezoid(u, r)
+  u = clamp(u, 0, 1)
+  if r <= 0 then return u end
+  local v = 1 / (1 - r) -- peak rate
+  if u < r then return 0.5 * v * u * u / r end
+  if u > 1 - r then local w = 1 - u return 1 - 0.5 * v * w * w / r end
+  return 0.5 * v * r + v * (u - r)
+end
+
 -- Foot pose (ground frame, flat, height z) in the torso frame: torso at (tx, ty, tz), yaw ta,
 -- pitch tp, roll tr (small). Writes {x, y, z, roll, pitch, yaw} into out.
 local function foot_in_torso(out, fx, fy, fz, fa, tx, ty, tz, ta, tp, tr)
@@ -206,7 +217,41 @@ function Walk:step_target(support_u, swing_left, v)
   local half = sgn * p.footY
   rel[1] = rel[1] - half * sin(rel[3])
   rel[2] = rel[2] - half * (1 - cos(rel[3]))
+  M.clear_feet(p, rel, sgn)
   return pose_global(rel, support_u)
+end
+
+-- A turned foot swings its inner heel or toe into the other foot (OP3 at 1 rad: 2.5 cm of
+-- overlap): the landing moves outward until the inner corners of each sole keep `footClearance` (m)
+-- from the other sole's inner edge. rel: the swing foot in the support foot's frame (changed in
+-- place), sgn: +1 for the left foot swinging. The soles from the walk config's `sole` (toe, heel:
+-- m ahead of and behind the ankle point; inner: m from the ankle point to the inner edge); a body
+-- without them is not checked.
+function M.clear_feet(p, rel, sgn)
+  local sole = rawget(p, 'sole')
+  if not sole then return end
+  local c, s = cos(rel[3]), sin(rel[3])
+  local need = sole.inner + p.footClearance
+  -- the swing sole's inner corners in the support frame, against the support sole's inner edge
+  local shift = 0
+  for _, x in ipairs({ sole.toe, -sole.heel }) do
+    shift = math.max(shift, need - sgn * (rel[2] + s * x - c * sgn * sole.inner))
+  end
+  rel[2] = rel[2] + sgn * shift
+  -- the support sole's inner corners in the swing frame, against the swing sole's inner edge where
+  -- they lie along its length (a few small moves: each changes where the corners lie)
+  for _ = 1, 4 do
+    local more = 0
+    for _, x in ipairs({ sole.toe, -sole.heel }) do
+      local dx, dy = x - rel[1], sgn * sole.inner - rel[2]
+      local xs, ys = c * dx + s * dy, -s * dx + c * dy
+      if xs < sole.toe + p.footClearance and xs > -sole.heel - p.footClearance then
+        more = math.max(more, need + sgn * ys)
+      end
+    end
+    if more <= 1e-4 then break end
+    rel[2] = rel[2] + sgn * more
+  end
 end
 
 -- rate-limits the current velocity towards the command over one step
@@ -358,6 +403,16 @@ function Walk:advance(dt)
     else
       interp_into(self.uLeft, s, self.uLeft1, self.uLeft2)
       copy3(self.uRight, self.uRight1)
+    end
+    -- the swing foot's turn over the whole single support at a near-constant rate: with the ground
+    -- motion's profile a 1 rad turn (2 rad/s) asks the hip yaw for 12 rad/s, its servo gives 4.8
+    local ramp = rawget(p, 'swingYawRamp')
+    if ramp then
+      local left = self.support ~= LEFT
+      local a1 = left and self.uLeft1[3] or self.uRight1[3]
+      local a2 = left and self.uLeft2[3] or self.uRight2[3]
+      local sw = left and self.uLeft or self.uRight
+      sw[3] = wrap(a1 + M.trapezoid(phs, ramp) * wrap(a2 - a1))
     end
     -- heading: turns at a constant rate over the whole step (no yaw jerk from the swing)
     local a1 = wrap(self.uLeft1[3] + 0.5 * wrap(self.uRight1[3] - self.uLeft1[3]))

@@ -27,7 +27,12 @@ return {
   footY = 0.045,             -- m, half the lateral spacing of the feet (ankle points)
   supportX = 0.0,            -- m, ZMP in single support, ahead of the ankle
   supportY = 0.0,            -- m, ZMP in single support, outward from the ankle
+  -- the soles (shared/robots/op3_reference.txt: 0.127 x 0.078 m, centre 1.3 cm outward of the
+  -- ankle point) and the gap a turned foot keeps from the other (Player/Motion/walk.lua clear_feet)
+  sole = { toe = 0.0635, heel = 0.0635, inner = 0.026 },
+  footClearance = 0.01,      -- m
   stepHeight = 0.035,        -- m, swing foot lift
+  swingYawRamp = 0.2,        -- the swing foot turns over all of single support, ramps of this fraction
   swingLead = 0.65,          -- fraction of single support in which the swing foot reaches its place
   -- velocity: limits and acceleration (per second)
   velLimitX = { -0.15, 0.40 },
