@@ -391,7 +391,9 @@ function Walk:advance(dt)
     local ph1, ph2 = self.ph1, self.ph2
     local phs = clamp((ph - ph1) / (ph2 - ph1), 0, 1)
     -- the foot reaches its landing point a little before touch-down (servo lag)
-    local s = smooth(clamp(phs / p.swingLead, 0, 1))
+    -- (after `swingDelay` of single support: the foot lifts before it moves, its toe clears an edge)
+    local delay = rawget(p, 'swingDelay') or 0
+    local s = smooth(clamp((phs - delay) / (p.swingLead - delay), 0, 1))
     local lift = 16 * phs * phs * (1 - phs) * (1 - phs)
     self.swing_z = p.stepHeight * lift
     -- capture point stepping: the landing moves, or the swing foot is put down (Motion.step_adjust)

@@ -9,6 +9,9 @@ local M = {}
 -- the robot starts at (x0, y0) facing +x, on free carpet clear of the centre circle and the goals
 local x0, y0 = -3.0, 2.0
 
+-- no object: the same walk on the flat carpet (a reference for the others)
+M.flat = { start = { x0, y0, 0 }, finish = x0 + 1.4, objects = {} }
+
 -- a 1 cm board 0.8 m long, 0.4 m ahead: a step up, then a step down
 M.step = {
   start = { x0, y0, 0 },
@@ -47,7 +50,7 @@ M.ramp = ramp_layout()
 -- the site overlay's sim.lua for a layout
 function M.sim_lua(name)
   local l = M[name]
-  if type(l) ~= 'table' then error("terrain: unknown layout '" .. tostring(name) .. "' (step, ramp)", 2) end
+  if type(l) ~= 'table' then error("terrain: unknown layout '" .. tostring(name) .. "' (flat, step, ramp)", 2) end
   local out = { '-- Tests/motion/terrain.lua ' .. name, 'return {', '  objects = {' }
   local function v3(v) return string.format('{ %.6f, %.6f, %.6f }', v[1], v[2], v[3]) end
   for _, o in ipairs(l.objects) do

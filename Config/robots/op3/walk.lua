@@ -18,7 +18,7 @@ return {
   -- within touchdownTime (s) and the step ends; the swing foot's ankle turns against the torso's
   -- tilt (IMU) by level (fraction: roll, pitch) so that it lands flat, faded over levelTime (s) once
   -- it carries. gain = 0: off
-  stepAdjust = { gain = 1.0, deadband = { 0.02, 0.02 }, max = { 0.05, 0.08 }, switchError = 1,
+  stepAdjust = { gain = 1.0, deadband = { 0.03, 0.02 }, max = { 0.05, 0.08 }, switchError = 1,
     touchdownError = 1, touchdownTime = 0.05, level = { 0, 0 }, levelTime = 0.15 },
   -- posture
   bodyHeight = 0.25,         -- m, torso origin (between the hip yaw joints: the URDF's body_link) above the ground
@@ -34,6 +34,7 @@ return {
   stepHeight = 0.035,        -- m, swing foot lift
   swingYawRamp = 0.2,        -- the swing foot turns over all of single support, ramps of this fraction
   swingLead = 0.65,          -- fraction of single support in which the swing foot reaches its place
+  swingDelay = 0.0,          -- fraction of single support the swing foot lifts before it moves
   -- velocity: limits and acceleration (per second)
   velLimitX = { -0.15, 0.40 },
   velLimitY = { -0.15, 0.15 },
