@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# The OP3 walks over a 5 degree ramp (up, a platform, down) in the sim (lockstep), with the walk's
-# IMU feedback on and off: no fall. The boxes come into the world through a site overlay (the sim
-# reads `objects` from its config: Config/platforms/Sim/sim.lua), written from
+# The OP3 walks over a 5 degree ramp (up, a platform, down) in the sim (lockstep) with the walk's IMU
+# feedback on: no fall (off: reported as a figure). The boxes come into the world through a site
+# overlay (the sim reads `objects` from its config: Config/platforms/Sim/sim.lua), written from
 # Tests/motion/terrain.lua. Tests/motion/terrain_scenario.lua prints TAP.
 # The 1 cm step (`step`) is not in the default list: the OP3 does not walk over it yet. A front foot
 # that lands half on the board's edge tilts toe-up and the robot tips backwards (with the gyro
