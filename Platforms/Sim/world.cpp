@@ -144,6 +144,22 @@ void params_load(const std::string &robot, Params *p) {
     p->start.insert(p->start.end(), v.begin(), v.end());
   }
   if (p->start.empty()) throw std::runtime_error(sim_lua + ": missing list 'start'");
+  p->objects.clear();
+  for (int i = 1; s.has("objects." + std::to_string(i)); i++) {
+    const std::string key = "objects." + std::to_string(i);
+    Params::Object o{};
+    struct { const char *name; double *dst; bool positive; } parts[] = {
+        {"pos", o.pos, false}, {"size", o.size, true}, {"rpy", o.rpy, false}};
+    for (auto &part : parts) {
+      std::vector<double> v = s.nums(key + "." + part.name);
+      if (v.size() != 3 || !std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2]) ||
+          (part.positive && (v[0] <= 0 || v[1] <= 0 || v[2] <= 0)))
+        throw std::runtime_error(sim_lua + ": '" + key + "." + part.name + "' must be 3 finite numbers" +
+                                 (part.positive ? " above 0" : ""));
+      std::copy(v.begin(), v.end(), part.dst);
+    }
+    p->objects.push_back(o);
+  }
   p->fall_angle = s.num("fall_angle");
   p->watchdog = s.num("watchdog");
   p->safe_hardness = s.num("safe_hardness");
@@ -304,6 +320,25 @@ void World::build_env() {
       dGeomSetData(g, info(kGround));
       make_static(g);
     }
+  }
+  // objects on the carpet: static boxes in the top space, the carpet's contact and friction
+  for (const Params::Object &o : p_.objects) {
+    dGeomID g = dCreateBox(top_, o.size[0], o.size[1], o.size[2]);
+    dGeomSetPosition(g, o.pos[0], o.pos[1], o.pos[2]);
+    const Mat3 Rm = rot_z(o.rpy[2]) * Eigen::AngleAxisd(o.rpy[1], Vec3::UnitY()).toRotationMatrix() *
+                    Eigen::AngleAxisd(o.rpy[0], Vec3::UnitX()).toRotationMatrix();
+    dMatrix3 R;
+    for (int a = 0; a < 3; a++) {
+      for (int k = 0; k < 3; k++) R[a * 4 + k] = Rm(a, k);
+      R[a * 4 + 3] = 0;
+    }
+    dGeomSetRotation(g, R);
+    dGeomSetData(g, info(kGround));
+    make_static(g);
+    Solid sd;
+    box_solid(Vec3(o.pos[0], o.pos[1], o.pos[2]), Rm, Vec3(o.size[0], o.size[1], o.size[2]), &sd);
+    set_yuv(&sd, 120, 110, 150);   // a grey-blue board: neither field green nor line white
+    goal_solids_.push_back(sd);
   }
   // ball: a hollow shell (I = 2/3 m r^2)
   const double r = p_.ball_diameter / 2;

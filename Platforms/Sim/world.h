@@ -58,6 +58,10 @@ struct Params {
   double cam_fx = 0, cam_fy = 0, cam_cx = 0, cam_cy = 0, cam_k1 = 0, cam_k2 = 0;
   Realism realism;                    // sim.lua camera: the camera's imperfections
   std::vector<double> start;   // x, y, yaw per robot, flattened
+  // static boxes on the carpet (sim.lua `objects`: a step, a ramp): centre (field frame, m), size
+  // (m), roll pitch yaw (rad); they collide as the carpet does and the camera sees them
+  struct Object { double pos[3], size[3], rpy[3]; };
+  std::vector<Object> objects;
   double fall_angle = 1.0, watchdog = 0.5, battery = 12;
   double safe_hardness = 0.3, start_hardness = 1;   // the DCM's safe state; every joint at start
   std::string name;                   // the body (robot.lua's name)
@@ -214,7 +218,7 @@ class World {
   dGeomID ball_geom_ = nullptr;
   std::vector<GeomInfo *> infos_;
   std::vector<Robot> robots_;
-  std::vector<Solid> goal_solids_;
+  std::vector<Solid> goal_solids_;   // the static solids the camera sees: goals, objects
   std::vector<dJointFeedback> cfb_;        // contact feedback of sole contacts, this step
   std::vector<std::pair<int, int>> cfb_owner_;  // (robot, sole side) per cfb_ entry
   double time_ = 0;

@@ -16,6 +16,7 @@
 -- was created). Feet are the foot frames of Lib/kinematics (sole point below the ankle).
 -- Every parameter is read from the params table at each step/tick, so a change lands while walking.
 local lipm = require('Motion.lipm')
+local step_adjust = require('Motion.step_adjust')
 
 local sin, cos, atan2, asin = math.sin, math.cos, math.atan2, math.asin
 local abs, pi = math.abs, math.pi
@@ -57,6 +58,17 @@ end
 
 -- quintic 0..1 with zero velocity and acceleration at both ends
 local function smooth(t) return t * t * t * (10 + t * (-15 + 6 * t)) end
+
+-- 0..1 at constant rate between ramps of fraction r at either end (zero rate at both ends; the
+-- peak rate is 1 / (1 - r) of the mean)
+function M.trapezoid(u, r)
+  u = clamp(u, 0, 1)
+  if r <= 0 then return u end
+  local v = 1 / (1 - r) -- peak rate
+  if u < r then return 0.5 * v * u * u / r end
+  if u > 1 - r then local w = 1 - u return 1 - 0.5 * v * w * w / r end
+  return 0.5 * v * r + v * (u - r)
+end
 
 -- Foot pose (ground frame, flat, height z) in the torso frame: torso at (tx, ty, tz), yaw ta,
 -- pitch tp, roll tr (small). Writes {x, y, z, roll, pitch, yaw} into out.
@@ -173,6 +185,7 @@ function Walk:start()
     self.stepping = false
     self.support = nil
     self.steps_still = 0
+    self.touchdown = nil
   end
   self.stopping = false
 end
@@ -204,7 +217,41 @@ function Walk:step_target(support_u, swing_left, v)
   local half = sgn * p.footY
   rel[1] = rel[1] - half * sin(rel[3])
   rel[2] = rel[2] - half * (1 - cos(rel[3]))
+  M.clear_feet(p, rel, sgn)
   return pose_global(rel, support_u)
+end
+
+-- A turned foot swings its inner heel or toe into the other foot (OP3 at 1 rad: 2.5 cm of
+-- overlap): the landing moves outward until the inner corners of each sole keep `footClearance` (m)
+-- from the other sole's inner edge. rel: the swing foot in the support foot's frame (changed in
+-- place), sgn: +1 for the left foot swinging. The soles from the walk config's `sole` (toe, heel:
+-- m ahead of and behind the ankle point; inner: m from the ankle point to the inner edge); a body
+-- without them is not checked.
+function M.clear_feet(p, rel, sgn)
+  local sole = rawget(p, 'sole')
+  if not sole then return end
+  local c, s = cos(rel[3]), sin(rel[3])
+  local need = sole.inner + p.footClearance
+  -- the swing sole's inner corners in the support frame, against the support sole's inner edge
+  local shift = 0
+  for _, x in ipairs({ sole.toe, -sole.heel }) do
+    shift = math.max(shift, need - sgn * (rel[2] + s * x - c * sgn * sole.inner))
+  end
+  rel[2] = rel[2] + sgn * shift
+  -- the support sole's inner corners in the swing frame, against the swing sole's inner edge where
+  -- they lie along its length (a few small moves: each changes where the corners lie)
+  for _ = 1, 4 do
+    local more = 0
+    for _, x in ipairs({ sole.toe, -sole.heel }) do
+      local dx, dy = x - rel[1], sgn * sole.inner - rel[2]
+      local xs, ys = c * dx + s * dy, -s * dx + c * dy
+      if xs < sole.toe + p.footClearance and xs > -sole.heel - p.footClearance then
+        more = math.max(more, need + sgn * ys)
+      end
+    end
+    if more <= 1e-4 then break end
+    rel[2] = rel[2] + sgn * more
+  end
 end
 
 -- rate-limits the current velocity towards the command over one step
@@ -234,6 +281,9 @@ function Walk:begin_step()
   local T = self:step_time()
   self.uLeft1, self.uRight1 = self.uLeft2, self.uRight2
   self.uTorso1 = self.uTorso2
+  -- a step ended early (step adjustment's touch-down): the next one starts from the COM's plan now
+  if self.touchdown then self.uTorso1 = { self.com[1], self.com[2], self.uTorso[3] } end
+  self.touchdown = nil
   self:update_velocity()
   local v = self.vel
   local still = abs(v[1]) < 1e-4 and abs(v[2]) < 1e-4 and abs(v[3]) < 1e-4
@@ -251,6 +301,8 @@ function Walk:begin_step()
   else
     self.support = 1 - self.support
   end
+  -- a push sideways: the foot on its side swings (Motion.step_adjust)
+  self.support = step_adjust.support(self, self.support)
   local sY = p.supportY
   -- heading correction from outside (IMU yaw against the commanded turning), rad/s
   local ve = self.vel_eff
@@ -265,7 +317,7 @@ function Walk:begin_step()
     self.uRight2 = self.uRight1
     self.uSupport = pose_global({ p.supportX, -sY, 0 }, self.uRight1)
   end
-  self:adjust_step()
+  step_adjust.begin_step(self)
   local mid = interp(0.5, self.uLeft2, self.uRight2)
   self.uTorso2 = pose_global({ p.supportX, 0, 0 }, mid)
   -- the step keeps the duration and single-support phase it was planned with (its COM plan is only
@@ -277,34 +329,6 @@ function Walk:begin_step()
   self:plan_com(T, self.ph1 * T, self.ph2 * T)
   self.stats.steps = self.stats.steps + 1
   return true
-end
-
--- Step adjustment (capture point): when a push has moved the capture point away from where the walk
--- plans it, the swing foot of the step that begins lands that much further (stepAdjust.gain beyond
--- a dead band, at most stepAdjust.max), within the step limits. The error is estimated each tick
--- from the IMU (Walk:joint_angles): the whole robot tips about its support foot, so the COM is off
--- by h sin(tilt) and moves at h * tilt rate; the capture point error is that offset plus velocity
--- over omega = 1 / tZmp.
-function Walk:adjust_step()
-  local p = self.p
-  local sa = rawget(p, 'stepAdjust')
-  local e = self.cp_err
-  if not sa or sa.gain <= 0 or not e then return end
-  local function beyond(v, d) if v > d then return v - d elseif v < -d then return v + d end return 0 end
-  local ox = clamp(sa.gain * beyond(e[1], sa.deadband[1]), -sa.max[1], sa.max[1])
-  local oy = clamp(sa.gain * beyond(e[2], sa.deadband[2]), -sa.max[2], sa.max[2])
-  if ox == 0 and oy == 0 then return end
-  local left = self.support == RIGHT
-  local sup = left and self.uRight1 or self.uLeft1
-  local target = left and self.uLeft2 or self.uRight2
-  local rel = pose_relative(target, sup)
-  -- the offset is in the heading frame (torso); the swing foot's frame is close enough to it
-  local sgn = left and 1 or -1
-  rel[1] = clamp(rel[1] + ox, p.stepLimitX[1], p.stepLimitX[2])
-  rel[2] = sgn * clamp(sgn * (rel[2] + oy), p.stepLimitY[1], p.stepLimitY[2])
-  local adjusted = pose_global(rel, sup)
-  if left then self.uLeft2 = adjusted else self.uRight2 = adjusted end
-  self.stats.adjusted = (self.stats.adjusted or 0) + 1
 end
 
 -- The COM over the step that begins (engine-specific): the analytic engine solves the linear
@@ -335,9 +359,11 @@ function Walk:advance(dt)
   local p = self.p
   if self.active then
     local T = self.T or self:step_time()
+    -- a step the step adjustment put down early ends with its touch-down
+    local t_end = self.touchdown and self.touchdown.t_end or T
     self.t = self.t + dt
-    if self.t >= T - 1e-9 then
-      self.t = self.t - T
+    if self.t >= t_end - 1e-9 then
+      self.t = self.t - t_end
       if self.t < 0 then self.t = 0 end
       if not self:begin_step() then
         self.t = 0
@@ -368,15 +394,30 @@ function Walk:advance(dt)
     local ph1, ph2 = self.ph1, self.ph2
     local phs = clamp((ph - ph1) / (ph2 - ph1), 0, 1)
     -- the foot reaches its landing point a little before touch-down (servo lag)
-    local s = smooth(clamp(phs / p.swingLead, 0, 1))
+    -- (after `swingDelay` of single support: the foot lifts before it moves, its toe clears an edge)
+    local delay = rawget(p, 'swingDelay') or 0
+    local s = smooth(clamp((phs - delay) / (p.swingLead - delay), 0, 1))
     local lift = 16 * phs * phs * (1 - phs) * (1 - phs)
     self.swing_z = p.stepHeight * lift
+    -- capture point stepping: the landing moves, or the swing foot is put down (Motion.step_adjust)
+    step_adjust.tick(self, t, s)
+    if self.touchdown then self.swing_z = step_adjust.touchdown_z(self, t) end
     if self.support == LEFT then
       interp_into(self.uRight, s, self.uRight1, self.uRight2)
       copy3(self.uLeft, self.uLeft1)
     else
       interp_into(self.uLeft, s, self.uLeft1, self.uLeft2)
       copy3(self.uRight, self.uRight1)
+    end
+    -- the swing foot's turn over the whole single support at a near-constant rate: with the ground
+    -- motion's profile a 1 rad turn (2 rad/s) asks the hip yaw for 12 rad/s, its servo gives 4.8
+    local ramp = rawget(p, 'swingYawRamp')
+    if ramp then
+      local left = self.support ~= LEFT
+      local a1 = left and self.uLeft1[3] or self.uRight1[3]
+      local a2 = left and self.uLeft2[3] or self.uRight2[3]
+      local sw = left and self.uLeft or self.uRight
+      sw[3] = wrap(a1 + M.trapezoid(phs, ramp) * wrap(a2 - a1))
     end
     if self.step_hook then self.step_hook:swing(self, t) end
     -- heading: turns at a constant rate over the whole step (no yaw jerk from the swing)
@@ -575,6 +616,8 @@ function Walk:joint_angles(q, sensors, dt, support)
       add_rot(self, q, legi[6], ankx, 0)
     end
   end
+  -- the swing foot lands flat on a leaning robot (Motion.step_adjust)
+  if not support then step_adjust.level_swing(self, q, sensors, dt, ss > 0 and sup or nil) end
   local armx, army = clamp(fb.arm[1] * gx, -lim, lim), clamp(fb.arm[2] * gy, -lim, lim)
   for _, arm in pairs(self.arms) do
     if arm.pitch then add_rot(self, q, arm.pitch, 0, army) end
@@ -611,4 +654,5 @@ function Walk:update_com_offset(q, alpha)
 end
 
 M.Walk = Walk
+step_adjust.bind(M)
 return M

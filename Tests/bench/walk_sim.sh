@@ -4,8 +4,9 @@
 #  - top forward, sideways and turning speeds sustained for 30 s without a fall (measured from the
 #    sim's truth; commands stepped up from 0.8x the body's configured limit until a fall; the limits
 #    are raised by half for the search)
-#  - the largest sideways and forward pushes (N x 0.1 s) survived while walking, with and without the
-#    gyro feedback
+#  - the largest sideways and forward pushes (N x 0.1 s) survived while walking: as configured (gyro
+#    feedback and step adjustment, Player/Motion/step_adjust.lua), without the step adjustment, and
+#    without either
 #  - the motion tick's compute time (median, p99) in LuaJIT, robot-free
 # The engine is chosen through a site overlay (walk.lua: engine = ...) beside the venue's own files.
 # usage: [ROBOTS="op3 darwin hubo2plus"] [ENGINES="analytic preview"] Tests/bench/walk_sim.sh [speed|push|tick]...
@@ -46,7 +47,8 @@ limits() {
       r(p.stepLimitY[1]), r(p.stepLimitY[2] * 1.5), r(p.stepLimitA[1]), r(p.stepLimitA[2] * 1.5)))
     print(seq(p.velLimitX[2])) print(seq(p.velLimitY[2])) print(seq(p.velLimitA[2]))"
 }
-NOFB='feedback.ankle=0,0;feedback.knee=0;feedback.hip=0,0;feedback.arm=0,0'
+NOSTEP='stepAdjust.gain=0'
+NOFB="feedback.ankle=0,0;feedback.knee=0;feedback.hip=0,0;feedback.arm=0,0;$NOSTEP"
 declare -A FIG
 ROBOT_LIST=(${ROBOTS:-op3})
 ENGINE_LIST=(${ENGINES:-analytic preview})
@@ -68,7 +70,9 @@ for robot in "${ROBOT_LIST[@]}"; do
           FIG[$k a]=$(run "${robot}_${engine}_speed_a" "${L[0]}" speed a ${L[3]} | awk '{print $3}') ;;
         push)
           FIG[$k ps]=$(run "${robot}_${engine}_push_side" "" pushmax gyro side | awk '{print $4}')
+          FIG[$k psn]=$(run "${robot}_${engine}_push_side_nostep" "$NOSTEP" pushmax nostep side | awk '{print $4}')
           FIG[$k pf]=$(run "${robot}_${engine}_push_fwd" "" pushmax gyro forward | awk '{print $4}')
+          FIG[$k pfn]=$(run "${robot}_${engine}_push_fwd_nostep" "$NOSTEP" pushmax nostep forward | awk '{print $4}')
           FIG[$k ps0]=$(run "${robot}_${engine}_push_side_nofb" "$NOFB" pushmax nofb side | awk '{print $4}')
           FIG[$k pf0]=$(run "${robot}_${engine}_push_fwd_nofb" "$NOFB" pushmax nofb forward | awk '{print $4}') ;;
         tick)
@@ -80,11 +84,11 @@ for robot in "${ROBOT_LIST[@]}"; do
 done
 unset HRP_SITE
 echo
-echo "| body | engine | forward m/s | sideways m/s | turning rad/s | side push N s (fb / no fb) | forward push N s (fb / no fb) | motion tick us (median / p99) |"
+echo "| body | engine | forward m/s | sideways m/s | turning rad/s | side push N s (fb+step / fb / none) | forward push N s (fb+step / fb / none) | motion tick us (median / p99) |"
 echo "|---|---|---|---|---|---|---|---|"
 for robot in "${ROBOT_LIST[@]}"; do
   for engine in "${ENGINE_LIST[@]}"; do
     k="$robot $engine"
-    echo "| $robot | $engine | ${FIG[$k x]:--} | ${FIG[$k y]:--} | ${FIG[$k a]:--} | ${FIG[$k ps]:--} / ${FIG[$k ps0]:--} | ${FIG[$k pf]:--} / ${FIG[$k pf0]:--} | ${FIG[$k tick]:--} |"
+    echo "| $robot | $engine | ${FIG[$k x]:--} | ${FIG[$k y]:--} | ${FIG[$k a]:--} | ${FIG[$k ps]:--} / ${FIG[$k psn]:--} / ${FIG[$k ps0]:--} | ${FIG[$k pf]:--} / ${FIG[$k pfn]:--} / ${FIG[$k pf0]:--} | ${FIG[$k tick]:--} |"
   done
 done

@@ -121,6 +121,12 @@ return {
     { 2.0, -1.5, math.pi },
   },
 
+  -- Static boxes on the carpet (terrain: a step, a ramp), none on the match field. Each
+  -- { pos = {x, y, z} centre, size = {sx, sy, sz}, rpy = {roll, pitch, yaw} }, m and rad; they collide
+  -- with the carpet's friction and stiffness (contact) and the camera sees them. The walking tests
+  -- put theirs in through a site overlay (Tests/motion/terrain.lua: a 1 cm step, a 5 degree ramp).
+  objects = {},
+
   fall_angle = 1.0,              -- rad of torso tilt beyond which the robot counts as fallen
   watchdog = 0.5,                -- s of robot time without tick_ack before holding the pose (real time)
   safe_hardness = 0.3,           -- the held pose's hardness after a watchdog trip (as on the OP platform)

@@ -13,9 +13,15 @@ return {
   -- (Player/Motion/walk_preview.lua: window in s, weights of the ZMP error and the COM jerk, lead-in s)
   engine = 'analytic',
   preview = { window = 1.6, Qe = 1.0, R = 1e-6, lead = 0.4 },
-  -- step adjustment (capture point, Player/Motion/walk.lua adjust_step): the next swing foot lands
-  -- gain x the capture point's error beyond the dead band (m), at most max (m), within the step limits
-  stepAdjust = { gain = 0, deadband = { 0.01, 0.01 }, max = { 0.05, 0.05 } },
+  -- step adjustment (capture point, Player/Motion/step_adjust.lua): the swing foot lands gain x the
+  -- capture point's error beyond the dead band (m) further, at most max (m), within the step limits
+  -- (moved while it travels); a sideways error beyond switchError (m) at a step's start swings the
+  -- foot on the push's side; beyond touchdownError (m) a swing foot on the far side is put down
+  -- within touchdownTime (s) and the step ends; the swing foot's ankle turns against the torso's
+  -- tilt (IMU) by level (fraction: roll, pitch) so that it lands flat, faded over levelTime (s) once
+  -- it carries. gain = 0: off
+  stepAdjust = { gain = 0, deadband = { 0.01, 0.01 }, max = { 0.05, 0.08 }, switchError = 0.03,
+    touchdownError = 0.04, touchdownTime = 0.05, level = { 1.0, 1.0 }, levelTime = 0.15 },
   -- posture
   bodyHeight = 0.225,         -- m, torso origin (hip yaw anchors, Config/Sim/robot.lua) above the ground
   bodyTilt = 0.08,           -- rad, torso pitch (forward positive)

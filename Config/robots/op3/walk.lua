@@ -11,9 +11,15 @@ return {
   -- (Player/Motion/walk_preview.lua: window in s, weights of the ZMP error and the COM jerk, lead-in s)
   engine = 'analytic',
   preview = { window = 1.6, Qe = 1.0, R = 1e-6, lead = 0.4 },
-  -- step adjustment (capture point, Player/Motion/walk.lua adjust_step): the next swing foot lands
-  -- gain x the capture point's error beyond the dead band (m), at most max (m), within the step limits
-  stepAdjust = { gain = 0, deadband = { 0.01, 0.01 }, max = { 0.05, 0.05 } },
+  -- step adjustment (capture point, Player/Motion/step_adjust.lua): the swing foot lands gain x the
+  -- capture point's error beyond the dead band (m) further, at most max (m), within the step limits
+  -- (moved while it travels); a sideways error beyond switchError (m) at a step's start swings the
+  -- foot on the push's side; beyond touchdownError (m) a swing foot on the far side is put down
+  -- within touchdownTime (s) and the step ends; the swing foot's ankle turns against the torso's
+  -- tilt (IMU) by level (fraction: roll, pitch) so that it lands flat, faded over levelTime (s) once
+  -- it carries. gain = 0: off
+  stepAdjust = { gain = 1.0, deadband = { 0.03, 0.02 }, max = { 0.05, 0.08 }, switchError = 1,
+    touchdownError = 1, touchdownTime = 0.05, level = { 0, 0 }, levelTime = 0.15 },
   -- posture
   bodyHeight = 0.25,         -- m, torso origin (between the hip yaw joints: the URDF's body_link) above the ground
   bodyTilt = 0.08,           -- rad, torso pitch (forward positive)
@@ -21,8 +27,14 @@ return {
   footY = 0.045,             -- m, half the lateral spacing of the feet (ankle points)
   supportX = 0.0,            -- m, ZMP in single support, ahead of the ankle
   supportY = 0.0,            -- m, ZMP in single support, outward from the ankle
+  -- the soles (shared/robots/op3_reference.txt: 0.127 x 0.078 m, centre 1.3 cm outward of the
+  -- ankle point) and the gap a turned foot keeps from the other (Player/Motion/walk.lua clear_feet)
+  sole = { toe = 0.0635, heel = 0.0635, inner = 0.026 },
+  footClearance = 0.01,      -- m
   stepHeight = 0.035,        -- m, swing foot lift
+  swingYawRamp = 0.2,        -- the swing foot turns over all of single support, ramps of this fraction
   swingLead = 0.65,          -- fraction of single support in which the swing foot reaches its place
+  swingDelay = 0.0,          -- fraction of single support the swing foot lifts before it moves
   -- velocity: limits and acceleration (per second)
   velLimitX = { -0.15, 0.40 },
   velLimitY = { -0.15, 0.15 },

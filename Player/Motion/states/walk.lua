@@ -19,6 +19,13 @@ function M.update(c)
   d.yaw_ref = wrap(d.yaw_ref + w.vel[3] * c.dt)
   local err = wrap(d.yaw_ref - c.angle[3])
   local lim = p.headingMaxCorrection
+  -- no wind-up: when the feet cannot turn as fast as asked the reference stays within twice the
+  -- error that saturates the correction (left to grow, past pi it wrapped and turned the other way)
+  local room = p.headingGain > 0 and 2 * lim / p.headingGain or 0
+  if math.abs(err) > room then
+    err = err > 0 and room or -room
+    d.yaw_ref = wrap(c.angle[3] + err)
+  end
   w.va_correction = math.max(-lim, math.min(lim, p.headingGain * err))
   -- stopping: no more turning steps for the heading (a residual error would keep the feet from
   -- ever coming together: the Hubo's side steps leave one)

@@ -1,0 +1,78 @@
+-- Sideways pushes on the walking robot in the sim's lockstep, logged tick by tick (run by
+-- Tests/motion/push_trace.sh):
+--   ./run_repl Tests/motion/push_trace.lua OUT.csv|- FORCES MOMENTS [GAIN]
+-- FORCES: N for 0.1 s on the torso, to the robot's left (comma list); MOMENTS: when in the gait
+-- cycle, k x tStep/2 after 3 s of walking at 0.2 m/s (comma list, 0..3, as the pushmax scenario);
+-- GAIN: stepAdjust.gain for the run (default: the config's). For each force and moment: survived or
+-- fell, and the step adjustment's counts. OUT.csv (the last case): time, truth (x, y, yaw, roll),
+-- the walk's COM and feet (its ground frame), the IMU's capture point error, support, swing height.
+-- luacheck: globals Sim Motion Walk wait Body
+package.path = os.getenv('HRP_ROOT') .. '/Tests/motion/?.lua;' .. package.path
+if not Sim then Sim = require('sim_shim') end -- luacheck: ignore Sim
+local ks = require('kick_setup')
+local sc = require('Tests.scenario_lib').new(wait, Body)
+local note = sc.note
+local motion = ks.wait_for_motion(wait)
+if not motion then print('not ok 1 - the motion process is not running') os.exit(1) end
+
+local out = arg[1] or '-'
+local forces, moments = {}, {}
+for x in (arg[2] or '15'):gmatch('[^,]+') do forces[#forces + 1] = tonumber(x) end
+for x in (arg[3] or '0'):gmatch('[^,]+') do moments[#moments + 1] = tonumber(x) end
+-- WALK_PARAMS='key=v[,v..];key=v': walk parameters for the run (as Tests/motion/sim_scenarios.lua)
+for kv in (os.getenv('WALK_PARAMS') or ''):gmatch('[^;]+') do
+  local key, v = kv:match('^(.-)=(.*)$')
+  local vals = {}
+  for x in v:gmatch('[^,]+') do vals[#vals + 1] = tonumber(x) end
+  while not Walk.set(key, #vals == 1 and vals[1] or vals) do wait(0.01) end
+end
+if arg[4] then while not Walk.set('stepAdjust.gain', tonumber(arg[4])) do wait(0.01) end end
+
+local function one(f, k, csv)
+  Sim.reset()
+  wait(0.2)
+  Sim.teleport_robot(-4.3, -3.3, math.atan2(6.6, 8.6))
+  wait(0.2)
+  Walk.set_velocity(0, 0, 0)
+  Motion.request('stand')
+  wait(2.5)
+  Motion.request('walk')
+  Walk.set_velocity(0.2, 0, 0)
+  wait(3 + k * Walk.get('tStep') / 2)
+  local a = Sim.truth()
+  local falls0, adj0 = Motion.falls(), motion.steps_adjusted[0]
+  local t0 = Body.get_time()
+  Sim.push(-f * math.sin(a.yaw), f * math.cos(a.yaw), 0.1)
+  local fell = false
+  local dt = require('Config').load('robot').period
+  while Body.get_time() - t0 < 3 do
+    local s = Sim.truth()
+    if csv then
+      local wf, wc, e = motion.walk_feet, motion.walk_com, motion.capture_error
+      local fmt = '%.4f' .. string.rep(',%.5f', 15) .. '\n'
+      csv:write(string.format(fmt, Body.get_time() - t0, s.x, s.y, s.yaw, s.roll, s.pitch, wc[0], wc[1],
+        wf[0], wf[1], wf[2], wf[3], wf[4], wf[5], e[0], e[1]))
+    end
+    if s.fallen or Motion.falls() > falls0 then fell = true if not csv then break end end
+    wait(dt)
+  end
+  note('push %.1f N x 0.1 s at moment %d: %s, landings moved %d', f, k, fell and 'FELL' or 'survived',
+    motion.steps_adjusted[0] - adj0)
+  return not fell
+end
+
+for i, f in ipairs(forces) do
+  local all = true
+  for j, k in ipairs(moments) do
+    local last = i == #forces and j == #moments
+    local csv
+    if last and out ~= '-' then
+      csv = assert(io.open(out, 'w'))
+      csv:write('t,x,y,yaw,roll,pitch,com_x,com_y,lx,ly,la,rx,ry,ra,cp_ex,cp_ey\n')
+    end
+    all = one(f, k, csv) and all
+    if csv then csv:close() end
+  end
+  print(string.format('push %.1f %s', f, all and 'survived' or 'fell'))
+end
+Walk.set_velocity(0, 0, 0)

@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# The OP3 walks over a 5 degree ramp (up, a platform, down) in the sim (lockstep) with the walk's IMU
+# feedback on: no fall (off: reported as a figure). The boxes come into the world through a site
+# overlay (the sim reads `objects` from its config: Config/platforms/Sim/sim.lua), written from
+# Tests/motion/terrain.lua. Tests/motion/terrain_scenario.lua prints TAP.
+# The 1 cm step (`step`) is not in the default list: the OP3 does not walk over it yet. A front foot
+# that lands half on the board's edge tilts toe-up and the robot tips backwards (with the gyro
+# feedback every time, without it now and then); run it by hand to work on it. `flat`: the same walk
+# without objects.
+#   [ROBOT=name] [TERRAIN_SPEED=m/s] [WALK_PARAMS=...] Tests/motion/terrain_test.sh [LAYOUT...]   (default: ramp)
+set -u
+cd "$(dirname "$0")/../.."
+source Run/env.sh
+LOGDIR="$HRP_ROOT/build/test-logs/motion"
+mkdir -p "$LOGDIR"
+BASE_ID=$(( ${ROBOT_ID:-9200} + 70 ))
+LAYOUTS=("$@")
+[ ${#LAYOUTS[@]} -eq 0 ] && LAYOUTS=(ramp)
+n=0; k=0; failed=0
+for layout in "${LAYOUTS[@]}"; do
+  n=$((n + 1))
+  id=$((BASE_ID + n))
+  site="$HRP_ROOT/build/terrain-site-$layout"
+  rm -rf "$site"; mkdir -p "$site"
+  cp Config/site/*.lua "$site/"
+  luajit Tests/motion/terrain.lua sim "$layout" >"$site/sim.lua" || { echo "not ok $((k + 1)) - terrain $layout: no layout"; exit 1; }
+  Run/shm --robot "$id" remove >/dev/null 2>&1   # stale segments of an earlier run
+  HRP_SITE=$site ROBOT_ID=$id ./run_main --sim --quiet --no-restart --dcm-arg --lockstep-wait --dcm-arg 2 \
+    --dcm-arg --no-camera motion >"$LOGDIR/main_terrain_$layout.log" 2>&1 &
+  main_pid=$!
+  for _ in $(seq 200); do grep -q 'motion started' "$LOGDIR/main_terrain_$layout.log" 2>/dev/null && break; sleep 0.1; done
+  HRP_SITE=$site ROBOT_ID=$id timeout 300 ./run_repl Tests/motion/terrain_scenario.lua "$layout" \
+    >"$LOGDIR/terrain_$layout.log" 2>&1
+  rc=$?
+  kill -TERM "$main_pid" 2>/dev/null
+  wait "$main_pid" 2>/dev/null
+  Run/shm --robot "$id" remove >/dev/null 2>&1
+  while IFS= read -r line; do
+    if [[ $line =~ ^(not\ ok|ok)\ [0-9]+\ -\ (.*)$ ]]; then
+      k=$((k + 1)); echo "${BASH_REMATCH[1]} $k - ${BASH_REMATCH[2]}"
+      [[ ${BASH_REMATCH[1]} == "not ok" ]] && failed=$((failed + 1))
+    elif [[ $line == \#* ]]; then echo "$line"; fi
+  done <"$LOGDIR/terrain_$layout.log"
+  if [ $rc -ne 0 ]; then
+    k=$((k + 1)); failed=$((failed + 1))
+    echo "not ok $k - terrain $layout: scenario script exited with status $rc (log $LOGDIR/terrain_$layout.log)"
+    tail -n 5 "$LOGDIR/terrain_$layout.log" | sed 's/^/#   /'
+  fi
+done
+[ $failed -eq 0 ]
