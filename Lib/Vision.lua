@@ -3,6 +3,7 @@
 --   local Vision = require('Vision')
 --   Vision.ball()        --> { detected = bool, x = m, y = m, t = s, u = px, v = px, radius = px, frame = n }
 --   Vision.goal_posts()  --> { {x = m, y = m}, ... } (0 to 2 posts)
+--   Vision.robots()      --> { {x = m, y = m, team = -1|0|1, u0, v0, u1, v1 = px}, ... } (0 to 4, nearest first)
 -- Positions are in the robot frame (x forward, y left); t is the robot clock of the frame.
 local shm = require('shm')
 
@@ -37,6 +38,22 @@ function M.goal_posts()
       posts[i] = { x = v.goal_position[2 * i - 2], y = v.goal_position[2 * i - 1] }
     end
     return posts
+  end)
+end
+
+-- Other robots of the latest frame: the foot point of each (x, y), the team colour seen (-1 unknown,
+-- 0 blue, 1 red) and its box in the image.
+function M.robots()
+  local b = vision()
+  return b:read(function(v)
+    local list = {}
+    for i = 1, math.min(v.robots[0], 4) do
+      local k = 4 * (i - 1)
+      list[i] = { x = v.robot_position[2 * i - 2], y = v.robot_position[2 * i - 1], team = v.robot_team[i - 1],
+                  u0 = v.robot_image[k], v0 = v.robot_image[k + 1], u1 = v.robot_image[k + 2],
+                  v1 = v.robot_image[k + 3] }
+    end
+    return list
   end)
 end
 
