@@ -15,6 +15,11 @@ return {
       display = { 0, 160, 0 } },
     { name = 'white', bit = 16, y = { 172, 255 }, u = { 104, 152 }, v = { 104, 152 },
       display = { 255, 255, 255 } },
+    -- the teams' jerseys (the sim's red: Y 83, U 107, V 212; blue: Y 72, U 195, V 98, sim.lua's `teams`)
+    { name = 'red', bit = 2, y = { 30, 170 }, u = { 95, 125 }, v = { 185, 245 },
+      display = { 220, 30, 45 } },
+    { name = 'blue', bit = 4, y = { 25, 160 }, u = { 165, 230 }, v = { 60, 125 },
+      display = { 30, 70, 190 } },
   },
   ball = {
     color = 1,                  -- label bit
@@ -37,6 +42,21 @@ return {
     gap = 2,                    -- label pixels of noise bridged inside a post's run
     width_tolerance = { 0.5, 1.8 }, -- post width in the image / width expected at its base's range
     max_range = 10.5,           -- m, farther posts are refused (the carpet's diagonal)
+  },
+  -- other robots: non-field runs standing on the field (Player/Vision/robots.lua)
+  robots = {
+    field = 24,                 -- label bits that are field, never a robot: green | white
+    teams = { [0] = 4, [1] = 2 }, -- jersey label bits by the GameController's colour: 0 blue, 1 red
+    column_step = 2,            -- label columns between the columns looked at
+    min_run = 3,                -- label pixels in a row that start a robot (noise is single pixels)
+    gap = 3,                    -- field pixels bridged going up a robot (legs apart)
+    min_height = 0.25,          -- m above the ground its run reaches (the ball is 0.14 m)
+    max_range = 3.0,            -- m: further robots are not looked for (too few pixels to trust)
+    join = 0.35,                -- m between neighbouring columns' feet of one robot
+    min_width = 0.06,           -- m: narrower is a post's shadow or noise
+    max_width = 1.2,            -- m: wider is not one robot (or two side by side)
+    min_team_pixels = 6,        -- label pixels of a jersey colour that name the team
+    max_robots = 4,             -- reported, nearest first (the vision block holds 4)
   },
   publish_labels = false,       -- write label images to shm for debugging
 }

@@ -129,6 +129,14 @@ local function publish(frame, det)
   for i = 1, goals.n do
     b.goal_position[2 * i - 2], b.goal_position[2 * i - 1] = goals[i].x, goals[i].y
   end
+  local rb = det.robots
+  b.robots[0] = math.min(rb.n, 4) -- the block holds 4 (Config/shm.schema)
+  for i = 1, math.min(rb.n, 4) do
+    local r, k = rb[i], 4 * (i - 1)
+    b.robot_position[2 * i - 2], b.robot_position[2 * i - 1] = r.x, r.y
+    b.robot_image[k], b.robot_image[k + 1], b.robot_image[k + 2], b.robot_image[k + 3] = r.u0, r.v0, r.u1, r.v1
+    b.robot_team[i - 1] = r.team
+  end
   b.fps[0] = fps
   b:end_write()
 end

@@ -5,12 +5,14 @@
 --   local det = vp:process(frame, q, rpy)
 --   -- frame: a camera frame (yuyv, width, height, head[0..1]); q: joint angles (1-based, robot
 --   -- order); rpy: torso {roll, pitch}
---   det.ball.detected, det.ball.x, det.ball.y ...; det.goals.n, det.goals[1].x ...
+--   det.ball.detected, det.ball.x, det.ball.y ...; det.goals.n, det.goals[1].x ...;
+--   det.robots.n, det.robots[1].x, .team ... (Vision.robots)
 -- The result tables are reused from frame to frame.
 local imageproc = require('imageproc')
 local native = require('native')
 local project = require('Vision.project')
 local detect = require('Vision.detect')
+local robots = require('Vision.robots')
 
 local M = {}
 
@@ -39,7 +41,7 @@ function M.new(vcfg, ccfg, model)
     cm = project.camera(ccfg.width, ccfg.height, ccfg.fovy),
     head_joint = rawget(ccfg, 'head_joint') or { 0, 1 },
     pose = { 0, 0, 0, R = { 1, 0, 0, 0, 1, 0, 0, 0, 1 }, height = 0 },
-    result = { ball = { detected = false }, goals = { n = 0 } },
+    result = { ball = { detected = false }, goals = { n = 0 }, robots = { n = 0 } },
     q = {},
   }, Pipeline)
   return self
@@ -61,6 +63,7 @@ function Pipeline:process(frame, q, rpy)
   local res = self.result
   detect.ball(self.p, self.cm, self.pose, self.cfg.ball, res.ball)
   detect.goal_posts(self.p, self.cm, self.pose, self.cfg.goal, res.goals)
+  robots.detect(self.p, self.cm, self.pose, self.cfg.robots, res.robots)
   return res
 end
 

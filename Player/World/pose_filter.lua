@@ -2,6 +2,14 @@
 -- particle filter moved by odometry and weighted by goal-post sightings. The two goals look alike,
 -- so a post sighting is matched to the nearest of the four real posts for each particle; the prior
 -- (the robot starts in its own half) and the field's bounds break the symmetry.
+--
+-- The side: a pose and its mirror across the field (-x, -y, heading + pi) see the same posts. As
+-- real teams do, the robot knows its side from the game: it is placed in its own half (the prior,
+-- and the reachable region around it while it has walked little) or at a known pose (set_pose).
+-- Once the belief is confident where its mirror is out of reach (or the pose was given), its heading
+-- becomes the side's reference `side_a`, turned with the robot's own turns (odometry, the IMU) and
+-- kept aligned with later confident beliefs. A hypothesis whose heading is more than
+-- `side_tolerance` from it is the mirror: never sampled, re-seeded or kept (weighted as an outlier).
 local M = {}
 
 local sqrt, cos, sin, atan2, exp, floor = math.sqrt, math.cos, math.sin, math.atan2, math.exp, math.floor
@@ -35,14 +43,25 @@ function Filter:gauss()
 end
 
 -- Uniform over the prior region (own half by default), any heading.
+-- With the side known, the heading within side_tolerance of it.
 function Filter:sample_prior(i)
   local r = self.cfg.prior -- { xmin, xmax, ymin, ymax }
   self.px[i] = r[1] + (r[2] - r[1]) * self.rng()
   self.py[i] = r[3] + (r[4] - r[3]) * self.rng()
-  self.pa[i] = wrap(2 * pi * self.rng())
+  if self.side_a then
+    self.pa[i] = wrap(self.side_a + self.cfg.side_tolerance * (2 * self.rng() - 1))
+  else
+    self.pa[i] = wrap(2 * pi * self.rng())
+  end
+end
+
+-- Whether heading a is the mirror hypothesis's (the side is known and a is off it).
+function Filter:mirrored(a)
+  return self.side_a ~= nil and math.abs(wrap(a - self.side_a)) > self.cfg.side_tolerance
 end
 
 function Filter:init_prior()
+  self.side_a = nil -- placed anew: the side comes from the own-half prior again
   for i = 1, self.n do
     self:sample_prior(i)
     self.w[i] = 1 / self.n
@@ -69,6 +88,7 @@ function Filter:set_pose(x, y, a, spread)
     self.w[i] = 1 / self.n
   end
   self.walked = math.huge -- known: no constraint from the prior
+  self.side_a = a         -- ... and the side is this pose's
   self:estimate()
 end
 
@@ -80,6 +100,7 @@ function Filter:move(dx, dy, da)
   local sa = c.odom_rot_noise * math.abs(da) + c.odom_rot_per_m * dist + 1e-4
   local hl, hw = self.field.length / 2 + c.margin, self.field.width / 2 + c.margin
   self.walked = self.walked + dist
+  if self.side_a then self.side_a = wrap(self.side_a + da) end
   -- the reachable part of the field (see Filter:reachable): its bounds clamp like the field's
   local r, d = c.prior, self.walked * (1 + 2 * c.odom_trans_noise) + 0.3
   local xlo, xhi = math.max(-hl, r[1] - d), math.min(hl, r[2] + d)
@@ -130,7 +151,7 @@ function Filter:poses_from_two_posts(o1, o2)
     local x = f1[1] - (c * o1[1] - s * o1[2])
     local y = f1[2] - (s * o1[1] + c * o1[2])
     if x > -hl and x < hl and y > -hw and y < hw and math.abs(x) < self.field.length / 2
-      and self:reachable(x, y) then
+      and self:reachable(x, y) and not self:mirrored(a) then
       out[#out + 1] = { x, y, a }
     end
   end
@@ -179,7 +200,8 @@ function Filter:project(o, k)
     if (cx - x) ^ 2 + (cy - y) ^ 2 < jump2 then nx[#nx + 1], ny[#ny + 1], na[#na + 1] = cx, cy, a end
   end
   for m = 1, #nx do
-    if nx[m] > -hl and nx[m] < hl and ny[m] > -hw and ny[m] < hw and self:reachable(nx[m], ny[m]) then
+    if nx[m] > -hl and nx[m] < hl and ny[m] > -hw and ny[m] < hw and self:reachable(nx[m], ny[m])
+      and not self:mirrored(na[m]) then
       local i = 1 + floor(self.rng() * n)
       if i > n then i = n end
       self.px[i], self.py[i], self.pa[i] = nx[m], ny[m], na[m]
@@ -261,6 +283,8 @@ function Filter:observe_posts(posts)
       local e = sep - self.field.goal_width
       l = l * (floor_l + exp(-0.5 * e * e / 0.3 ^ 2))
     end
+    -- the mirror hypothesis explains a sighting as well as the truth: the side rules it out
+    if self:mirrored(self.pa[i]) then l = l * floor_l * floor_l end
     self.w[i] = self.w[i] * l
     total = total + self.w[i]
   end
@@ -370,7 +394,21 @@ function Filter:estimate()
   var = var / sw
   local rlen = sqrt(sc * sc + ss * ss) / sw -- 1 when all headings agree
   self.confidence = math.max(0, math.min(1, rlen * exp(-var / 0.5) * (self.fit or 1)))
+  self:update_side()
   return x, y, a, self.confidence
+end
+
+-- The side's reference from a confident belief: taken when the belief's mirror is out of reach of
+-- the placement (so the belief cannot be the mirror), then kept aligned with confident beliefs on
+-- its side (the odometry's turns drift a little).
+function Filter:update_side()
+  local c = self.cfg
+  if self.confidence < c.side_confidence then return end
+  if not self.side_a then
+    if not self:reachable(-self.x, -self.y) then self.side_a = self.a end
+  elseif not self:mirrored(self.a) then
+    self.side_a = wrap(self.side_a + c.side_follow * wrap(self.a - self.side_a))
+  end
 end
 
 return M

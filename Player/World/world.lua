@@ -4,6 +4,7 @@
 --   local world = require('World.world').new(cfg)     -- cfg = Config behavior.lua's `world` part
 --   world:update(t, odometry, vision)                 -- once per behavior step
 --   world.ball.x ... ; world:ball_field(); world:goal_in_robot_frame()
+--   world.obstacles: other robots seen lately, robot frame: { { x, y, team (-1, 0 blue, 1 red), t }, ... }
 local ball_filter = require('World.ball_filter')
 local pose_filter = require('World.pose_filter')
 
@@ -38,6 +39,7 @@ function M.new(cfg)
   w.odom = nil
   w.frame = nil
   w.odometry_jumps = 0
+  w.obstacles = {}
   return w
 end
 
@@ -88,6 +90,7 @@ function World:update(t, odometry, vision, imu_yaw)
     elseif dx ~= 0 or dy ~= 0 or da ~= 0 then
       self.ball:move_robot(dx, dy, da)
       self.pose:move(dx, dy, da)
+      self:move_obstacles(dx, dy, da)
     end
   end
   self.odom = { odometry[1], odometry[2], odometry[3] }
@@ -97,8 +100,56 @@ function World:update(t, odometry, vision, imu_yaw)
     if vision.ball_detected then self.ball:observe(vision.ball[1], vision.ball[2], t) end
     local posts = self:plausible_posts(vision.posts)
     if posts then self.pose:observe_posts(posts) end
+    if vision.robots then self:observe_robots(vision.robots, t) end
   end
   self.pose:estimate()
+  self:forget_obstacles(t)
+end
+
+-- The obstacles (robot frame) after the robot moved (dx, dy) and turned da: as the ball.
+function World:move_obstacles(dx, dy, da)
+  local c, s = cos(-da), sin(-da)
+  for _, o in ipairs(self.obstacles) do
+    local x, y = o.x - dx, o.y - dy
+    o.x, o.y = c * x - s * y, s * x + c * y
+  end
+end
+
+-- Robots seen in a frame ({ { x, y, team } ... }, robot frame): each updates the obstacle it is
+-- near (within obstacle_merge m) or is a new one; a robot that the pose puts off the field (the
+-- floor beyond the carpet looks the same to the vision) is dropped once the pose is trusted.
+function World:observe_robots(list, t)
+  local oc = self.cfg.obstacles
+  local obs = self.obstacles
+  local hl, hw = self.cfg.field.length / 2 + oc.field_margin, self.cfg.field.width / 2 + oc.field_margin
+  local p = self.pose
+  local c, s = cos(p.a), sin(p.a)
+  for _, r in ipairs(list) do
+    local fx, fy = p.x + c * r.x - s * r.y, p.y + s * r.x + c * r.y
+    if not self:localised() or (math.abs(fx) <= hl and math.abs(fy) <= hw) then
+      local best, bd = nil, oc.merge ^ 2
+      for _, o in ipairs(obs) do
+        local d = (o.x - r.x) ^ 2 + (o.y - r.y) ^ 2
+        if d < bd then best, bd = o, d end
+      end
+      if best then
+        best.x, best.y = best.x + oc.blend * (r.x - best.x), best.y + oc.blend * (r.y - best.y)
+        best.t = t
+        if r.team >= 0 then best.team = r.team end
+      elseif #obs < oc.max then
+        obs[#obs + 1] = { x = r.x, y = r.y, team = r.team, t = t }
+      end
+    end
+  end
+end
+
+-- Obstacles not seen for obstacle memory s are forgotten (they walk away).
+function World:forget_obstacles(t)
+  local obs, k = self.obstacles, 1
+  for i = 1, #obs do
+    if t - obs[i].t <= self.cfg.obstacles.memory then obs[k] = obs[i] k = k + 1 end
+  end
+  for i = #obs, k, -1 do obs[i] = nil end
 end
 
 -- The sightings worth giving the pose filter: none nearer than a robot can stand to a post or
@@ -195,6 +246,14 @@ function World:publish(block)
       m = m + 1
     end
     w.nparticles[0] = m
+    local obs = self.obstacles
+    local n = math.min(#obs, 8) -- the block holds 8 (Config/shm.schema)
+    w.obstacles[0] = n
+    for i = 1, n do
+      w.obstacle[2 * i - 2], w.obstacle[2 * i - 1] = obs[i].x, obs[i].y
+      w.obstacle_team[i - 1] = obs[i].team
+      w.obstacle_age[i - 1] = (self.t or 0) - obs[i].t
+    end
   end)
 end
 
