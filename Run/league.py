@@ -24,6 +24,7 @@ import argparse
 import json
 import os
 import re
+import signal
 import subprocess
 import sys
 import time
@@ -38,10 +39,20 @@ def play(root, robot_id, per_team, half, ready, seed, alone):
     cmd = ["nice", "bash", os.path.join(root, "Tests/bench/match.sh"), str(per_team), str(half), str(seed),
            str(ready)]
     t0 = time.time()
-    p = subprocess.run(cmd, env=env, cwd=root, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
-                       check=False)
-    return {"seed": seed, "robot_id": robot_id, "rc": p.returncode, "wall": time.time() - t0,
-            "output": p.stdout}
+    # its own process group: a cancelled task (the league interrupted) ends the whole match
+    p = subprocess.Popen(cmd, env=env, cwd=root, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                         start_new_session=True)
+    try:
+        out, _ = p.communicate()
+    except BaseException:
+        os.killpg(p.pid, signal.SIGTERM)
+        try:
+            p.wait(timeout=10)
+        except subprocess.TimeoutExpired:
+            pass
+        os.killpg(p.pid, signal.SIGKILL)
+        raise
+    return {"seed": seed, "robot_id": robot_id, "rc": p.returncode, "wall": time.time() - t0, "output": out}
 
 
 def parse(out):
@@ -121,9 +132,21 @@ def main():
     ap.add_argument("--id-base", type=int, default=int(os.environ.get("ROBOT_ID", "133000")))
     ap.add_argument("--root", default=ROOT, help="the repository's path on the nodes")
     ap.add_argument("--json", default=None, help="write the per-match results here")
+    ap.add_argument("--tabulate", nargs="+", metavar="REFEREE_LOG",
+                    help="no matches: the table of finished matches' referee logs (build/match/<id>/referee.log;"
+                         " their seeds from --seed on, in the order given)")
     args = ap.parse_args()
     if args.matches < 1 or args.per_team < 1 or args.half <= 0 or args.ready <= 0:
         ap.error("--matches, --per-team, --half and --ready must be positive")
+
+    if args.tabulate:
+        results = []
+        for k, path in enumerate(args.tabulate):
+            with open(path) as f:
+                out = f.read()
+            results.append({"seed": args.seed + k, "robot_id": 0, "rc": 0, "wall": 0, "output": out,
+                            "parsed": parse(out)})
+        return report(results, args)
 
     import ray  # late: --help works without it
     if args.address:
@@ -133,9 +156,11 @@ def main():
         # no dashboard: a shared 2-core machine; Ray's session files under build/ray
         ray.init(num_cpus=os.cpu_count(), object_store_memory=80 * 1024 * 1024, include_dashboard=False,
                  log_to_driver=False, _temp_dir=os.path.join(args.root, "build", "ray"))
+    # SIGTERM as Ctrl-C: the tasks are cancelled (each ends its match) and Ray shut down
+    signal.signal(signal.SIGTERM, lambda *_: (_ for _ in ()).throw(KeyboardInterrupt()))
+    refs = []
     try:
         task = ray.remote(num_cpus=args.cpus_per_match)(play)
-        refs = []
         stride = 2 * args.per_team * 2  # robot ids per match (match.sh: 2 * per_team), with room
         for k in range(args.matches):
             seed = args.seed + k
@@ -150,8 +175,19 @@ def main():
             results.append(res)
             sys.stderr.write("league: seed %d done in %.0f s (exit %d), %d left\n" % (
                 res["seed"], res["wall"], res["rc"], len(pending)))
+    except KeyboardInterrupt:
+        sys.stderr.write("league: interrupted, cancelling the matches\n")
+        for r in refs:
+            ray.cancel(r)
+        time.sleep(3)
+        raise
     finally:
         ray.shutdown()
+    return report(results, args)
+
+
+def report(results, args):
+    """The table of the finished matches; 1 if any did not finish."""
     results.sort(key=lambda r: r["seed"])
     rows, failed = [], []
     for res in results:

@@ -80,12 +80,25 @@ while true do
   local playing = m.state == packet.STATE.playing
   for i, rb in ipairs(w.robots) do
     local b = beliefs[i]
-    local bx, by = b.world:read(function(x) return x.pose[0], x.pose[1] end)
+    local bx, by, ba, side = b.world:read(function(x) return x.pose[0], x.pose[1], x.pose[2], x.pose_side[0] end)
     local p = m.robots[i]
+    b.seen = { bx, by, ba, side }
     tally:look(last_t and t - last_t or 0, playing, i, rb, { x = bx, y = by, role = b.game.role[0] },
       m.side[rb.team], p and p.penalty or false)
   end
   last_t = t
+  for i, rb in ipairs(w.robots) do
+    local r = tally.robots[i]
+    local now = r.mirrored > (r.last_mirrored or 0)
+    if now ~= (r.in_mirror or false) then
+      r.in_mirror = now
+      local bs = beliefs[i].seen
+      m:event(string.format('team %d player %d: belief %s (truth %.1f %.1f; belief %.1f %.1f %.2f, side %.2f)',
+        team_numbers[rb.team], rb.player, now and 'mirrored' or 'back on its side', rb.x, rb.y, bs[1], bs[2], bs[3],
+        bs[4]))
+    end
+    r.last_mirrored = r.mirrored
+  end
   for _, a in ipairs(m:step(t, w)) do
     if a[1] == 'ball' then assert(sims[1].teleport_ball(a[2], a[3]))
     else assert(sims[a[2]].teleport_robot(a[3], a[4], a[5])) end

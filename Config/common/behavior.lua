@@ -49,12 +49,15 @@ return {
       gate_confidence = 0.6,    -- a belief this confident ignores a sighting ...
       gate_fit = 0.01,          -- ... that it explains this badly (mean likelihood)
       margin = 0.5,             -- m the robot may be outside the field lines
-      -- the side (Player/World/pose_filter.lua): a belief this confident, its mirror out of reach of
-      -- the placement, sets the side's heading; a hypothesis further from it than side_tolerance
-      -- (rad) is the mirror pose; each confident belief pulls the reference by side_follow
+      -- the side (Player/World/pose_filter.lua): a belief this confident, its mirror impossible,
+      -- sets the side's heading; a hypothesis further from it than side_tolerance (rad) is the mirror
       side_confidence = 0.5,
       side_tolerance = 1.57,
-      side_follow = 0.1,
+      own_half_margin = 0.3,    -- m past the halfway line a robot placed in its own half may be believed
+      -- where the robot is placed before a half (World.world placement_lines): 'anywhere' in the own
+      -- half, on a 'touchline' of it facing in, or on the 'left' / 'right' one (seen from the own
+      -- goal in the first half; the sim's referee places team 1 on the right, team 2 on the left)
+      placement = 'anywhere',
     },
     localised_confidence = 0.5, -- pose confidence from which the robot attacks (below: looks for goals)
     ball_lost_after = 4.0,      -- s without a sighting: the ball is lost (a look around takes 2)

@@ -141,6 +141,8 @@ function Behavior:step()
   -- a kick-off: PLAYING right after SET (Player/GameFSM/playing.lua follows its progress)
   if state == 'playing' and self.last_state == 'set' then ctx.kickoff = { t0 = t } end
   if state ~= 'playing' then ctx.kickoff = nil end
+  -- from a placement until the kick-off the robot is in its own half (the pose filter's side)
+  if state == 'playing' then self.world.pose.own_half = false end
   self.last_state = state
   local want = penalized and 'penalized' or state
   if self.game:state() ~= want or not self.game.current then self.game:event(want, ctx) end

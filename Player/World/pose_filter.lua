@@ -4,11 +4,14 @@
 -- (the robot starts in its own half) and the field's bounds break the symmetry.
 --
 -- The side: a pose and its mirror across the field (-x, -y, heading + pi) see the same posts. As
--- real teams do, the robot knows its side from the game: it is placed in its own half (the prior,
--- and the reachable region around it while it has walked little) or at a known pose (set_pose).
--- Once the belief is confident where its mirror is out of reach (or the pose was given), its heading
--- becomes the side's reference `side_a`, turned with the robot's own turns (odometry, the IMU) and
--- kept aligned with later confident beliefs. A hypothesis whose heading is more than
+-- real teams do, the robot knows its side from the game: it is placed in its own half (the prior)
+-- and stays there until the kick-off (`own_half`: from a placement until the game is PLAYING; the
+-- world model's caller clears it), or it was placed at a known pose (set_pose); later, the reachable
+-- region around the placement (by the distance walked) says where it cannot be yet. Once the belief
+-- is confident where its mirror cannot be (or the pose was given), its heading
+-- becomes the side's reference `side_a`, held as an offset from the IMU's yaw (Filter:imu; it
+-- turns with the body, through falls too) or, without an IMU, turned by the odometry's turns. A
+-- hypothesis whose heading is more than
 -- `side_tolerance` from it is the mirror: never sampled, re-seeded or kept (weighted as an outlier).
 local M = {}
 
@@ -60,13 +63,26 @@ function Filter:mirrored(a)
   return self.side_a ~= nil and math.abs(wrap(a - self.side_a)) > self.cfg.side_tolerance
 end
 
-function Filter:init_prior()
-  self.side_a = nil -- placed anew: the side comes from the own-half prior again
+-- lines (optional): the touch lines the robot was placed on, facing into the field (y signs, e.g.
+-- { -1 }: y = -width/2, heading +pi/2); without: anywhere in the own half, any heading. Placed on
+-- one known line, the heading, and so the side, is known at once.
+function Filter:init_prior(lines)
+  self.side_a, self.side_offset = nil, nil -- placed anew: the side comes from the placement again
+  self.own_half = true
   for i = 1, self.n do
-    self:sample_prior(i)
+    if lines then
+      local s = lines[1 + floor(self.rng() * #lines)] or lines[1]
+      local r = self.cfg.prior
+      self.px[i] = r[1] + (r[2] - r[1]) * self.rng()
+      self.py[i] = s * self.field.width / 2 + 0.1 * self:gauss()
+      self.pa[i] = wrap(-s * pi / 2 + 0.15 * self:gauss())
+    else
+      self:sample_prior(i)
+    end
     self.w[i] = 1 / self.n
   end
   self.walked = 0
+  if lines and #lines == 1 then self:take_side(-lines[1] * pi / 2) end
   self:estimate()
 end
 
@@ -75,6 +91,7 @@ end
 -- the field (the goals look alike) cannot be it, however well it explains a sighting.
 function Filter:reachable(x, y)
   local r, d = self.cfg.prior, self.walked * (1 + 2 * self.cfg.odom_trans_noise) + 0.3
+  if self.own_half and x > self.cfg.own_half_margin then return false end
   return x >= r[1] - d and x <= r[2] + d and y >= r[3] - d and y <= r[4] + d
 end
 
@@ -88,7 +105,8 @@ function Filter:set_pose(x, y, a, spread)
     self.w[i] = 1 / self.n
   end
   self.walked = math.huge -- known: no constraint from the prior
-  self.side_a = a         -- ... and the side is this pose's
+  self:take_side(a)       -- ... and the side is this pose's
+  self.own_half = false
   self:estimate()
 end
 
@@ -100,10 +118,11 @@ function Filter:move(dx, dy, da)
   local sa = c.odom_rot_noise * math.abs(da) + c.odom_rot_per_m * dist + 1e-4
   local hl, hw = self.field.length / 2 + c.margin, self.field.width / 2 + c.margin
   self.walked = self.walked + dist
-  if self.side_a then self.side_a = wrap(self.side_a + da) end
+  if self.side_a and not self.side_offset then self.side_a = wrap(self.side_a + da) end
   -- the reachable part of the field (see Filter:reachable): its bounds clamp like the field's
   local r, d = c.prior, self.walked * (1 + 2 * c.odom_trans_noise) + 0.3
   local xlo, xhi = math.max(-hl, r[1] - d), math.min(hl, r[2] + d)
+  if self.own_half then xhi = math.min(xhi, c.own_half_margin) end
   local ylo, yhi = math.max(-hw, r[3] - d), math.min(hw, r[4] + d)
   for i = 1, self.n do
     local a = self.pa[i]
@@ -398,17 +417,23 @@ function Filter:estimate()
   return x, y, a, self.confidence
 end
 
--- The side's reference from a confident belief: taken when the belief's mirror is out of reach of
--- the placement (so the belief cannot be the mirror), then kept aligned with confident beliefs on
--- its side (the odometry's turns drift a little).
+-- The IMU's yaw (rad, any zero): the side's reference keeps its offset from it.
+function Filter:imu(yaw)
+  self.imu_yaw = yaw
+  if self.side_offset then self.side_a = wrap(yaw + self.side_offset) end
+end
+
+-- The side's reference is heading a (field frame) from now on.
+function Filter:take_side(a)
+  self.side_a = a
+  self.side_offset = self.imu_yaw and wrap(a - self.imu_yaw) or nil
+end
+
+-- The side's reference from a confident belief, taken when the belief's mirror cannot be (in the
+-- other half while the robot is known to be in its own, or out of reach of the placement).
 function Filter:update_side()
-  local c = self.cfg
-  if self.confidence < c.side_confidence then return end
-  if not self.side_a then
-    if not self:reachable(-self.x, -self.y) then self.side_a = self.a end
-  elseif not self:mirrored(self.a) then
-    self.side_a = wrap(self.side_a + c.side_follow * wrap(self.a - self.side_a))
-  end
+  if self.side_a or self.confidence < self.cfg.side_confidence then return end
+  if not self:reachable(-self.x, -self.y) then self:take_side(self.a) end
 end
 
 return M

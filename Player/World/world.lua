@@ -47,9 +47,24 @@ end
 -- while the game was in its initial state (placed by hand, or by a scenario), and a belief formed
 -- before that would be confident and wrong (the two goals look alike, so no later sighting
 -- contradicts a mirrored belief).
-function World:reset_pose()
-  self.pose:init_prior()
+-- after_penalty: put back by a referee (on either touch line); first_half: the GameController's
+-- (the placement config names the touch line of the first half; the sides change at half time).
+function World:reset_pose(after_penalty, first_half)
+  self.pose:init_prior(self:placement_lines(after_penalty, first_half))
   self.pose.fit = nil
+end
+
+-- The touch lines (their y sign, team frame) the robot is placed on, facing into the field, by the
+-- pose config's `placement`: 'anywhere' (nil: anywhere in the own half, any heading), 'touchline'
+-- (either), 'left'/'right' (y > 0 / y < 0 seen from the own goal, in the first half; the other in
+-- the second). A robot put back after a penalty: either touch line.
+function World:placement_lines(after_penalty, first_half)
+  local pl = self.cfg.pose.placement
+  if pl == 'anywhere' then return nil end
+  if after_penalty or pl == 'touchline' then return { -1, 1 } end
+  local s = pl == 'left' and 1 or -1
+  if first_half == false then s = -s end
+  return { s }
 end
 
 -- Continues from a belief this process's predecessor published (the world block): a restarted
@@ -81,6 +96,7 @@ function World:update(t, odometry, vision, imu_yaw)
     if math.abs(imu_da) > 0.5 then imu_da = nil end -- a glitch (or lying on the ground): not a turn
   end
   self.imu_yaw = imu_yaw
+  if imu_yaw then self.pose:imu(imu_yaw) end
   if self.odom then
     local dx, dy, da = odom_delta(self.odom, odometry)
     if imu_da and math.abs(da) <= 1.0 then da = imu_da end
@@ -237,6 +253,7 @@ function World:publish(block)
     w.ball_time[0] = b.seen and b.t_seen or -1
     w.pose[0], w.pose[1], w.pose[2] = p.x, p.y, p.a
     w.pose_confidence[0] = p.confidence
+    w.pose_side[0] = p.side_a or 0 / 0
     w.time[0] = self.t or 0
     -- a sample of the particles for the live view (Run/view): every k-th, at most what the block holds
     local k = math.ceil(p.n / PARTICLES_SHOWN)

@@ -7,7 +7,7 @@
 -- luacheck: globals Sim wait shm Body
 local gc_sim = require('Tests.game.gc_sim')
 
-local me, other = shm.robot_id(), shm.robot_id() + 1
+local other = shm.robot_id() + 1
 local sim2 = Sim.of(other)
 local vision, world = shm.open('vision'), shm.open('world')
 

@@ -12,7 +12,7 @@ local pcfg = { particles = 300, prior = { -4.5, 0, -3, 3 }, odom_trans_noise = 0
   inject_fraction = 0.01, margin = 0.5, roughen_position = 0.03, roughen_angle = 0.02,
   reset_below = 0.5, reset_fraction = 0.05, gate_confidence = 0.6, gate_fit = 0.01,
   project_fraction = 0.05, project_lost = 0.3, project_max_jump = 1.0, side_confidence = 0.5,
-  side_tolerance = 1.57, side_follow = 0.1 }
+  side_tolerance = 1.57, own_half_margin = 0.3 }
 
 describe('ball filter', function()
   it('keeps a still ball in place while the robot walks and turns', function()

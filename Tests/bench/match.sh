@@ -43,7 +43,11 @@ for i in $(seq 0 $((R - 1))); do
   site="$DIR/site_${team}_${player}"
   mkdir -p "$site"
   cp Config/site/vision.lua "$site/"
-  printf 'return { team_number = %d, player_number = %d }\n' "$team" "$player" >"$site/behavior.lua"
+  # the referee places team 1 on the touch line at its right in the first half (y = -W, its own
+  # goal at -x), team 2 on its left: the robots know it (the pose filter's side)
+  side=$([ "$team" = 1 ] && echo right || echo left)
+  printf 'return { team_number = %d, player_number = %d, world = { pose = { placement = "%s" } } }\n' \
+    "$team" "$player" "$side" >"$site/behavior.lua"
   rm -f "$site/game.lua"
   for t in ${ALONE:-}; do
     [ "$t" = "$team" ] && printf 'return { team = { enabled = false }, roles = { enabled = false } }\n' >"$site/game.lua"
