@@ -178,7 +178,10 @@ def main():
     except KeyboardInterrupt:
         sys.stderr.write("league: interrupted, cancelling the matches\n")
         for r in refs:
-            ray.cancel(r)
+            try:
+                ray.cancel(r)
+            except Exception:  # finished already, or Ray going down
+                pass
         time.sleep(3)
         raise
     finally:
@@ -206,4 +209,7 @@ def report(results, args):
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    try:
+        sys.exit(main())
+    except KeyboardInterrupt:
+        sys.exit(130)

@@ -34,7 +34,7 @@ local function column(L, wa, ha, x, s, cm, pose, cfg, field)
   local u = (x + 0.5) * s
   local hv = horizon_v(cm, pose, u)
   if not hv then return nil end
-  local yh = floor(hv / s)
+  local yh = math.max(-1, floor(hv / s)) -- the horizon, or above the image when looking down
   local run, y = 0, ha - 1
   -- up from the bottom to the first `min_run` non-field pixels in a row (below the horizon)
   while y > yh do
