@@ -20,6 +20,8 @@ bench motion_tick luajit Tests/bench/motion_tick.lua 50000
 bench dxl_wire Tests/bench/dxl_wire.sh 4
 bench hubo_bus Tests/bench/hubo_bus.sh 5
 bench vision_lua luajit Tests/bench/vision_lua.lua 2
+bench vision_detect Tests/bench/vision_detect.sh 2
+bench white_score Tests/bench/white_score.sh
 bench sim_lockstep bash Tests/bench/sim_lockstep.sh 30
 bench walk_sim Tests/bench/walk_sim.sh
 bench score_given_pose Tests/bench/score_given_pose.sh

@@ -72,6 +72,7 @@ return {
       merge = 0.5,              -- m: a sighting this near an obstacle is that obstacle
       blend = 0.5,              -- share of a new sighting in the obstacle's position
       field_margin = 0.5,       -- m: sightings the pose puts further off the field are not robots
+      min_range = 0.3,          -- m: nearer sightings are the robot's own feet and arms
       max = 8,                  -- obstacles kept (the world block holds 8)
     },
   },

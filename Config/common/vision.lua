@@ -1,7 +1,8 @@
 -- Vision: colour classes, lookup table, detection thresholds (Player/Vision, Run/lut_tool).
 -- Colours are boxes in YUV (BT.601 full range, 0..255) that Run/lut_tool and the vision process
 -- turn into a lookup table when no trained table is given. The sim renders a green carpet, white
--- lines and goals, and an orange ball.
+-- lines and goals, and an orange ball (U 52, V 214); orange's U ends at 92 so that the red team's
+-- jerseys (U 107, Config/platforms/Sim/sim.lua `teams`) are not taken for the ball.
 return {
   lut = false,                  -- path of a LUT file (relative to the repo root), or false: from colors
                                 -- (a venue's trained table: set it in the site folder's vision.lua)
@@ -9,19 +10,30 @@ return {
   block = 4,                    -- block image = 4x4 bit-OR of the label image (80x60)
   -- bit: the colour's label bit; y/u/v: {min, max}; display: RGB for label renderings
   colors = {
-    { name = 'orange', bit = 1, y = { 40, 235 }, u = { 0, 112 }, v = { 168, 255 },
+    { name = 'orange', bit = 1, y = { 40, 235 }, u = { 0, 92 }, v = { 168, 255 },
       display = { 255, 128, 0 } },
     { name = 'green', bit = 8, y = { 30, 190 }, u = { 56, 124 }, v = { 40, 122 },
       display = { 0, 160, 0 } },
     { name = 'white', bit = 16, y = { 172, 255 }, u = { 104, 152 }, v = { 104, 152 },
       display = { 255, 255, 255 } },
-    -- the teams' jerseys (the sim's red: Y 83, U 107, V 212; blue: Y 72, U 195, V 98, sim.lua's `teams`)
-    { name = 'red', bit = 2, y = { 30, 170 }, u = { 95, 125 }, v = { 185, 245 },
-      display = { 220, 30, 45 } },
-    { name = 'blue', bit = 4, y = { 25, 160 }, u = { 165, 230 }, v = { 60, 125 },
-      display = { 30, 70, 190 } },
+    -- the teams' jerseys (the sim's: Config/platforms/Sim/sim.lua teams; red U 107 V 212, blue U 195 V 98)
+    { name = 'red', bit = 2, y = { 30, 200 }, u = { 96, 124 }, v = { 180, 245 }, display = { 220, 30, 45 } },
+    { name = 'blue', bit = 4, y = { 30, 200 }, u = { 170, 230 }, v = { 60, 124 }, display = { 30, 70, 190 } },
   },
   ball = {
+    kind = 'orange',            -- 'orange': the colour table's ball (below); 'white': the FIFA ball, found
+                                -- by candidates and a classifier (white, below)
+    white = {
+      model = 'Config/common/ball_white.mlp', -- the classifier (trained by Run/ball_train/train.sh)
+      green = 8,                -- label bits of the field
+      boundary_run = 4,         -- label rows of field that start the field in a column
+      step = 2,                 -- label px between candidate positions
+      min_inner = 0.75,         -- fraction of not-field labels inside the ball's expected disc, at least
+      max_ring = 0.45,          -- fraction of not-field labels in the ring around it, at most
+      min_radius = 4,           -- px, the smallest ball looked for (about 5 m away)
+      max_candidates = 8,       -- candidates the classifier checks per frame, best shapes first
+      threshold = 0.5,          -- classifier probability for a ball
+    },
     color = 1,                  -- label bit
     diameter = 0.14,            -- m
     min_area = 4,               -- label pixels
@@ -31,6 +43,25 @@ return {
     green_color = 24,           -- label bits that count as field below the ball: green | white (lines)
     max_range = 6.0,            -- m, farther detections are refused
     size_tolerance = 2.0,       -- range from size within this factor of the ground-projected range
+  },
+  -- other robots: bands of label columns neither field nor line that rise from a foot on the field
+  -- to the field boundary (Player/Vision/detect_robots.lua)
+  robots = {
+    enabled = true,
+    field = 25,                 -- label bits of field, lines and the orange ball (green | white | orange):
+                                -- not a robot
+    red = 2, blue = 4,          -- label bits of the team colours (colors above)
+    min_run = 6,                -- label rows of a column's run, at least
+    max_gap = 3,                -- field or line labels bridged inside a run (the field seen between legs)
+    min_width = 3,              -- label columns of a band, at least (and the columns bridged inside one)
+    merge_gap = 0.12,           -- m between neighbouring bands at their range that still make one robot (legs)
+    arm_width = 0.1,            -- m: a band no wider joins its neighbour whatever its foot (an arm)
+    min_width_m = 0.08,         -- m, a band's width at its foot's range: at least (a leg)...
+    max_width_m = 1.2,          -- ... and at most (two robots side by side)
+    depth_offset = 0.06,        -- m from the front of the feet to the robot's middle, along the ray
+    height = 0.6,               -- m, a robot's height at most (the top of its box in the image)
+    min_team = 6,               -- labels of a team colour in a band to name its team
+    max_range = 6.0,            -- m
   },
   goal = {
     color = 16,                 -- label bit (white posts)
@@ -42,21 +73,6 @@ return {
     gap = 2,                    -- label pixels of noise bridged inside a post's run
     width_tolerance = { 0.5, 1.8 }, -- post width in the image / width expected at its base's range
     max_range = 10.5,           -- m, farther posts are refused (the carpet's diagonal)
-  },
-  -- other robots: non-field runs standing on the field (Player/Vision/robots.lua)
-  robots = {
-    field = 24,                 -- label bits that are field, never a robot: green | white
-    teams = { [0] = 4, [1] = 2 }, -- jersey label bits by the GameController's colour: 0 blue, 1 red
-    column_step = 2,            -- label columns between the columns looked at
-    min_run = 3,                -- label pixels in a row that start a robot (noise is single pixels)
-    gap = 3,                    -- field pixels bridged going up a robot (legs apart)
-    min_height = 0.25,          -- m above the ground its run reaches (the ball is 0.14 m)
-    max_range = 3.0,            -- m: further robots are not looked for (too few pixels to trust)
-    join = 0.35,                -- m between neighbouring columns' feet of one robot
-    min_width = 0.06,           -- m: narrower is a post's shadow or noise
-    max_width = 1.2,            -- m: wider is not one robot (or two side by side)
-    min_team_pixels = 6,        -- label pixels of a jersey colour that name the team
-    max_robots = 4,             -- reported, nearest first (the vision block holds 4)
   },
   publish_labels = false,       -- write label images to shm for debugging
 }

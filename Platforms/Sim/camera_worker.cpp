@@ -70,7 +70,15 @@ void CameraWorker::run() {
       j.fn();
     } else {
       world_.solids(j.scene, &solids);
-      ren_.render(j.cam, solids, j.self, j.hide ? *j.hide : hide_, j.scene.ball, world_.ball_radius(), j.seq, j.out);
+      Shot sh;
+      sh.cam = j.cam;
+      sh.ball = j.scene.ball;
+      sh.ball_rot = j.scene.ball_rot;
+      sh.ball_radius = world_.ball_radius();
+      sh.self = j.self;
+      sh.hide = j.hide ? j.hide : &hide_;
+      sh.frame = j.seq;
+      ren_.render(sh, solids, j.out);
     }
     {
       std::lock_guard<std::mutex> l(mu_);

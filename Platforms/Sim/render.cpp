@@ -17,11 +17,23 @@ constexpr uint8_t Renderer::kWhite[3];
 constexpr uint8_t Renderer::kOrange[3];
 constexpr uint8_t Renderer::kFloor[3];
 constexpr uint8_t Renderer::kSky[3];
+constexpr uint8_t Renderer::kBallWhite[3];
+constexpr uint8_t Renderer::kBallPatch[3];
 
 namespace {
 
 const double kNear = 0.01;
 const Vec3 kLight = Vec3(0.3, 0.2, 0.93).normalized();
+
+// The white ball's pattern: a dark patch around each of the 12 vertices of an icosahedron (the
+// pentagons of the classic truncated-icosahedron ball; 6 axes, a patch at each end). A patch's
+// angular radius of 0.30 rad lies between the pentagon's inscribed (0.28) and circumscribed (0.35)
+// angle on a truncated icosahedron: 27% of the surface dark, as on such a ball (28%).
+const double kPhi = 1.6180339887498949;
+const Vec3 kPatchAxes[6] = {Vec3(0, 1, kPhi).normalized(), Vec3(0, 1, -kPhi).normalized(),
+                            Vec3(1, kPhi, 0).normalized(), Vec3(1, -kPhi, 0).normalized(),
+                            Vec3(kPhi, 0, 1).normalized(), Vec3(kPhi, 0, -1).normalized()};
+const double kPatchCos = std::cos(0.30);
 
 // Writes pixels u0..u1 of a row: luma per pixel from ys (or y), chroma per YUYV pair; a pair only
 // half covered gets the average of its old chroma and the new one.
@@ -56,7 +68,19 @@ bool camera_project(const Camera &c, const Vec3 &p, double *u, double *v) {
   return true;
 }
 
-Renderer::Renderer(const Params &p, uint64_t seed) : seed_(seed) {
+Shot shot_of(const World &w, const Camera &c, int self, const std::vector<int> *hide, uint32_t frame) {
+  Shot s;
+  s.cam = c;
+  s.ball = w.ball_position();
+  s.ball_rot = w.ball_rotation();
+  s.ball_radius = w.ball_radius();
+  s.self = self;
+  s.hide = hide;
+  s.frame = frame;
+  return s;
+}
+
+Renderer::Renderer(const Params &p, uint64_t seed) : seed_(seed), white_ball_(p.ball_kind == "white") {
   // The markings are symmetric in |X| and |Y|: one quarter of the carpet at 1 cm, stored in
   // 8 x 8 texel tiles (one cache line each) so that rays walking in any direction stay cached.
   res_ = 0.01;
@@ -301,7 +325,8 @@ void Renderer::solid(const Camera &c, const Solid &s, uint32_t frame, uint8_t *i
   }
 }
 
-void Renderer::ball(const Camera &c, const Vec3 &centre, double r, uint32_t frame, uint8_t *img) const {
+void Renderer::ball(const Camera &c, const Vec3 &centre, const Mat3 &brot, double r, uint32_t frame,
+                    uint8_t *img) const {
   const Noise nz{noise_.data(), noise_offset(frame)};
   const int W = c.width, H = c.height;
   const double f = c.focal(), cu = (W - 1) / 2.0, cv = (H - 1) / 2.0;
@@ -328,6 +353,9 @@ void Renderer::ball(const Camera &c, const Vec3 &centre, double r, uint32_t fram
   const double r2 = r * r, ss = s.squaredNorm();
   const Vec3 lc = c.rot.transpose() * kLight;   // light direction in camera coordinates
   const double sx = s.x(), sy = s.y(), sz = s.z(), inv_f = 1.0 / f, inv_r = 1.0 / r;
+  // camera-frame normal -> ball frame, for the pattern
+  const Mat3 to_ball = brot.transpose() * c.rot;
+  const uint8_t *col = white_ball_ ? kBallWhite : kOrange;
   std::vector<uint8_t> ys(W);
   for (int v = v0; v <= v1; v++) {
     int first = -1, last = -2;
@@ -344,11 +372,22 @@ void Renderer::ball(const Camera &c, const Vec3 &centre, double r, uint32_t fram
       const double shade = 0.45 + 0.55 * std::max(0.0, nx * lc.x() + ny * lc.y() + nzz * lc.z());
       if (first < 0) first = u;
       last = u;
-      ys[u - first] = (uint8_t)std::min(255, (int)(kOrange[0] * shade + 0.5));
+      int base = col[0];
+      if (white_ball_) {
+        const Vec3 nb = to_ball * Vec3(nx, ny, nzz);
+        for (const Vec3 &a : kPatchAxes) {
+          if (std::fabs(nb.dot(a)) > kPatchCos) {
+            base = kBallPatch[0];
+            break;
+          }
+        }
+      }
+      ys[u - first] = (uint8_t)std::min(255, (int)(base * shade + 0.5));
     }
-    // the silhouette of a sphere is convex: one span per row
+    // the silhouette of a sphere is convex: one span per row (the patches are neutral grey: the
+    // chroma stays the ball's)
     if (first >= 0) {
-      put_span(img + (size_t)v * W * 2, first, last, ys.data(), 0, kOrange[1], kOrange[2], nz, (uint32_t)(v * W));
+      put_span(img + (size_t)v * W * 2, first, last, ys.data(), 0, col[1], col[2], nz, (uint32_t)(v * W));
     }
   }
 }
@@ -357,30 +396,31 @@ uint32_t Renderer::noise_offset(uint32_t frame) const {
   return (uint32_t)((frame * 2654435761u) ^ (uint32_t)seed_);
 }
 
-void Renderer::render(const Camera &c, const std::vector<Solid> &solids, int self,
-                      const std::vector<int> &hide, const Vec3 &ball_centre, double ball_radius,
-                      uint32_t frame, uint8_t *img) const {
+void Renderer::render(const Shot &sh, const std::vector<Solid> &solids, uint8_t *img) const {
+  const Camera &c = sh.cam;
   if (!c.pos.allFinite() || !c.rot.allFinite()) {
     memset(img, 0, (size_t)c.width * c.height * 2);   // a broken pose: a black frame, never a crash
     return;
   }
+  const uint32_t frame = sh.frame;
   ground(c, frame, img);
   // painter's order: farthest first; index -1 is the ball
   std::vector<std::pair<double, int>> order;
   for (size_t i = 0; i < solids.size(); i++) {
     const Solid &s = solids[i];
-    if (s.robot == self && std::find(hide.begin(), hide.end(), s.link) != hide.end()) continue;
+    if (s.robot == sh.self && sh.hide && std::find(sh.hide->begin(), sh.hide->end(), s.link) != sh.hide->end())
+      continue;
     Vec3 centre = Vec3::Zero();
     for (const Vec3 &p : s.v) centre += p;
     centre /= (double)s.v.size();
     order.push_back({(centre - c.pos).norm(), (int)i});
   }
-  order.push_back({(ball_centre - c.pos).norm(), -1});
+  order.push_back({(sh.ball - c.pos).norm(), -1});
   std::sort(order.begin(), order.end(), [](const std::pair<double, int> &a, const std::pair<double, int> &b) {
     return a.first > b.first || (a.first == b.first && a.second < b.second);
   });
   for (const auto &o : order) {
-    if (o.second < 0) ball(c, ball_centre, ball_radius, frame, img);
+    if (o.second < 0) ball(c, sh.ball, sh.ball_rot, sh.ball_radius, frame, img);
     else solid(c, solids[o.second], frame, img);
   }
 }

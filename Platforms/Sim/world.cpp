@@ -95,6 +95,27 @@ void params_load(const std::string &robot, Params *p) {
   if (bs.size() != 2) throw std::runtime_error(sim_lua + ": 'ball.start' must be {x, y}");
   p->ball_start[0] = bs[0];
   p->ball_start[1] = bs[1];
+  p->ball_kind = s.str("ball.kind");
+  if (p->ball_kind != "orange" && p->ball_kind != "white") {
+    throw std::runtime_error(sim_lua + ": 'ball.kind' is '" + p->ball_kind + "', not 'orange' or 'white'");
+  }
+  for (int t = 0; t < 2; t++) {
+    const std::string key = "teams.colours." + std::to_string(t + 1);
+    std::vector<double> yuv = s.nums(key);
+    if (yuv.size() != 3) throw std::runtime_error(sim_lua + ": '" + key + "' must be {Y, U, V}");
+    for (int k = 0; k < 3; k++) {
+      if (!(yuv[k] >= 0 && yuv[k] <= 255)) throw std::runtime_error(sim_lua + ": '" + key + "' must be in 0..255");
+      p->team_yuv[t][k] = (unsigned char)std::lround(yuv[k]);
+    }
+  }
+  p->robot_team.clear();
+  for (int i = 1; s.has("teams.of_robot." + std::to_string(i)); i++) {
+    const double t = s.num("teams.of_robot." + std::to_string(i));
+    if (t != 1 && t != 2) {
+      throw std::runtime_error(sim_lua + ": 'teams.of_robot[" + std::to_string(i) + "]' must be 1 or 2");
+    }
+    p->robot_team.push_back((int)t);
+  }
   p->camera_frame = s.str("camera.frame");
   // the camera's image and optics are the body's (camera.lua); its pose is the URDF's camera frame
   p->cam_width = (int)c.num("width");
@@ -751,6 +772,13 @@ Truth World::truth(int r) const {
 
 Vec3 World::ball_position() const { return body_pos(ball_); }
 
+Mat3 World::ball_rotation() const { return body_rot(ball_); }
+
+int World::team(int r) const {
+  if (r < (int)p_.robot_team.size()) return p_.robot_team[r];
+  return r < ((int)robots_.size() + 1) / 2 ? 1 : 2;
+}
+
 void World::camera_pose(int r, Vec3 *pos, Mat3 *rot) const {
   const Model &m = *robots_[r].m;
   int fi = m.frame_index(p_.camera_frame);
@@ -779,6 +807,7 @@ void World::snapshot(Scene *s) const {
     for (size_t i = 0; i < robots_[r].m->links.size(); i++)
       link_pose((int)r, (int)i, &s->link_pos[s->first[r] + i], &s->link_rot[s->first[r] + i]);
   s->ball = ball_position();
+  s->ball_rot = ball_rotation();
 }
 
 void World::solids(std::vector<Solid> *out) const {
@@ -795,11 +824,15 @@ void World::solids(const Scene &scene, std::vector<Solid> *out) const {
     for (size_t i = 0; i < m.links.size(); i++) {
       const Vec3 &p = scene.link_pos[scene.first[r] + i];
       const Mat3 &R = scene.link_rot[scene.first[r] + i];
-      const bool dark = i == 0 || m.links[i].name.find("head") != std::string::npos;
+      // the torso (the root link) wears the team's jersey, the head is dark, the rest grey
+      const unsigned char *jersey = p_.team_yuv[team((int)r) - 1];
+      const bool dark = m.links[i].name.find("head") != std::string::npos;
       for (const Box &b : m.links[i].boxes) {
         Solid s;
         box_solid(p + R * b.pos, R * b.rot, b.size, &s);
-        if (dark) set_yuv(&s, 60, 128, 128); else set_yuv(&s, 120, 128, 128);
+        if (i == 0) set_yuv(&s, jersey[0], jersey[1], jersey[2]);
+        else if (dark) set_yuv(&s, 60, 128, 128);
+        else set_yuv(&s, 120, 128, 128);
         s.robot = (int)r;
         s.link = (int)i;
         out->push_back(s);

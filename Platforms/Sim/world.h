@@ -42,6 +42,12 @@ struct Params {
   double goal_width = 2.6, goal_height = 1.2, goal_depth = 0.6, post_diameter = 0.1;
   double ball_diameter = 0.14, ball_mass = 0.2, ball_mu = 0.6, ball_rolling = 0.004, ball_bounce = 0.5;
   double ball_start[2] = {0, 0};
+  std::string ball_kind = "orange";   // sim.lua ball.kind: 'orange' (plain) or 'white' (patterned)
+  // sim.lua teams: the jersey colour (Y, U, V) of team 1 and team 2, rendered on each robot's torso,
+  // and each robot's team (index in the world's robot order; robots beyond the list: the first half
+  // of the world's robots team 1, the rest team 2)
+  unsigned char team_yuv[2][3] = {{83, 107, 212}, {72, 195, 98}};
+  std::vector<int> robot_team;
   std::string camera_frame = "camera_link";
   int cam_width = 640, cam_height = 480;
   double cam_rate = 30, cam_fovy = 43.3 * M_PI / 180;
@@ -96,6 +102,7 @@ struct Scene {
   std::vector<Mat3> link_rot;
   std::vector<size_t> first;
   Vec3 ball = Vec3::Zero();
+  Mat3 ball_rot = Mat3::Identity();
 };
 
 // One robot's body: its description, the shm order of its joints (robot.lua's joints) and each
@@ -144,6 +151,9 @@ class World {
   // Camera of robot r: world pose (columns of rot: optical axis, image-left, image-up).
   void camera_pose(int r, Vec3 *pos, Mat3 *rot) const;
   Vec3 ball_position() const;
+  Mat3 ball_rotation() const;
+  // The team (1 or 2) of robot r: its jersey colour (Params::robot_team, team_yuv).
+  int team(int r) const;
   double ball_radius() const { return p_.ball_diameter / 2; }
   // Every solid the camera can see (goals; all robots' boxes), at their current poses.
   void solids(std::vector<Solid> *out) const;

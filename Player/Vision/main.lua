@@ -75,7 +75,8 @@ local function rebuild(key)
   local fresh, perr = pipeline.new(vcfg, ccfg, model)
   if fresh then vp = fresh else log('%s: pipeline not rebuilt: %s', key, perr) end
 end
-for _, key in ipairs({ 'vision.scale', 'vision.block', 'vision.lut', 'vision.colors', 'camera.fovy' }) do
+for _, key in ipairs({ 'vision.scale', 'vision.block', 'vision.lut', 'vision.colors', 'camera.fovy', 'vision.ball.kind',
+                       'vision.ball.white.model' }) do
   params_live:on(key, rebuild)
 end
 params_live:on('camera.fps', function(_, fps) cam_settings.fps = fps end)
@@ -129,10 +130,12 @@ local function publish(frame, det)
   for i = 1, goals.n do
     b.goal_position[2 * i - 2], b.goal_position[2 * i - 1] = goals[i].x, goals[i].y
   end
-  local rb = det.robots
-  b.robots[0] = math.min(rb.n, 4) -- the block holds 4 (Config/shm.schema)
-  for i = 1, math.min(rb.n, 4) do
-    local r, k = rb[i], 4 * (i - 1)
+  b.ball_kind[0] = ball.kind
+  b.ball_score[0] = ball.detected and ball.score or 0
+  local robots = det.robots
+  b.robots[0] = robots.n
+  for i = 1, robots.n do
+    local r, k = robots[i], 4 * (i - 1)
     b.robot_position[2 * i - 2], b.robot_position[2 * i - 1] = r.x, r.y
     b.robot_image[k], b.robot_image[k + 1], b.robot_image[k + 2], b.robot_image[k + 3] = r.u0, r.v0, r.u1, r.v1
     b.robot_team[i - 1] = r.team

@@ -133,7 +133,8 @@ end
 
 -- Robots seen in a frame ({ { x, y, team } ... }, robot frame): each updates the obstacle it is
 -- near (within obstacle_merge m) or is a new one; a robot that the pose puts off the field (the
--- floor beyond the carpet looks the same to the vision) is dropped once the pose is trusted.
+-- floor beyond the carpet looks the same to the vision) is dropped once the pose is trusted, and
+-- so is one nearer than min_range (the robot's own feet and arms, seen looking down).
 function World:observe_robots(list, t)
   local oc = self.cfg.obstacles
   local obs = self.obstacles
@@ -142,7 +143,8 @@ function World:observe_robots(list, t)
   local c, s = cos(p.a), sin(p.a)
   for _, r in ipairs(list) do
     local fx, fy = p.x + c * r.x - s * r.y, p.y + s * r.x + c * r.y
-    if not self:localised() or (math.abs(fx) <= hl and math.abs(fy) <= hw) then
+    if r.x * r.x + r.y * r.y >= oc.min_range ^ 2 and (not self:localised()
+      or (math.abs(fx) <= hl and math.abs(fy) <= hw)) then
       local best, bd = nil, oc.merge ^ 2
       for _, o in ipairs(obs) do
         local d = (o.x - r.x) ^ 2 + (o.y - r.y) ^ 2

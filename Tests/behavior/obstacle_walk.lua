@@ -43,7 +43,11 @@ while Body.get_time() - t0 < 70 do
   if bd < 0.35 and not reached then reached = Body.get_time() - t0 end
   if Body.get_time() >= next_note then
     next_note = next_note + 2
-    path[#path + 1] = string.format('(%.2f %.2f)', T.x, T.y)
+    local obs = {}
+    for k = 1, world.obstacles[0] do
+      obs[k] = string.format('%.1f,%.1f', world.obstacle[2 * k - 2], world.obstacle[2 * k - 1])
+    end
+    path[#path + 1] = string.format('(%.2f %.2f%s)', T.x, T.y, #obs > 0 and ' obstacles ' .. table.concat(obs, ' ') or '')
   end
   if reached and Body.get_time() - t0 > reached + 2 then break end
   wait(0.1)

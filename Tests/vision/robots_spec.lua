@@ -1,8 +1,9 @@
 -- luacheck: std +busted
--- Robot detection (Player/Vision/robots.lua) on frames ray-cast by the test: green ground, a grey
--- wall above the horizon, another robot as a grey upright cylinder (0.1 m radius, 0.45 m tall) with
--- a jersey band of its team's colour (the sim's red or blue), seen from the OP3's camera pose: its
--- foot point against the truth, its team, and no robot where there is none (the ball neither).
+-- Robot detection (Player/Vision/detect_robots.lua, through the pipeline) on frames ray-cast by
+-- the test: green ground, a grey wall above the horizon, another robot as a grey upright cylinder
+-- (0.1 m radius, 0.52 m tall: an OP3) with a jersey band of its team's colour (the sim's red or
+-- blue), seen from the OP3's camera pose: its foot point against the truth, its team, and no robot
+-- where there is none (the ball neither). The world model's obstacles come from these.
 local ffi = require('ffi')
 local kinematics = require('kinematics')
 local project = require('Vision.project')
@@ -10,7 +11,7 @@ local pipeline = require('Vision.pipeline')
 
 local W, H = 640, 480
 local FOVY = math.rad(43.3)
-local RADIUS, HEIGHT = 0.1, 0.45
+local RADIUS, HEIGHT = 0.1, 0.52
 local JERSEY = { [0] = { 72, 195, 98 }, [1] = { 83, 107, 212 } } -- blue, red (YUV)
 
 local vcfg = require('Config').load('vision', nil, { robot = 'op3', platform = 'Sim' })
@@ -46,7 +47,6 @@ local function render(pose, rx, ry, team, bx, by)
           local t = (-b - math.sqrt(disc)) / (2 * a)
           local z = cz + t * dz - ground
           if t > 0 and t < t_hit and z >= 0 and z <= HEIGHT then
-            t_hit = t
             if z > 0.25 and z < 0.38 then Y, U, V = JERSEY[team][1], JERSEY[team][2], JERSEY[team][3]
             else Y, U, V = 120, 128, 128 end
           end

@@ -169,9 +169,14 @@ local function tap(ok, name)
   n = n + 1
   print((ok and 'ok ' or 'not ok ') .. n .. ' - ' .. name)
 end
+-- SIM_SCENES_GATE: the goals to fail on (default all: recall,false,range,bearing); the others print
+local gate = os.getenv('SIM_SCENES_GATE') or 'recall,false,range,bearing'
+local function goal(name, ok, text)
+  if gate:find(name, 1, true) then tap(ok, text) else print('# ' .. text .. (ok and '' or ' (not met)')) end
+end
 tap(stats.inview >= NSCENES / 5, 'enough scenes with the ball in view: ' .. stats.inview)
-tap(recall >= 0.95, string.format('recall %.1f%% >= 95%%', 100 * recall))
-tap(fp <= 0.01, string.format('false detections %.1f%% <= 1%%', 100 * fp))
-tap(worst_range <= 0.10, string.format('range error max %.1f%% <= 10%% up to 3 m', 100 * worst_range))
-tap(worst_bearing <= math.rad(3), string.format('bearing error max %.2f deg <= 3', math.deg(worst_bearing)))
+goal('recall', recall >= 0.95, string.format('recall %.1f%% >= 95%%', 100 * recall))
+goal('false', fp <= 0.01, string.format('false detections %.1f%% <= 1%%', 100 * fp))
+goal('range', worst_range <= 0.10, string.format('range error max %.1f%% <= 10%% up to 3 m', 100 * worst_range))
+goal('bearing', worst_bearing <= math.rad(3), string.format('bearing error max %.2f deg <= 3', math.deg(worst_bearing)))
 print('1..' .. n)

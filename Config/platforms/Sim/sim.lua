@@ -58,6 +58,21 @@ return {
     rolling = 0.007,
     bounce = 0.5,                -- restitution on the carpet, posts and robots
     start = { 0, 0 },
+    -- how the camera sees it: 'white' (today's Humanoid League ball: white with a dark patch
+    -- around each of the 12 pentagon centres of a truncated icosahedron, turning with the ball) or
+    -- 'orange' (plain, the seed's ball, which the colour-table vision finds)
+    kind = 'orange',
+  },
+
+  -- Team colours as the cameras see them: each robot's torso (its root link) wears its team's jersey.
+  teams = {
+    -- Y, U, V (BT.601 full range, as the camera's frames) of team 1 and team 2: red (RGB 200, 30, 45)
+    -- and blue (RGB 30, 70, 190), the Humanoid League's usual pair. The red keeps U >= 104, clear of
+    -- the orange ball's U (52) and of the colour table's orange box (Config/common/vision.lua).
+    colours = { { 83, 107, 212 }, { 72, 195, 98 } },
+    -- the team (1 or 2) of each robot in the order of --robots; robots beyond the list: the first
+    -- half of the world's robots team 1, the rest team 2 (as Tests/bench/match.sh gives them out)
+    of_robot = {},
   },
 
   -- the simulated camera: size, rate and field of view are the body's (Config/robots/<ROBOT>/camera.lua),

@@ -58,7 +58,7 @@ int main() {
       // the robot's own arms may hide the ball: this part checks the projection, so hide them all
       std::vector<int> all;
       for (size_t i = 0; i < m.links.size(); i++) all.push_back((int)i);
-      ren.render(c, solids, 0, all, ball, w.ball_radius(), (uint32_t)scenes, img.data());
+      ren.render(sim::shot_of(w, c, 0, &all, (uint32_t)scenes), solids, img.data());
       double su = 0, sv = 0, n = 0;
       for (int v = 0; v < H; v++) {
         for (int u = 0; u < W; u++) {
@@ -123,7 +123,7 @@ int main() {
     c.height = H;
     c.fovy = p.cam_fovy;
     w.solids(&solids);
-    ren.render(c, solids, 0, hide, w.ball_position(), w.ball_radius(), 0, img.data());
+    ren.render(sim::shot_of(w, c, 0, &hide, 0), solids, img.data());
     double pu, pv;
     const double post_y = p.goal_width / 2 + p.post_diameter / 2;
     bool ok = sim::camera_project(c, sim::Vec3(p.field_length / 2, post_y, 0.8), &pu, &pv);
@@ -170,7 +170,7 @@ int main() {
         sim::Camera c2 = j.cam;
         last = worker.submit(j);
         w2.solids(&solids);
-        ren.render(c2, solids, 0, hide2, w2.ball_position(), w2.ball_radius(), (uint32_t)k, direct[k].data());
+        ren.render(sim::shot_of(w2, c2, 0, &hide2, (uint32_t)k), solids, direct[k].data());
       }
       worker.wait(last);
       int same = 0;

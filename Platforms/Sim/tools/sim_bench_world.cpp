@@ -93,7 +93,7 @@ int main(int argc, char **argv) {
             j.out = last_img;
             pending.push_back({t + 1 + latency, worker->submit(std::move(j))});
           } else {
-            ren.render(c, solids, r, hide, w.ball_position(), w.ball_radius(), frames, last_img);
+            ren.render(sim::shot_of(w, c, r, &hide, (uint32_t)frames), solids, last_img);
           }
           frames++;
         }

@@ -60,7 +60,7 @@ int main(int argc, char **argv) {
     w.solids(&solids);
     std::vector<uint8_t> img((size_t)c.width * c.height * 2);
     std::vector<int> hide = {m.link_index("head_pan_link"), m.link_index("head_tilt_link")};
-    ren.render(c, solids, 0, hide, w.ball_position(), w.ball_radius(), 0, img.data());
+    ren.render(sim::shot_of(w, c, 0, &hide, 0), solids, img.data());
     std::string err;
     if (sim::yuyv_write_png(out, img.data(), c.width, c.height, &err) < 0) throw std::runtime_error(err);
     double u, v;

@@ -1,0 +1,111 @@
+/* balldetect: detection beside the colour table for today's field (libhrpbd.so).
+ *
+ *   label image --bd_field_boundary--> per column, the top row of the field (convex hull of green)
+ *   label image + boundary + camera --bd_candidates--> spots where a ball of the expected size would
+ *              be: non-field inside, field around (scored on an integral image of non-field pixels)
+ *   YUYV frame + spot --bd_features--> a fixed-size patch description (normalised luma, chroma)
+ *   features --bd_mlp_eval--> the classifier's probability that the spot is a ball
+ *
+ * Sizes: the label image is the frame subsampled by `scale` (imageproc's pipeline); positions given
+ * to and returned from these functions are in full-resolution pixels (continuous coordinates:
+ * (0, 0) is the top-left corner of the top-left pixel) unless a name says otherwise.
+ * Nothing here allocates on the per-frame path except bd_new / bd_mlp_load. No exit().
+ */
+#ifndef HRP_BALLDETECT_H
+#define HRP_BALLDETECT_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+enum { BD_EIO = -1, BD_EFORMAT = -2, BD_EARG = -3 };
+
+/* The camera at the frame: a pinhole with square pixels, pose in the level frame (z up). */
+typedef struct bd_view {
+  double f, cx, cy;          /* px: focal length and principal point (full resolution) */
+  double R[9];               /* camera -> level frame, row-major; camera x optical axis, y left, z up */
+  double height;             /* m, the camera above the ground */
+} bd_view;
+
+/* Apparent radius (px) of a ball of radius r (m) lying on the ground whose centre is seen at
+ * (u, v); 0 if that ray does not go down to the plane of ball centres. */
+double bd_ball_radius_px(const bd_view *view, double u, double v, double r);
+
+/* Workspace for images up to max_w x max_h labels. */
+typedef struct bd bd;
+bd *bd_new(int max_w, int max_h);
+void bd_free(bd *w);
+
+/* The field boundary: top[x] (label rows, 0..h) for each label column x; rows >= top[x] are on the
+ * field. Per column the first row starting a run of min_run rows that all hold a field label
+ * (any bit of green); then the lower convex hull of those points (the field's image is convex, so
+ * robots and balls standing in front of its edge are bridged). Columns outside the first and last
+ * column with field get top = h. Returns the number of columns with field. */
+int bd_field_boundary(bd *w, const uint8_t *labels, int wl, int hl, uint8_t green, int min_run, int16_t *top);
+
+/* A ball candidate: centre and expected radius in full-resolution px, and its shape score. */
+typedef struct bd_candidate {
+  double u, v, radius;       /* px */
+  double inner, ring;        /* fraction of non-field labels inside the disc and in a ring around it */
+  double score;              /* inner - ring */
+  double prob;               /* the classifier's probability (bd_candidates leaves it -1) */
+} bd_candidate;
+
+/* Ball candidates: label positions (every `step` labels) at most a ball's radius above the field
+ * boundary where a disc of the ball's expected radius (from the view; ball_r in m) is mostly not
+ * field (>= min_inner) and a ring around it mostly field or beyond the boundary (not-field labels
+ * below the boundary <= max_ring); local maxima of inner - ring, the best first, none
+ * within one radius of a better one; the centre refined to the centroid of the non-field labels in
+ * its disc. `scale`: full-resolution px per label. Writes up to maxn into out, returns the count. */
+int bd_candidates(bd *w, const uint8_t *labels, int wl, int hl, int scale, uint8_t green,
+                  const int16_t *top, const bd_view *view, double ball_r, int step, double min_inner,
+                  double max_ring, double min_radius_px, bd_candidate *out, int maxn);
+
+/* Features of a square patch of side 2 * margin * radius around (u, v) in a YUYV frame:
+ * BD_GRID x BD_GRID luma cells (mean over up to 3 x 3 samples each), normalised to zero mean and
+ * unit spread, then BD_CGRID x BD_CGRID cells of U - 128 and of V - 128 over 32. Samples outside the
+ * frame repeat its edge. Writes BD_NFEAT floats. */
+#define BD_GRID 16
+#define BD_CGRID 4
+#define BD_NFEAT (BD_GRID * BD_GRID + 2 * BD_CGRID * BD_CGRID)
+int bd_features(const uint8_t *yuyv, int width, int height, double u, double v, double radius,
+                double margin, float *out);
+
+/* An obstacle standing on the field (another robot): a band of label columns in each of which a
+ * run of labels that are neither field nor line (not `field_mask`) rises from a foot on the field
+ * up to the field boundary or beyond (robots stand out of the field; the ball, marks and lines lie
+ * flat within it). Label units. */
+typedef struct bd_obstacle {
+  int32_t x0, x1;            /* columns, inclusive */
+  int32_t top, foot;         /* highest row of the runs, the foot row (the 95th percentile of the columns' lowest rows) */
+  int32_t foot_visible;      /* 0 when the runs go down to the image's bottom (the foot is below it) */
+  int32_t red, blue;         /* labels of the team colours in the band */
+} bd_obstacle;
+
+/* Obstacles in a label image with its field boundary (bd_field_boundary). min_run: rows a run
+ * needs at least; max_gap: field-mask labels bridged inside a run (lines seen through legs);
+ * min_width: columns of a band, and the columns without a run bridged inside one (the field seen
+ * between legs). A run's foot must lie 2 rows below the boundary or more. Up to maxn bands, widest
+ * first; returns the count. */
+int bd_obstacles(bd *w, const uint8_t *labels, int wl, int hl, const int16_t *top, uint8_t field_mask,
+                 uint8_t red, uint8_t blue, int min_run, int max_gap, int min_width, bd_obstacle *out,
+                 int maxn);
+
+/* A small classifier: nin inputs -> nhid ReLU units -> one sigmoid output. */
+typedef struct bd_mlp bd_mlp;
+/* Reads a model file: a line "hrp-ball-mlp 1 NIN NHID MARGIN", then W1 (NHID rows of NIN), b1
+ * (NHID), w2 (NHID), b2 (1), whitespace-separated numbers. Errors name the file and the element. */
+bd_mlp *bd_mlp_load(const char *path, char *err, size_t errlen);
+void bd_mlp_free(bd_mlp *m);
+int bd_mlp_nin(const bd_mlp *m);
+double bd_mlp_margin(const bd_mlp *m);
+/* The probability (0..1) for n = nin features. */
+double bd_mlp_eval(const bd_mlp *m, const float *x);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

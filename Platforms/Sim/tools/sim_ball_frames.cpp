@@ -1,0 +1,202 @@
+// sim_ball_frames: renders seeded random head-camera frames with their truth, for training and testing
+// the ball and robot detectors (Run/ball_train, Tests/vision/ball_frames_test.sh).
+//   sim_ball_frames --out FILE [--count N] [--seed N] [--others K] [--ball white|orange]
+// Each scene: this robot somewhere on the carpet, the head anywhere in its range; the ball in view
+// in about 2/3 of the scenes (0.25..5 m, also partly in view), elsewhere on the carpet otherwise;
+// 0..K other robots around (0.4..4 m, any yaw), of either team; the ball turned any way (its
+// pattern). --ball: the ball the camera sees (default: the sim config's ball.kind). The seed picks everything: training and test frames
+// differ by their seeds.
+//
+// File (little-endian): "HRPBFRM1", i32 width, height, count, others; then per frame:
+//   f64 f, cx, cy, camera x, y (robot frame: the torso's ground point, x forward, y left), R[9]
+//       (camera -> robot frame with the torso's yaw only, row-major; x optical, y left, z up), height,
+//   f64 ball u, v, radius (px, continuous coordinates), distance (m, camera to centre, horizontal
+//       from the robot's torso), bearing (rad, in the robot frame), visible (fraction of its disc
+//       that shows in the frame: inside the image and not hidden by a robot),
+//   i32 nrobots, then per other robot f64 x, y (robot frame: the torso's ground point), u, v (px of
+//       that ground point), visible (1 if it projects inside the image), team (the sim's: 1 or 2),
+//   then width * height * 2 bytes of YUYV.
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <random>
+#include <stdexcept>
+
+#include "render.h"
+#include "stance.h"
+#include "world.h"
+
+namespace {
+
+void put(FILE *f, const void *p, size_t n) {
+  if (fwrite(p, 1, n, f) != n) throw std::runtime_error("write failed");
+}
+void putd(FILE *f, double x) { put(f, &x, 8); }
+void puti(FILE *f, int32_t x) { put(f, &x, 4); }
+
+}  // namespace
+
+int main(int argc, char **argv) {
+  std::string out;
+  int count = 100, others = 3;
+  uint64_t seed = 1;
+  std::string ball_kind;
+  for (int i = 1; i < argc; i++) {
+    std::string a = argv[i];
+    if (i + 1 >= argc) {
+      fprintf(stderr, "usage: sim_ball_frames --out FILE [--count N] [--seed N] [--others K]\n");
+      return 2;
+    }
+    if (a == "--out") out = argv[++i];
+    else if (a == "--count") count = atoi(argv[++i]);
+    else if (a == "--seed") seed = strtoull(argv[++i], nullptr, 10);
+    else if (a == "--others") others = atoi(argv[++i]);
+    else if (a == "--ball") ball_kind = argv[++i];
+    else {
+      fprintf(stderr, "sim_ball_frames: unknown option %s\n", a.c_str());
+      return 2;
+    }
+  }
+  if (out.empty() || count < 1 || others < 0 || others > 8 ||
+      !(ball_kind.empty() || ball_kind == "white" || ball_kind == "orange")) {
+    fprintf(stderr, "sim_ball_frames: --out FILE needed, --count >= 1, --others 0..8, --ball white|orange\n");
+    return 2;
+  }
+  try {
+    sim::Params p;
+    sim::Model m;
+    sim::load_all(&p, &m);
+    if (!ball_kind.empty()) p.ball_kind = ball_kind;
+    // teams alternate: this robot team 1, the others 2, 1, 2, ...
+    p.robot_team.clear();
+    for (int r = 0; r <= others; r++) p.robot_team.push_back(1 + r % 2);
+    sim::World w(p, m, 1 + others, seed);
+    sim::Renderer ren(p, seed);
+    std::mt19937_64 rng(seed * 7919 + 17);
+    auto rnd = [&](double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); };
+    FILE *f = fopen(out.c_str(), "wb");
+    if (!f) throw std::runtime_error("cannot write " + out);
+    put(f, "HRPBFRM1", 8);
+    puti(f, p.cam_width);
+    puti(f, p.cam_height);
+    puti(f, count);
+    puti(f, others);
+    const std::vector<double> base = sim::stance_pose(m, p);
+    std::vector<int> hide = {m.link_index("head_pan_link"), m.link_index("head_tilt_link")};
+    const size_t n = (size_t)p.cam_width * p.cam_height * 2;
+    std::vector<uint8_t> img(n), bare(n);
+    std::vector<sim::Solid> solids;
+    const double L = p.field_length / 2 + p.border - 0.2, Wd = p.field_width / 2 + p.border - 0.2;
+    for (int k = 0; k < count; k++) {
+      const double rx = rnd(-4.2, 4.2), ry = rnd(-2.8, 2.8), ryaw = rnd(-M_PI, M_PI);
+      const double pan = rnd(-1.5, 1.5), tilt = rnd(-1.1, 0.3);
+      std::vector<double> q = base;
+      for (size_t j = 0; j < p.joints.size(); j++) {
+        if (p.joints[j] == "head_pan") q[j] = pan;
+        if (p.joints[j] == "head_tilt") q[j] = tilt;
+      }
+      w.place_robot(0, rx, ry, ryaw, q.data());
+      // the ball: mostly where the head looks
+      const bool look = rnd(0, 1) < 0.67;
+      double bx, by;
+      do {
+        const double d = look ? 0.25 + 4.75 * std::pow(rnd(0, 1), 1.3) : rnd(0.3, 8);
+        const double b = look ? pan + rnd(-0.45, 0.45) : rnd(-M_PI, M_PI);
+        bx = rx + d * std::cos(ryaw + b);
+        by = ry + d * std::sin(ryaw + b);
+      } while (std::fabs(bx) > L || std::fabs(by) > Wd);
+      w.place_ball(bx, by);
+      const int nothers = (int)rnd(0, others + 0.999);
+      for (int r = 1; r <= others; r++) {
+        double ox = 30 + 3 * r, oy = 30;   // far off the carpet: not seen
+        if (r <= nothers) {
+          do {
+            const double d = rnd(0.4, 4.0), b = pan + rnd(-0.8, 0.8);
+            ox = rx + d * std::cos(ryaw + b);
+            oy = ry + d * std::sin(ryaw + b);
+          } while (std::fabs(ox) > L || std::fabs(oy) > Wd || std::hypot(ox - bx, oy - by) < 0.25);
+        }
+        w.place_robot(r, ox, oy, rnd(-M_PI, M_PI), base.data());
+      }
+      sim::Camera c;
+      w.camera_pose(0, &c.pos, &c.rot);
+      c.width = p.cam_width;
+      c.height = p.cam_height;
+      c.fovy = p.cam_fovy;
+      w.solids(&solids);
+      const sim::Vec3 ball = w.ball_position();
+      sim::Shot shot = sim::shot_of(w, c, 0, &hide, (uint32_t)k);
+      const sim::Vec3 axis = sim::Vec3(rnd(-1, 1), rnd(-1, 1), rnd(-1, 1)).normalized();
+      shot.ball_rot = Eigen::AngleAxisd(rnd(-M_PI, M_PI), axis).toRotationMatrix();
+      ren.render(shot, solids, img.data());
+      // the same frame without the ball: where they differ, the ball shows
+      shot.ball = c.pos - 10 * c.rot.col(0);
+      ren.render(shot, solids, bare.data());
+      const sim::Truth t = w.truth(0);
+      const double cy = std::cos(-t.yaw), sy = std::sin(-t.yaw);
+      auto to_robot = [&](double x, double y, double *ox, double *oy) {
+        *ox = cy * (x - t.x) - sy * (y - t.y);
+        *oy = sy * (x - t.x) + cy * (y - t.y);
+      };
+      const double fl = c.focal();
+      putd(f, fl);
+      putd(f, c.width / 2.0);
+      putd(f, c.height / 2.0);
+      double cxr, cyr;
+      to_robot(c.pos.x(), c.pos.y(), &cxr, &cyr);
+      putd(f, cxr);
+      putd(f, cyr);
+      const sim::Mat3 Rr = Eigen::AngleAxisd(-t.yaw, sim::Vec3::UnitZ()).toRotationMatrix() * c.rot;
+      for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) putd(f, Rr(i, j));
+      putd(f, c.pos.z());
+      double u = -1, v = -1, rad = 0, vis = 0;
+      if (sim::camera_project(c, ball, &u, &v)) {
+        u += 0.5;   // continuous coordinates
+        v += 0.5;
+        const double dist = (ball - c.pos).norm();
+        rad = fl * w.ball_radius() / std::sqrt(std::max(1e-6, dist * dist - w.ball_radius() * w.ball_radius()));
+        // the disc's pixels: how many are inside the image, and of those how many the ball drew
+        int total = 0, shown = 0;
+        for (int dv = (int)-rad; dv <= (int)rad; dv++)
+          for (int du = (int)-rad; du <= (int)rad; du++) {
+            if (du * du + dv * dv > rad * rad) continue;
+            total++;
+            const int pu = (int)std::floor(u + du), pv = (int)std::floor(v + dv);
+            if (pu < 0 || pv < 0 || pu >= c.width || pv >= c.height) continue;
+            const size_t o = ((size_t)pv * c.width + pu) * 2;
+            if (img[o] != bare[o] || img[o + 1] != bare[o + 1]) shown++;
+          }
+        vis = total ? (double)shown / total : 0;
+      }
+      double bxr, byr;
+      to_robot(ball.x(), ball.y(), &bxr, &byr);
+      putd(f, u);
+      putd(f, v);
+      putd(f, rad);
+      putd(f, std::hypot(bxr, byr));
+      putd(f, std::atan2(byr, bxr));
+      putd(f, vis);
+      puti(f, nothers);
+      for (int r = 1; r <= nothers; r++) {
+        const sim::Truth o = w.truth(r);
+        double oxr, oyr, ou = -1, ov = -1;
+        to_robot(o.x, o.y, &oxr, &oyr);
+        const bool in = sim::camera_project(c, sim::Vec3(o.x, o.y, 0), &ou, &ov) && ou >= 0 && ov >= 0 &&
+                        ou < c.width && ov < c.height;
+        putd(f, oxr);
+        putd(f, oyr);
+        putd(f, ou + 0.5);
+        putd(f, ov + 0.5);
+        putd(f, in ? 1 : 0);
+        putd(f, p.robot_team[r]);
+      }
+      put(f, img.data(), n);
+    }
+    if (fclose(f) != 0) throw std::runtime_error("cannot write " + out);
+  } catch (const std::exception &e) {
+    fprintf(stderr, "sim_ball_frames: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}

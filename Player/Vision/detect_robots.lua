@@ -1,0 +1,93 @@
+-- Other robots standing on the field, from the label image and the field boundary
+-- (Modules/balldetect's obstacles: columns of neither field nor line that rise from a foot on the
+-- field to the boundary), with the team colour where their jersey shows.
+--
+--   local detect_robots = require('Vision.detect_robots')
+--   detect_robots.find(bd, p, cm, pose, cfg.robots, out)
+--   -- out.n; out[i] = { x, y (m, robot frame, the robot's middle on the ground), range, team (-1 unknown,
+--   --   0 blue, 1 red), u0, v0, u1, v1 (px box), foot_visible }; nearest first, at most 4
+local project = require('Vision.project')
+
+local M = {}
+
+-- a band's ground point (the middle of its foot row) and its range; nil above the horizon
+local function ground(cm, pose, s, x0, x1, foot)
+  local gx, gy = project.to_ground(cm, pose, (x0 + x1 + 1) / 2 * s, (foot + 1) * s, 0)
+  if not gx then return nil end
+  local hx, hy = gx - pose[1], gy - pose[2]
+  return gx, gy, math.sqrt(hx * hx + hy * hy)
+end
+
+local bands, merged = {}, {}   -- reused from frame to frame: no garbage per frame
+local function leftmost(a, b) return a.x0 < b.x0 end
+
+function M.find(bd, p, cm, pose, cfg, out)
+  out.n = 0
+  local n = bd:obstacles(p.labels, p.wa, p.ha, cfg)
+  local s = p.scale
+  -- bands left to right; neighbours merge when the gap between them is narrower than
+  -- cfg.merge_gap m at the nearer one's range and their feet agree (two legs), or one of them is
+  -- no wider than an arm (cfg.arm_width m): a hand reaching below the boundary has a far foot
+  local nb = 0
+  for i = 0, n - 1 do
+    local o = bd.obst[i]
+    local _, _, dh = ground(cm, pose, s, o.x0, o.x1, o.foot)
+    if dh then
+      nb = nb + 1
+      local b = bands[nb] or {}
+      bands[nb] = b
+      b.x0, b.x1, b.top, b.foot, b.vis, b.red, b.blue, b.dh = o.x0, o.x1, o.top, o.foot, o.foot_visible, o.red,
+        o.blue, dh
+    end
+  end
+  for i = nb + 1, #bands do bands[i] = nil end
+  table.sort(bands, leftmost)
+  for i = #merged, 1, -1 do merged[i] = nil end
+  for _, b in ipairs(bands) do
+    local last = merged[#merged]
+    local near = last and math.min(last.dh, b.dh)
+    local gap_m = last and (b.x0 - last.x1) * s * near / cm.f
+    local arm = last and math.min(last.x1 - last.x0 + 1, b.x1 - b.x0 + 1) * s * near / cm.f <= cfg.arm_width
+    local agree = last and math.abs(last.dh - b.dh) <= 0.25 * math.max(last.dh, b.dh) + 0.1
+    if last and gap_m <= cfg.merge_gap and (arm or agree) then
+      last.x1, last.top = b.x1, math.min(last.top, b.top)
+      if b.foot > last.foot then last.foot, last.dh, last.vis = b.foot, b.dh, b.vis end
+      last.red, last.blue = last.red + b.red, last.blue + b.blue
+    else
+      merged[#merged + 1] = b
+    end
+  end
+  for _, o in ipairs(merged) do
+    local gx, gy, dh = ground(cm, pose, s, o.x0, o.x1, o.foot)
+    if gx then
+      local hx, hy = gx - pose[1], gy - pose[2]
+      local width = (o.x1 - o.x0 + 1) * s * dh / cm.f      -- m, at the foot's range
+      -- the foot point is the front of the feet: the robot's middle is further along the ray
+      local k = (dh + cfg.depth_offset) / dh
+      local x, y = pose[1] + hx * k, pose[2] + hy * k
+      local range = math.sqrt(x * x + y * y)
+      if range <= cfg.max_range and width >= cfg.min_width_m and width <= cfg.max_width_m and out.n < 4 then
+        out.n = out.n + 1
+        local r = out[out.n] or {}
+        out[out.n] = r
+        r.x, r.y, r.range = x, y, range
+        -- the runs go on into what is beyond the field above a robot: the box ends a robot's
+        -- height above its foot
+        r.u0, r.u1, r.v1 = o.x0 * s, (o.x1 + 1) * s, (o.foot + 1) * s
+        r.v0 = math.max(o.top * s, r.v1 - cm.f * cfg.height / dh)
+        r.foot_visible = o.vis ~= 0
+        r.team = -1
+        if o.red >= cfg.min_team and o.red > 2 * o.blue then r.team = 1
+        elseif o.blue >= cfg.min_team and o.blue > 2 * o.red then r.team = 0 end
+      end
+    end
+  end
+  -- nearest first
+  for i = 2, out.n do
+    local j = i
+    while j > 1 and out[j].range < out[j - 1].range do out[j], out[j - 1] = out[j - 1], out[j]; j = j - 1 end
+  end
+  return out
+end
+
+return M

@@ -1,0 +1,131 @@
+-- Ball detection over seeded frames the sim renders (build/bin/sim_ball_frames; written by
+-- ball_frames_test.sh with seeds no training run uses), through the vision pipeline with the camera
+-- pose the renderer used. Prints the figures of issue 18 and TAP lines for the goals named in GATE.
+--   luajit Tests/vision/ball_frames.lua FRAMES KIND [GATE]     KIND: white | orange
+-- GATE: comma-separated goals to fail on (recall, false, range, bearing); the others only print.
+-- DRAW=DIR writes a PNG per frame listed in DRAW_FRAMES (or each miss and false detection) with the
+-- field boundary, the candidates and the detection drawn.
+local Config = require('Config')
+local pipeline = require('Vision.pipeline')
+local frames = require('Run.ball_train.frames')
+local draw = require('Tests.vision.draw')
+
+local path, kind, gate = arg[1], arg[2], arg[3] or ''
+assert(path and (kind == 'white' or kind == 'orange'), 'usage: ball_frames.lua FRAMES white|orange [GATE]')
+local vcfg, ccfg = Config.load('vision'), Config.load('camera')
+vcfg.ball.kind = kind
+-- BALL_MODEL=FILE: another classifier than the config's (a model being trained)
+if os.getenv('BALL_MODEL') then vcfg.ball.white.model = os.getenv('BALL_MODEL') end
+local vp = assert(pipeline.new(vcfg, ccfg, nil))
+local file = assert(frames.open(path))
+local draw_dir = os.getenv('DRAW')
+
+local st = { inview = 0, found = 0, wrong = 0, empty = 0, false_pos = 0, ranges = {}, bearings = {} }
+local misses = {}
+local rs = { seen = 0, found = 0, errs = {}, dets = 0, false_pos = 0, team_ok = 0, team_named = 0 }
+for fr in file:each() do
+  assert(math.abs(fr.cm.f - vp.cm.f) < 1e-6, 'the renderer and the vision disagree on the focal length')
+  local det = vp:detect(fr, fr.pose)
+  local b, ball = fr.ball, det.ball
+  local inview = b.visible >= 0.95 and b.distance >= 0.3 and b.distance <= 4
+  local note
+  if inview then
+    st.inview = st.inview + 1
+    local tx, ty = b.distance * math.cos(b.bearing), b.distance * math.sin(b.bearing)
+    if ball.detected and math.sqrt((ball.x - tx) ^ 2 + (ball.y - ty) ^ 2) <= math.max(0.25, 0.25 * b.distance) then
+      st.found = st.found + 1
+      local r = math.sqrt(ball.x ^ 2 + ball.y ^ 2)
+      if b.distance <= 3 then st.ranges[#st.ranges + 1] = math.abs(r - b.distance) / b.distance end
+      local e = math.abs(math.atan2(ball.y, ball.x) - b.bearing)
+      if e > math.pi then e = 2 * math.pi - e end
+      st.bearings[#st.bearings + 1] = math.deg(e)
+    else
+      if ball.detected then st.wrong = st.wrong + 1 end
+      note = ball.detected and 'wrong place' or 'missed'
+    end
+  elseif b.visible == 0 then
+    st.empty = st.empty + 1
+    if ball.detected then
+      st.false_pos = st.false_pos + 1
+      note = 'false'
+    end
+  end
+  -- robots whose middle on the ground is in the image with half a robot's width (0.12 m) to spare
+  -- on either side, 0.3 .. 3 m away: found when a detection lies within 0.5 m; a detection near no
+  -- robot (within 0.7 m) is a false one
+  local robots = det.robots
+  for _, r in ipairs(fr.robots) do
+    local range = math.sqrt(r.x * r.x + r.y * r.y)
+    local half = fr.cm.f * 0.12 / math.max(range, 0.1)
+    if r.visible > 0 and range >= 0.3 and range <= 3 and r.u >= half and r.u <= fr.width - half then
+      rs.seen = rs.seen + 1
+      local best, bi
+      for i = 1, robots.n do
+        local e = math.sqrt((robots[i].x - r.x) ^ 2 + (robots[i].y - r.y) ^ 2)
+        if e <= 0.5 and (not best or e < best) then best, bi = e, i end
+      end
+      if best then
+        rs.found = rs.found + 1
+        rs.errs[#rs.errs + 1] = best
+        -- the sim's team 1 wears red (vision's 1), team 2 blue (vision's 0)
+        if robots[bi].team >= 0 then
+          rs.team_named = rs.team_named + 1
+          if robots[bi].team == (r.team == 1 and 1 or 0) then rs.team_ok = rs.team_ok + 1 end
+        end
+      end
+    end
+  end
+  for i = 1, robots.n do
+    rs.dets = rs.dets + 1
+    local near = false
+    for _, r in ipairs(fr.robots) do
+      if math.sqrt((robots[i].x - r.x) ^ 2 + (robots[i].y - r.y) ^ 2) <= 0.7 then near = true end
+    end
+    if not near then rs.false_pos = rs.false_pos + 1 end
+  end
+  if note then misses[#misses + 1] = string.format('frame %d: ball %.2f m %+.1f deg visible %.2f: %s', fr.index,
+                                                   b.distance, math.deg(b.bearing), b.visible, note) end
+  if draw_dir and (note or (os.getenv('DRAW_FRAMES') or ''):find(',' .. fr.index .. ',', 1, true)) then
+    draw.frame(string.format('%s/%s_%04d.png', draw_dir, kind, fr.index), fr, vp, det, b)
+  end
+end
+
+local function stats(list)
+  table.sort(list)
+  local n, sum = #list, 0
+  for _, v in ipairs(list) do sum = sum + v end
+  if n == 0 then return 0, 0, 0 end
+  return sum / n, list[math.max(1, math.ceil(0.95 * n))], list[n]
+end
+for i = 1, math.min(#misses, 30) do print(misses[i]) end
+local recall = st.found / math.max(1, st.inview)
+local fp = st.false_pos / math.max(1, st.empty)
+local rm, r95, rmax = stats(st.ranges)
+local bm, b95, bmax = stats(st.bearings)
+print(string.format('%s ball: recall %d/%d = %.1f%% (fully in view, 0.3-4 m; %d detected elsewhere), '
+  .. 'false detections %d/%d frames without the ball = %.2f%%', kind, st.found, st.inview, 100 * recall, st.wrong,
+  st.false_pos, st.empty, 100 * fp))
+print(string.format('%s ball: range error (<= 3 m, %d) mean %.1f%% p95 %.1f%% max %.1f%%; bearing error mean %.2f '
+  .. 'p95 %.2f max %.2f deg', kind, #st.ranges, 100 * rm, 100 * r95, 100 * rmax, bm, b95, bmax))
+local em, e95, emax = stats(rs.errs)
+print(string.format('robots: recall %d/%d = %.1f%% (in view, 0.3-3 m, not cut by the image side); '
+  .. 'position error mean %.2f p95 %.2f max %.2f m; detections near no robot %d/%d', rs.found, rs.seen,
+  100 * rs.found / math.max(1, rs.seen), em, e95, emax, rs.false_pos, rs.dets))
+print(string.format('robots: team colour named for %d of the %d found, right for %d', rs.team_named, rs.found,
+  rs.team_ok))
+local n = 0
+local function tap(name, ok, text)
+  if not gate:find(name, 1, true) then return end
+  n = n + 1
+  print((ok and 'ok ' or 'not ok ') .. n .. ' - ' .. kind .. ' ' .. text)
+end
+tap('recall', recall >= 0.95, string.format('recall %.1f%% >= 95%%', 100 * recall))
+tap('false', fp <= 0.01, string.format('false detections %.2f%% <= 1%%', 100 * fp))
+tap('range', rmax <= 0.10, string.format('range error max %.1f%% <= 10%% (up to 3 m)', 100 * rmax))
+tap('bearing', bmax <= 3, string.format('bearing error max %.2f deg <= 3', bmax))
+tap('robots', rs.found >= 0.9 * rs.seen,
+    string.format('robot recall %.1f%% >= 90%%', 100 * rs.found / math.max(1, rs.seen)))
+n = n + 1
+print(string.format('%s %d - %s frames scored: %d with the ball in view, %d without', st.inview >= 20 and 'ok' or
+  'not ok', n, kind, st.inview, st.empty))
+print('1..' .. n)
