@@ -47,14 +47,15 @@ while Body.get_time() - t0 < 70 do
     for k = 1, world.obstacles[0] do
       obs[k] = string.format('%.1f,%.1f', world.obstacle[2 * k - 2], world.obstacle[2 * k - 1])
     end
-    path[#path + 1] = string.format('(%.2f %.2f%s)', T.x, T.y, #obs > 0 and ' obstacles ' .. table.concat(obs, ' ') or '')
+    path[#path + 1] = string.format('(%.2f %.2f%s)', T.x, T.y,
+      #obs > 0 and ' obstacles ' .. table.concat(obs, ' ') or '')
   end
   if reached and Body.get_time() - t0 > reached + 2 then break end
   wait(0.1)
 end
 local U = sim2.truth()
 local moved = math.sqrt((U.x - x2) ^ 2 + (U.y - y2) ^ 2)
-print('walker path: ' .. table.concat(path, ' '))
+print('walker path (field) and obstacles (robot frame), every 2 s: ' .. table.concat(path, ' '))
 check('seen', seen ~= nil and remembered > 0,
   string.format('the standing robot found by the vision within %s m of its truth; world obstacles up to %d',
     seen and string.format('%.2f', seen) or 'never', remembered))
