@@ -12,7 +12,7 @@ local pcfg = { particles = 300, prior = { -4.5, 0, -3, 3 }, odom_trans_noise = 0
   inject_fraction = 0.01, margin = 0.5, roughen_position = 0.03, roughen_angle = 0.02,
   reset_below = 0.5, reset_fraction = 0.05, gate_confidence = 0.6, gate_fit = 0.01,
   project_fraction = 0.05, project_lost = 0.3, project_max_jump = 1.0, side_confidence = 0.5,
-  side_tolerance = 1.57, own_half_margin = 0.3 }
+  side_tolerance = 1.57, own_half_margin = 0.3, placement = 'anywhere' }
 
 describe('ball filter', function()
   it('keeps a still ball in place while the robot walks and turns', function()
@@ -169,6 +169,25 @@ describe('world', function()
   local wcfg = { field = field, ball = bcfg, pose = pcfg, seed = 1, ball_lost_after = 3,
     max_odometry_step = 0.5, post_min_range = 0.5, post_max_range = 4.0, post_pair_tolerance = 0.8,
     localised_confidence = 0.5 }
+
+  it('knows the touch line it is placed on (and the side at once) from the placement and the half', function()
+    local pc = setmetatable({ placement = 'right' }, { __index = pcfg })
+    local w = World.new(setmetatable({ pose = pc }, { __index = wcfg }))
+    assert.are.same({ -1 }, w:placement_lines(false, true))
+    assert.are.same({ 1 }, w:placement_lines(false, false))   -- second half: the sides changed
+    assert.are.same({ -1, 1 }, w:placement_lines(true, true))  -- put back after a penalty: either
+    w.pose:imu(0.3)
+    w:reset_pose(false, true)
+    -- every particle on the right touch line facing in, the side known and held against the IMU
+    for i = 1, w.pose.n do
+      assert.is_true(math.abs(w.pose.py[i] + 3) < 0.6 and w.pose.px[i] <= 0)
+    end
+    assert.is_near(math.pi / 2, w.pose.side_a, 1e-9)
+    w.pose:imu(0.3 + 2.0) -- the body turned 2 rad (a fall, say): the side turns with it
+    assert.is_near(0, pose_filter.wrap(w.pose.side_a - math.pi / 2 - 2.0), 1e-9)
+    pc.placement = 'anywhere'
+    assert.is_nil(w:placement_lines(false, true))
+  end)
 
   it('passes only plausible goal-post sightings to the pose filter', function()
     local w = World.new(wcfg)
