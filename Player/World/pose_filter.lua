@@ -420,7 +420,8 @@ end
 -- The IMU's yaw (rad, any zero): the side's reference keeps its offset from it.
 function Filter:imu(yaw)
   self.imu_yaw = yaw
-  if self.side_offset then self.side_a = wrap(yaw + self.side_offset) end
+  if self.side_offset then self.side_a = wrap(yaw + self.side_offset)
+  elseif self.side_a then self.side_offset = wrap(self.side_a - yaw) end -- taken before the first reading
 end
 
 -- The side's reference is heading a (field frame) from now on.
