@@ -20,8 +20,9 @@ classify() {
 $TOOL colors -o "$D/colors.lut" >"$D/out" 2>&1 && tap ok "colors: table from the vision config (Config/common/vision.lua)" \
   || { tap fail "colors failed: $(cat "$D/out")"; }
 [ "$(classify "$D/colors.lut" 147 45 205)" = 1 ] && [ "$(classify "$D/colors.lut" 99 95 86)" = 8 ] \
-  && [ "$(classify "$D/colors.lut" 240 128 128)" = 16 ] && [ "$(classify "$D/colors.lut" 80 200 60)" = 0 ] \
-  && tap ok "box table: orange 1, green 8, white 16, blue 0" || tap fail "box table labels wrong"
+  && [ "$(classify "$D/colors.lut" 240 128 128)" = 16 ] && [ "$(classify "$D/colors.lut" 80 200 100)" = 4 ] \
+  && [ "$(classify "$D/colors.lut" 200 20 150)" = 0 ] \
+  && tap ok "box table: orange 1, green 8, white 16, blue (a jersey) 4, yellow 0" || tap fail "box table labels wrong"
 
 # example image: 4 vertical bands (RGB) with noise; the mask paints bands 1-3 in display colours
 python3 - "$D" <<'PY'
