@@ -2,6 +2,7 @@
 #   make        build every native part (runs `make deps` first if something is missing)
 #   make deps   install what Debian must provide (idempotent)
 #   make test   run every test; ends with one line "N passed, N failed"
+#   make league MATCHES=20 HALF=60   seeded 2v2 matches on Ray, with team play vs without: a table
 #   make soak   1 hour of play in the sim, memory/fd/shm growth per process (SOAK_SECONDS=600: 10 minutes)
 #   make sanitize  the C/C++ tests and DCM scenarios under ASan+UBSan (SANITIZE=thread: TSan)
 #   make clean  remove build/ (and the sanitizer builds)
@@ -19,7 +20,7 @@ export BUILD SANITIZE
 NATIVE_DIRS := $(sort $(dir $(wildcard Modules/*/Makefile Platforms/*/Makefile Run/*/Makefile)))
 DEPS_STAMP := $(BUILD)/.deps-ok
 
-.PHONY: all deps test clean bench sim match match4 sanitize soak $(NATIVE_DIRS)
+.PHONY: all deps test clean bench sim match match4 league sanitize soak $(NATIVE_DIRS)
 
 all: $(DEPS_STAMP) $(NATIVE_DIRS)
 
@@ -67,6 +68,13 @@ match: all
 
 match4: all
 	@Tests/bench/match.sh 4 $(HALF) $(SEED)
+
+# The league (Run/league.py): MATCHES seeded 2v2 matches (2 x HALF s) as Ray tasks, our team with team play
+# against the same robots alone; a table of the results. RAY_ADDRESS=host:port: on that Ray cluster.
+MATCHES ?= 20
+league: all
+	@.venv/bin/python Run/league.py --matches $(MATCHES) --half $(HALF) --seed $(SEED) \
+	  $(if $(RAY_ADDRESS),--address $(RAY_ADDRESS))
 
 bench: all
 	@Tests/run_benchmarks.sh

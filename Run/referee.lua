@@ -13,6 +13,7 @@ local packet = require('GameFSM.packet')
 local udp = require('GameFSM.udp')
 local match = require('Run.referee.match')
 local gc_sim = require('Tests.game.gc_sim')
+local tally_mod = require('Run.referee.tally')
 
 local n, gc_port, return_port = tonumber(arg[1]), tonumber(arg[2]), tonumber(arg[3])
 assert(n and gc_port and return_port, 'usage: referee.lua PER_TEAM GC_PORT RETURN_PORT')
@@ -31,6 +32,11 @@ for i = 1, 2 * n do
   robots[i] = { team = team, player = team == 1 and i or i - n, id = base + i - 1 }
   sims[i] = Sim.of(base + i - 1)
 end
+-- each robot's own view (its pose belief and role) for the per-robot figures
+local beliefs = {}
+for i = 1, 2 * n do beliefs[i] = { world = shm.open('world', { robot = robots[i].id }),
+  game = shm.open('game', { robot = robots[i].id }) } end
+local tally = tally_mod.new(robots)
 local m = match.new(rules, field, { { number = team_numbers[1], players = players },
   { number = team_numbers[2], players = players } })
 
@@ -40,7 +46,7 @@ local tx = assert(udp.sender())
 local rx = assert(udp.listen(return_port))
 local heard, bad, number, next_packet = {}, 0, 0, -1
 local wall0, t0 = os.time(), Body.get_time()
-local printed, sent_state = 0, nil
+local printed, sent_state, last_t = 0, nil, nil
 
 local function look()
   local w = { robots = {} }
@@ -71,6 +77,28 @@ while true do
   local t = Body.get_time()
   local w = look()
   if t >= next_status then next_status = t + STATUS status(t, w) end
+  local playing = m.state == packet.STATE.playing
+  for i, rb in ipairs(w.robots) do
+    local b = beliefs[i]
+    local bx, by, ba, side = b.world:read(function(x) return x.pose[0], x.pose[1], x.pose[2], x.pose_side[0] end)
+    local p = m.robots[i]
+    b.seen = { bx, by, ba, side }
+    tally:look(last_t and t - last_t or 0, playing, i, rb, { x = bx, y = by, role = b.game.role[0] },
+      m.side[rb.team], p and p.penalty or false)
+  end
+  last_t = t
+  for i, rb in ipairs(w.robots) do
+    local r = tally.robots[i]
+    local now = r.mirrored > (r.last_mirrored or 0)
+    if now ~= (r.in_mirror or false) then
+      r.in_mirror = now
+      local bs = beliefs[i].seen
+      m:event(string.format('team %d player %d: belief %s (truth %.1f %.1f; belief %.1f %.1f %.2f, side %.2f)',
+        team_numbers[rb.team], rb.player, now and 'mirrored' or 'back on its side', rb.x, rb.y, bs[1], bs[2], bs[3],
+        bs[4]))
+    end
+    r.last_mirrored = r.mirrored
+  end
   for _, a in ipairs(m:step(t, w)) do
     if a[1] == 'ball' then assert(sims[1].teleport_ball(a[2], a[3]))
     else assert(sims[a[2]].teleport_robot(a[3], a[4], a[5])) end
@@ -110,4 +138,5 @@ for i = 1, 2 * n do
   online[#online + 1] = string.format('%d/%d:%d', team_numbers[robots[i].team], robots[i].player, heard[key] or 0)
 end
 print('return packets (team/player:count): ' .. table.concat(online, ' ') .. (bad > 0 and ' bad ' .. bad or ''))
+for _, line in ipairs(tally:lines()) do print(line) end
 print(string.format('time: %.0f s simulated in %d s wall: real-time factor %.2f', sim_s, wall_s, sim_s / wall_s))

@@ -49,6 +49,15 @@ return {
       gate_confidence = 0.6,    -- a belief this confident ignores a sighting ...
       gate_fit = 0.01,          -- ... that it explains this badly (mean likelihood)
       margin = 0.5,             -- m the robot may be outside the field lines
+      -- the side (Player/World/pose_filter.lua): a belief this confident, its mirror impossible,
+      -- sets the side's heading; a hypothesis further from it than side_tolerance (rad) is the mirror
+      side_confidence = 0.5,
+      side_tolerance = 1.57,
+      own_half_margin = 0.3,    -- m past the halfway line a robot placed in its own half may be believed
+      -- where the robot is placed before a half (World.world placement_lines): 'anywhere' in the own
+      -- half, on a 'touchline' of it facing in, or on the 'left' / 'right' one (seen from the own
+      -- goal in the first half; the sim's referee places team 1 on the right, team 2 on the left)
+      placement = 'anywhere',
     },
     localised_confidence = 0.5, -- pose confidence from which the robot attacks (below: looks for goals)
     ball_lost_after = 4.0,      -- s without a sighting: the ball is lost (a look around takes 2)
@@ -57,6 +66,15 @@ return {
     post_max_range = 10.5,      -- m: further sightings are not used (vision: range error <= 3.2% to 9 m)
     post_pair_tolerance = 0.8,  -- m: two posts whose spacing is further off the goal's width are ignored
     imu_yaw = true,             -- turn between steps from the IMU's yaw changes, not the walk's plan
+    -- other robots seen (Player/Vision/robots.lua) as obstacles, robot frame, moved by odometry
+    obstacles = {
+      memory = 4.0,             -- s an obstacle not seen again is kept (a head scan looks away ~2 s)
+      merge = 0.5,              -- m: a sighting this near an obstacle is that obstacle
+      blend = 0.5,              -- share of a new sighting in the obstacle's position
+      field_margin = 0.5,       -- m: sightings the pose puts further off the field are not robots
+      min_range = 0.3,          -- m: nearer sightings are the robot's own feet and arms
+      max = 8,                  -- obstacles kept (the world block holds 8)
+    },
   },
 
   -- the head and body machines' timing, game and field numbers, and the defaults of a kid-size body
@@ -108,6 +126,11 @@ return {
       near_turn_gain = 1.0,    -- 1/s, near
       near_gain = 0.8,         -- 1/s: vx, vy per m, near
       min_vx = -0.1,           -- m/s: the fastest backwards
+      -- stepping around another robot in the way (BodyFSM/nav.lua avoid): a robot nearer the straight
+      -- path than `clearance` m (its foot point: its nearest edge; both bodies' half widths and a
+      -- margin), from `behind` m behind to `short` m before the target, is passed along the tangent
+      -- to that circle turned out by `margin` rad; not within `min_distance` m of the target
+      avoid = { clearance = 0.55, behind = 0.1, short = 0.2, margin = 0.15, min_distance = 0.5 },
     },
     follow_turn_gain = 0.8,    -- 1/s: turning towards the ball's bearing after a kick
     reposition_near = 1.0,     -- m: the ball's last estimate this near: search (the head sees it from here)

@@ -37,6 +37,8 @@ return {
     keeper_line = 0.15,        -- m in front of its goal line: our goalkeeper at their penalty kick
   },
   team = {
+    enabled = true,            -- false: no messages sent or read (with roles.enabled = false: each
+                               -- robot plays alone; Tests/bench/match.sh's ALONE, Run/league.py)
     port_base = 10000,         -- UDP: each team broadcasts on port_base + its team number
     broadcast = '255.255.255.255',
     interface = 'wlan0',       -- the team network (as gamecontroller.interface)

@@ -60,8 +60,8 @@ function M.new(opts)
     kickoff = { wait = 'number', distance = 'number', ball_moved = 'number' },
     setplay = { distance = 'table', margin = 'number', hysteresis = 'number', retreat_speed = 'number',
       turn_gain = 'number', take_tolerance = 'number', keeper_line = 'number' },
-    team = { port_base = 'number', broadcast = 'string', period = 'number', lost_after = 'number',
-      max_per_step = 'number', max_players = 'number' },
+    team = { enabled = 'boolean', port_base = 'number', broadcast = 'string', period = 'number',
+      lost_after = 'number', max_per_step = 'number', max_players = 'number' },
     roles = { enabled = 'boolean', goalkeeper = 'number', walk_speed = 'number', turn_speed = 'number',
       striker_margin = 'number', keeper_depth = 'number', keeper_clear = 'number', arrive = 'number' },
   })
@@ -116,9 +116,13 @@ function Behavior:read_vision()
       posts[k][1], posts[k][2] = b.goal_position[2 * k - 2], b.goal_position[2 * k - 1]
       list[k] = posts[k]
     end
+    local robots = {}
+    for k = 1, math.min(4, math.max(0, b.robots[0])) do
+      robots[k] = { x = b.robot_position[2 * k - 2], y = b.robot_position[2 * k - 1], team = b.robot_team[k - 1] }
+    end
     return {
       frame = b.frame[0], time = b.time[0], ball_detected = b.ball_detected[0] ~= 0,
-      ball = { b.ball_position[0], b.ball_position[1] }, posts = list,
+      ball = { b.ball_position[0], b.ball_position[1] }, posts = list, robots = robots,
     }
   end)
 end
@@ -147,6 +151,8 @@ function Behavior:step()
   -- a kick-off: PLAYING right after SET (Player/GameFSM/playing.lua follows its progress)
   if state == 'playing' and self.last_state == 'set' then ctx.kickoff = { t0 = t } end
   if state ~= 'playing' then ctx.kickoff = nil end
+  -- from a placement until the kick-off the robot is in its own half (the pose filter's side)
+  if state == 'playing' then self.world.pose.own_half = false end
   self.last_state = state
   local want = penalized and 'penalized' or state
   if self.game:state() ~= want or not self.game.current then self.game:event(want, ctx) end
@@ -186,10 +192,14 @@ function Behavior:talk(t, m)
     local c, s = math.cos(p.a), math.sin(p.a)
     ball = { bx, by, c * w.ball.vx - s * w.ball.vy, s * w.ball.vx + c * w.ball.vy }
   end
-  self.team:update(t, { pose = { p.x, p.y, p.a }, ball = ball, penalised = gc:penalized(),
-    colour = gc.gc_seen and gc.team_colour or nil,
-    walk = { m.walk_velocity[0], m.walk_velocity[1], m.walk_velocity[2] } })
-  w.mates = self.team:mates(t)
+  if self.rules.team.enabled then
+    self.team:update(t, { pose = { p.x, p.y, p.a }, ball = ball, penalised = gc:penalized(),
+      colour = gc.gc_seen and gc.team_colour or nil,
+      walk = { m.walk_velocity[0], m.walk_velocity[1], m.walk_velocity[2] } })
+    w.mates = self.team:mates(t)
+  else
+    w.mates = {} -- team play off: nothing sent, nothing heard (the comparison's robots alone)
+  end
   self.team:publish(self.blocks.team, t)
   self:assign_role()
 end

@@ -39,12 +39,54 @@ function M.behind_ball(ctx)
   return tx, ty, atan2(uy, ux)
 end
 
--- Velocity towards (tx, ty) (robot frame) ending with heading `ha` (robot frame, rad).
--- Far away: face the target and walk; near: turn to ha while side-stepping.
+-- The point to steer for on the way to (tx, ty) (robot frame): the target itself, or, when another
+-- robot (world.obstacles, its foot point) stands in the way, a point on the tangent to a circle of
+-- `clearance` m around it. In the way: nearer the straight path than `clearance`, from `behind` m
+-- behind the robot (beside it: still in the way) to `short` m before the target. The side is the one away from the
+-- obstacle's offset from the path, kept (ctx.avoid_side) until the way is clear, so that the robot
+-- does not swing between the two. Inside the circle: straight away from it, sideways.
+function M.avoid(ctx, tx, ty)
+  local obs = ctx.world.obstacles
+  local d = sqrt(tx * tx + ty * ty)
+  local av = ctx.cfg.body.nav.avoid
+  if not obs or #obs == 0 or d < av.min_distance then ctx.avoid_side = nil return tx, ty end
+  local ux, uy = tx / d, ty / d
+  local bt = atan2(ty, tx)
+  local best, best_d
+  for _, o in ipairs(obs) do
+    local od = sqrt(o.x * o.x + o.y * o.y)
+    local along, across = o.x * ux + o.y * uy, -o.x * uy + o.y * ux
+    if along > -av.behind and along < d - av.short and math.abs(across) < av.clearance
+      and (not best or od < best_d) then
+      best, best_d = o, od
+    end
+  end
+  if not best then ctx.avoid_side = nil return tx, ty end
+  local bo = atan2(best.y, best.x)
+  -- +1: pass on its left (it on our right)
+  local side = ctx.avoid_side or (wrap(bt - bo) >= 0 and 1 or -1)
+  ctx.avoid_side = side
+  local cone = best_d > av.clearance and math.asin(av.clearance / best_d) or math.pi / 2
+  local th = bo + side * (cone + av.margin)
+  local r = math.max(best_d, av.clearance)
+  return r * cos(th), r * sin(th)
+end
+
+-- Velocity towards (tx, ty) (robot frame) ending with heading `ha` (robot frame, rad), stepping
+-- around a robot in the way (M.avoid). Far away: face the target and walk; near: turn to ha while
+-- side-stepping. The distance returned is the target's.
 function M.go_to(ctx, tx, ty, ha)
   local cfg = ctx.cfg.body
   local nv = cfg.nav
   local d = sqrt(tx * tx + ty * ty)
+  local wx, wy = M.avoid(ctx, tx, ty)
+  if wx ~= tx or wy ~= ty then
+    -- round the obstacle: walk to the waypoint, facing it
+    local bearing = atan2(wy, wx)
+    return clamp(cfg.approach_speed * math.max(0, cos(bearing)) ^ 2, nv.min_vx, cfg.max_vx),
+      clamp(nv.far_side_gain * wy, -cfg.max_vy, cfg.max_vy),
+      clamp(nv.far_turn_gain * bearing, -cfg.max_va, cfg.max_va), d
+  end
   local bearing = atan2(ty, tx)
   local vx, vy, va
   if d > nv.near then

@@ -37,7 +37,7 @@ function M.new(cfg, opts)
     allowed = udp.allow(g.hosts, 'game.lua gamecontroller.hosts'), rejected = 0,
     packets = 0, bad_packets = 0, foreign_packets = 0, returns = 0, gc_seen = false, gc_host = nil,
     t_start = nil, last_alive = -math.huge, button_prev = false, started = false,
-    score = { 0, 0 }, team_colour = 0, kickoff_team = 0, secondary_state = 0, secondary_team = 0,
+    score = { 0, 0 }, team_colour = 0, kickoff_team = 0, first_half = 1, secondary_state = 0, secondary_team = 0,
     secondary_mode = 0, secondary_time = 0, secs_remaining = 0, goalkeeper = false, goalkeeper_player = 0,
     last_packet_number = nil,
   }, Controller)
@@ -69,6 +69,7 @@ function Controller:receive(data, host)
   self.secondary_state, self.secondary_team = mine.secondary_state, mine.secondary_team
   self.secondary_mode, self.secondary_time = mine.secondary_mode, mine.secondary_time
   self.secs_remaining, self.goalkeeper = mine.secs_remaining, mine.goalkeeper
+  self.first_half = mine.first_half or 1
   self.goalkeeper_player = mine.goalkeeper_player
   self.last_packet_number = p.packet_number
   return true
@@ -139,6 +140,7 @@ function Controller:view()
     secondary = packet.SECONDARY[self.secondary_state] or 'normal',
     secondary_ours = self.secondary_team == self.team, secondary_mode = packet.MODES[self.secondary_mode],
     secondary_time = self.secondary_time, goalkeeper = self.goalkeeper, gc = self.gc_seen,
+    first_half = self.first_half,
   }
 end
 

@@ -2,6 +2,17 @@
 -- particle filter moved by odometry and weighted by goal-post sightings. The two goals look alike,
 -- so a post sighting is matched to the nearest of the four real posts for each particle; the prior
 -- (the robot starts in its own half) and the field's bounds break the symmetry.
+--
+-- The side: a pose and its mirror across the field (-x, -y, heading + pi) see the same posts. As
+-- real teams do, the robot knows its side from the game: it is placed in its own half (the prior)
+-- and stays there until the kick-off (`own_half`: from a placement until the game is PLAYING; the
+-- world model's caller clears it), or it was placed at a known pose (set_pose); later, the reachable
+-- region around the placement (by the distance walked) says where it cannot be yet. Once the belief
+-- is confident where its mirror cannot be (or the pose was given), its heading
+-- becomes the side's reference `side_a`, held as an offset from the IMU's yaw (Filter:imu; it
+-- turns with the body, through falls too) or, without an IMU, turned by the odometry's turns. A
+-- hypothesis whose heading is more than
+-- `side_tolerance` from it is the mirror: never sampled, re-seeded or kept (weighted as an outlier).
 local M = {}
 
 local sqrt, cos, sin, atan2, exp, floor = math.sqrt, math.cos, math.sin, math.atan2, math.exp, math.floor
@@ -35,19 +46,43 @@ function Filter:gauss()
 end
 
 -- Uniform over the prior region (own half by default), any heading.
+-- With the side known, the heading within side_tolerance of it.
 function Filter:sample_prior(i)
   local r = self.cfg.prior -- { xmin, xmax, ymin, ymax }
   self.px[i] = r[1] + (r[2] - r[1]) * self.rng()
   self.py[i] = r[3] + (r[4] - r[3]) * self.rng()
-  self.pa[i] = wrap(2 * pi * self.rng())
+  if self.side_a then
+    self.pa[i] = wrap(self.side_a + self.cfg.side_tolerance * (2 * self.rng() - 1))
+  else
+    self.pa[i] = wrap(2 * pi * self.rng())
+  end
 end
 
-function Filter:init_prior()
+-- Whether heading a is the mirror hypothesis's (the side is known and a is off it).
+function Filter:mirrored(a)
+  return self.side_a ~= nil and math.abs(wrap(a - self.side_a)) > self.cfg.side_tolerance
+end
+
+-- lines (optional): the touch lines the robot was placed on, facing into the field (y signs, e.g.
+-- { -1 }: y = -width/2, heading +pi/2); without: anywhere in the own half, any heading. Placed on
+-- one known line, the heading, and so the side, is known at once.
+function Filter:init_prior(lines)
+  self.side_a, self.side_offset = nil, nil -- placed anew: the side comes from the placement again
+  self.own_half = true
   for i = 1, self.n do
-    self:sample_prior(i)
+    if lines then
+      local s = lines[1 + floor(self.rng() * #lines)] or lines[1]
+      local r = self.cfg.prior
+      self.px[i] = r[1] + (r[2] - r[1]) * self.rng()
+      self.py[i] = s * self.field.width / 2 + 0.1 * self:gauss()
+      self.pa[i] = wrap(-s * pi / 2 + 0.15 * self:gauss())
+    else
+      self:sample_prior(i)
+    end
     self.w[i] = 1 / self.n
   end
   self.walked = 0
+  if lines and #lines == 1 then self:take_side(-lines[1] * pi / 2) end
   self:estimate()
 end
 
@@ -56,6 +91,7 @@ end
 -- the field (the goals look alike) cannot be it, however well it explains a sighting.
 function Filter:reachable(x, y)
   local r, d = self.cfg.prior, self.walked * (1 + 2 * self.cfg.odom_trans_noise) + 0.3
+  if self.own_half and x > self.cfg.own_half_margin then return false end
   return x >= r[1] - d and x <= r[2] + d and y >= r[3] - d and y <= r[4] + d
 end
 
@@ -69,6 +105,8 @@ function Filter:set_pose(x, y, a, spread)
     self.w[i] = 1 / self.n
   end
   self.walked = math.huge -- known: no constraint from the prior
+  self:take_side(a)       -- ... and the side is this pose's
+  self.own_half = false
   self:estimate()
 end
 
@@ -80,9 +118,11 @@ function Filter:move(dx, dy, da)
   local sa = c.odom_rot_noise * math.abs(da) + c.odom_rot_per_m * dist + 1e-4
   local hl, hw = self.field.length / 2 + c.margin, self.field.width / 2 + c.margin
   self.walked = self.walked + dist
+  if self.side_a and not self.side_offset then self.side_a = wrap(self.side_a + da) end
   -- the reachable part of the field (see Filter:reachable): its bounds clamp like the field's
   local r, d = c.prior, self.walked * (1 + 2 * c.odom_trans_noise) + 0.3
   local xlo, xhi = math.max(-hl, r[1] - d), math.min(hl, r[2] + d)
+  if self.own_half then xhi = math.min(xhi, c.own_half_margin) end
   local ylo, yhi = math.max(-hw, r[3] - d), math.min(hw, r[4] + d)
   for i = 1, self.n do
     local a = self.pa[i]
@@ -130,7 +170,7 @@ function Filter:poses_from_two_posts(o1, o2)
     local x = f1[1] - (c * o1[1] - s * o1[2])
     local y = f1[2] - (s * o1[1] + c * o1[2])
     if x > -hl and x < hl and y > -hw and y < hw and math.abs(x) < self.field.length / 2
-      and self:reachable(x, y) then
+      and self:reachable(x, y) and not self:mirrored(a) then
       out[#out + 1] = { x, y, a }
     end
   end
@@ -179,7 +219,8 @@ function Filter:project(o, k)
     if (cx - x) ^ 2 + (cy - y) ^ 2 < jump2 then nx[#nx + 1], ny[#ny + 1], na[#na + 1] = cx, cy, a end
   end
   for m = 1, #nx do
-    if nx[m] > -hl and nx[m] < hl and ny[m] > -hw and ny[m] < hw and self:reachable(nx[m], ny[m]) then
+    if nx[m] > -hl and nx[m] < hl and ny[m] > -hw and ny[m] < hw and self:reachable(nx[m], ny[m])
+      and not self:mirrored(na[m]) then
       local i = 1 + floor(self.rng() * n)
       if i > n then i = n end
       self.px[i], self.py[i], self.pa[i] = nx[m], ny[m], na[m]
@@ -261,6 +302,8 @@ function Filter:observe_posts(posts)
       local e = sep - self.field.goal_width
       l = l * (floor_l + exp(-0.5 * e * e / 0.3 ^ 2))
     end
+    -- the mirror hypothesis explains a sighting as well as the truth: the side rules it out
+    if self:mirrored(self.pa[i]) then l = l * floor_l * floor_l end
     self.w[i] = self.w[i] * l
     total = total + self.w[i]
   end
@@ -370,7 +413,28 @@ function Filter:estimate()
   var = var / sw
   local rlen = sqrt(sc * sc + ss * ss) / sw -- 1 when all headings agree
   self.confidence = math.max(0, math.min(1, rlen * exp(-var / 0.5) * (self.fit or 1)))
+  self:update_side()
   return x, y, a, self.confidence
+end
+
+-- The IMU's yaw (rad, any zero): the side's reference keeps its offset from it.
+function Filter:imu(yaw)
+  self.imu_yaw = yaw
+  if self.side_offset then self.side_a = wrap(yaw + self.side_offset)
+  elseif self.side_a then self.side_offset = wrap(self.side_a - yaw) end -- taken before the first reading
+end
+
+-- The side's reference is heading a (field frame) from now on.
+function Filter:take_side(a)
+  self.side_a = a
+  self.side_offset = self.imu_yaw and wrap(a - self.imu_yaw) or nil
+end
+
+-- The side's reference from a confident belief, taken when the belief's mirror cannot be (in the
+-- other half while the robot is known to be in its own, or out of reach of the placement).
+function Filter:update_side()
+  if self.side_a or self.confidence < self.cfg.side_confidence then return end
+  if not self:reachable(-self.x, -self.y) then self:take_side(self.a) end
 end
 
 return M

@@ -4,6 +4,7 @@
 --   local world = require('World.world').new(cfg)     -- cfg = Config behavior.lua's `world` part
 --   world:update(t, odometry, vision)                 -- once per behavior step
 --   world.ball.x ... ; world:ball_field(); world:goal_in_robot_frame()
+--   world.obstacles: other robots seen lately, robot frame: { { x, y, team (-1, 0 blue, 1 red), t }, ... }
 local ball_filter = require('World.ball_filter')
 local pose_filter = require('World.pose_filter')
 
@@ -38,6 +39,7 @@ function M.new(cfg)
   w.odom = nil
   w.frame = nil
   w.odometry_jumps = 0
+  w.obstacles = {}
   return w
 end
 
@@ -45,9 +47,24 @@ end
 -- while the game was in its initial state (placed by hand, or by a scenario), and a belief formed
 -- before that would be confident and wrong (the two goals look alike, so no later sighting
 -- contradicts a mirrored belief).
-function World:reset_pose()
-  self.pose:init_prior()
+-- after_penalty: put back by a referee (on either touch line); first_half: the GameController's
+-- (the placement config names the touch line of the first half; the sides change at half time).
+function World:reset_pose(after_penalty, first_half)
+  self.pose:init_prior(self:placement_lines(after_penalty, first_half))
   self.pose.fit = nil
+end
+
+-- The touch lines (their y sign, team frame) the robot is placed on, facing into the field, by the
+-- pose config's `placement`: 'anywhere' (nil: anywhere in the own half, any heading), 'touchline'
+-- (either), 'left'/'right' (y > 0 / y < 0 seen from the own goal, in the first half; the other in
+-- the second). A robot put back after a penalty: either touch line.
+function World:placement_lines(after_penalty, first_half)
+  local pl = self.cfg.pose.placement
+  if pl == 'anywhere' then return nil end
+  if after_penalty or pl == 'touchline' then return { -1, 1 } end
+  local s = pl == 'left' and 1 or -1
+  if first_half == false then s = -s end
+  return { s }
 end
 
 -- Continues from a belief this process's predecessor published (the world block): a restarted
@@ -79,6 +96,7 @@ function World:update(t, odometry, vision, imu_yaw)
     if math.abs(imu_da) > 0.5 then imu_da = nil end -- a glitch (or lying on the ground): not a turn
   end
   self.imu_yaw = imu_yaw
+  if imu_yaw then self.pose:imu(imu_yaw) end
   if self.odom then
     local dx, dy, da = odom_delta(self.odom, odometry)
     if imu_da and math.abs(da) <= 1.0 then da = imu_da end
@@ -88,6 +106,7 @@ function World:update(t, odometry, vision, imu_yaw)
     elseif dx ~= 0 or dy ~= 0 or da ~= 0 then
       self.ball:move_robot(dx, dy, da)
       self.pose:move(dx, dy, da)
+      self:move_obstacles(dx, dy, da)
     end
   end
   self.odom = { odometry[1], odometry[2], odometry[3] }
@@ -97,8 +116,58 @@ function World:update(t, odometry, vision, imu_yaw)
     if vision.ball_detected then self.ball:observe(vision.ball[1], vision.ball[2], t) end
     local posts = self:plausible_posts(vision.posts)
     if posts then self.pose:observe_posts(posts) end
+    if vision.robots then self:observe_robots(vision.robots, t) end
   end
   self.pose:estimate()
+  self:forget_obstacles(t)
+end
+
+-- The obstacles (robot frame) after the robot moved (dx, dy) and turned da: as the ball.
+function World:move_obstacles(dx, dy, da)
+  local c, s = cos(-da), sin(-da)
+  for _, o in ipairs(self.obstacles) do
+    local x, y = o.x - dx, o.y - dy
+    o.x, o.y = c * x - s * y, s * x + c * y
+  end
+end
+
+-- Robots seen in a frame ({ { x, y, team } ... }, robot frame): each updates the obstacle it is
+-- near (within obstacle_merge m) or is a new one; a robot that the pose puts off the field (the
+-- floor beyond the carpet looks the same to the vision) is dropped once the pose is trusted, and
+-- so is one nearer than min_range (the robot's own feet and arms, seen looking down).
+function World:observe_robots(list, t)
+  local oc = self.cfg.obstacles
+  local obs = self.obstacles
+  local hl, hw = self.cfg.field.length / 2 + oc.field_margin, self.cfg.field.width / 2 + oc.field_margin
+  local p = self.pose
+  local c, s = cos(p.a), sin(p.a)
+  for _, r in ipairs(list) do
+    local fx, fy = p.x + c * r.x - s * r.y, p.y + s * r.x + c * r.y
+    if r.x * r.x + r.y * r.y >= oc.min_range ^ 2 and (not self:localised()
+      or (math.abs(fx) <= hl and math.abs(fy) <= hw)) then
+      local best, bd = nil, oc.merge ^ 2
+      for _, o in ipairs(obs) do
+        local d = (o.x - r.x) ^ 2 + (o.y - r.y) ^ 2
+        if d < bd then best, bd = o, d end
+      end
+      if best then
+        best.x, best.y = best.x + oc.blend * (r.x - best.x), best.y + oc.blend * (r.y - best.y)
+        best.t = t
+        if r.team >= 0 then best.team = r.team end
+      elseif #obs < oc.max then
+        obs[#obs + 1] = { x = r.x, y = r.y, team = r.team, t = t }
+      end
+    end
+  end
+end
+
+-- Obstacles not seen for obstacle memory s are forgotten (they walk away).
+function World:forget_obstacles(t)
+  local obs, k = self.obstacles, 1
+  for i = 1, #obs do
+    if t - obs[i].t <= self.cfg.obstacles.memory then obs[k] = obs[i] k = k + 1 end
+  end
+  for i = #obs, k, -1 do obs[i] = nil end
 end
 
 -- The sightings worth giving the pose filter: none nearer than a robot can stand to a post or
@@ -186,6 +255,7 @@ function World:publish(block)
     w.ball_time[0] = b.seen and b.t_seen or -1
     w.pose[0], w.pose[1], w.pose[2] = p.x, p.y, p.a
     w.pose_confidence[0] = p.confidence
+    w.pose_side[0] = p.side_a or 0 / 0
     w.time[0] = self.t or 0
     -- a sample of the particles for the live view (Run/view): every k-th, at most what the block holds
     local k = math.ceil(p.n / PARTICLES_SHOWN)
@@ -195,6 +265,14 @@ function World:publish(block)
       m = m + 1
     end
     w.nparticles[0] = m
+    local obs = self.obstacles
+    local n = math.min(#obs, 8) -- the block holds 8 (Config/shm.schema)
+    w.obstacles[0] = n
+    for i = 1, n do
+      w.obstacle[2 * i - 2], w.obstacle[2 * i - 1] = obs[i].x, obs[i].y
+      w.obstacle_team[i - 1] = obs[i].team
+      w.obstacle_age[i - 1] = (self.t or 0) - obs[i].t
+    end
   end)
 end
 

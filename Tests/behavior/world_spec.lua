@@ -11,7 +11,8 @@ local pcfg = { particles = 300, prior = { -4.5, 0, -3, 3 }, odom_trans_noise = 0
   odom_rot_per_m = 0.05, post_range_noise = 0.15, post_bearing_noise = 0.12, outlier = 0.05,
   inject_fraction = 0.01, margin = 0.5, roughen_position = 0.03, roughen_angle = 0.02,
   reset_below = 0.5, reset_fraction = 0.05, gate_confidence = 0.6, gate_fit = 0.01,
-  project_fraction = 0.05, project_lost = 0.3, project_max_jump = 1.0 }
+  project_fraction = 0.05, project_lost = 0.3, project_max_jump = 1.0, side_confidence = 0.5,
+  side_tolerance = 1.57, own_half_margin = 0.3, placement = 'anywhere' }
 
 describe('ball filter', function()
   it('keeps a still ball in place while the robot walks and turns', function()
@@ -85,6 +86,67 @@ describe('pose filter', function()
     assert.is_true(conf > 0.3)
   end)
 
+  -- A goalkeeper in its goal facing the field sees only the far goal's posts: its pose and the
+  -- mirror pose in the other goal (4.2, 0, pi) see exactly the same. A belief spread over the whole
+  -- field (lost, e.g. after a fall) must come back to its own goal, never to the other one.
+  local function lost_keeper(seed, side_known)
+    local f = pose_filter.new(field, pcfg, World.make_rng(seed))
+    f:set_pose(-4.2, 0, 0, 0.02) -- placed: the side is known
+    if not side_known then f.side_a = nil end
+    local rng = World.make_rng(seed + 100)
+    for i = 1, f.n do
+      f.px[i], f.py[i], f.pa[i] = -4.5 + 9 * rng(), -3 + 6 * rng(), pose_filter.wrap(2 * math.pi * rng())
+    end
+    f.fit = 0.1 -- the sightings contradicted the belief: re-seeding from two posts is on
+    local mirrored = 0
+    for k = 1, 150 do
+      f:move(0, 0, 0)
+      f:observe_posts(seen(-4.2, 0, 0, { 1, 2 }))
+      local ex = f:estimate()
+      if k > 50 and ex > 0 then mirrored = mirrored + 1 end
+    end
+    return f, mirrored
+  end
+
+  it('keeps a goalkeeper that lost its belief in its own goal, not the mirror one (the side)', function()
+    local wrong_without = 0
+    for seed = 1, 8 do
+      local f, mirrored = lost_keeper(seed, true)
+      local ex, ey, ea = f:estimate()
+      assert.are.equal(0, mirrored, 'seed ' .. seed .. ': steps with the belief in the other half')
+      assert.is_near(-4.2, ex, 0.4)
+      assert.is_near(0, ey, 0.4)
+      assert.is_near(0, pose_filter.wrap(ea), 0.2)
+      for i = 1, f.n do assert.is_false(f:mirrored(f.pa[i])) end
+      -- the same without the side: the sightings alone cannot tell the goals apart
+      local _, m2 = lost_keeper(seed, false)
+      if m2 > 0 then wrong_without = wrong_without + 1 end
+    end
+    assert.is_true(wrong_without > 0, 'without the side, some seeds end in the mirror goal')
+  end)
+
+  it('takes the side from a confident belief whose mirror is out of reach, and follows turns', function()
+    local f = pose_filter.new(field, pcfg, World.make_rng(7))
+    assert.is_nil(f.side_a)
+    local x, y, a = -3.0, -1.0, 0.3
+    for _ = 1, 60 do
+      f:move(0, 0, 0)
+      f:observe_posts(seen(x, y, a, { 1, 2 }))
+      f:estimate()
+    end
+    assert.is_not_nil(f.side_a, 'the side is known')
+    assert.is_near(0, pose_filter.wrap(f.side_a - a), 0.2)
+    f:move(0, 0, 0.5)
+    assert.is_near(0, pose_filter.wrap(f.side_a - a - 0.5), 0.2)
+    -- no two-post re-seeding candidate is the mirror any more
+    f.walked = math.huge
+    for _, c in ipairs(f:poses_from_two_posts(seen(x, y, a + 0.5, { 1, 2 })[1], seen(x, y, a + 0.5, { 1, 2 })[2])) do
+      assert.is_true(c[1] < 0, 'candidate at x ' .. c[1])
+    end
+    f:init_prior() -- placed anew: the side comes from the prior again
+    assert.is_nil(f.side_a)
+  end)
+
   it('follows odometry once localized', function()
     local f = pose_filter.new(field, pcfg, World.make_rng(5))
     f:set_pose(-1, 0, 0, 0.02)
@@ -107,6 +169,25 @@ describe('world', function()
   local wcfg = { field = field, ball = bcfg, pose = pcfg, seed = 1, ball_lost_after = 3,
     max_odometry_step = 0.5, post_min_range = 0.5, post_max_range = 4.0, post_pair_tolerance = 0.8,
     localised_confidence = 0.5 }
+
+  it('knows the touch line it is placed on (and the side at once) from the placement and the half', function()
+    local pc = setmetatable({ placement = 'right' }, { __index = pcfg })
+    local w = World.new(setmetatable({ pose = pc }, { __index = wcfg }))
+    assert.are.same({ -1 }, w:placement_lines(false, true))
+    assert.are.same({ 1 }, w:placement_lines(false, false))   -- second half: the sides changed
+    assert.are.same({ -1, 1 }, w:placement_lines(true, true))  -- put back after a penalty: either
+    w.pose:imu(0.3)
+    w:reset_pose(false, true)
+    -- every particle on the right touch line facing in, the side known and held against the IMU
+    for i = 1, w.pose.n do
+      assert.is_true(math.abs(w.pose.py[i] + 3) < 0.6 and w.pose.px[i] <= 0)
+    end
+    assert.is_near(math.pi / 2, w.pose.side_a, 1e-9)
+    w.pose:imu(0.3 + 2.0) -- the body turned 2 rad (a fall, say): the side turns with it
+    assert.is_near(0, pose_filter.wrap(w.pose.side_a - math.pi / 2 - 2.0), 1e-9)
+    pc.placement = 'anywhere'
+    assert.is_nil(w:placement_lines(false, true))
+  end)
 
   it('passes only plausible goal-post sightings to the pose filter', function()
     local w = World.new(wcfg)

@@ -6,7 +6,9 @@
 #   Tests/bench/match.sh [PER_TEAM (2)] [HALF_SECONDS (300)] [SEED (1)] [READY_SECONDS (45)]
 # (make match, make match4). The referee's rules are Config/common/game.lua's `referee`; the half and
 # READY's length given here reach it through its own site folder (build/match/<id>/site_referee/game.lua).
-# env: ROBOT_ID (robots ROBOT_ID+270 ..; UDP ports derived from it), logs in build/match/<first id>/.
+# env: ROBOT_ID (robots ROBOT_ID+270 ..; UDP ports derived from it), logs in build/match/<first id>/;
+# ALONE="2" (team numbers, space-separated): those teams' robots play without team play (no team
+# messages, no roles: each robot alone; game.lua's team.enabled, roles.enabled), for Run/league.py.
 # The robots' vision does not tell robots apart: robots of either team are not seen (only bumped into).
 set -u
 cd "$(dirname "$0")/../.." || exit 1
@@ -41,7 +43,15 @@ for i in $(seq 0 $((R - 1))); do
   site="$DIR/site_${team}_${player}"
   mkdir -p "$site"
   cp Config/site/vision.lua "$site/"
-  printf 'return { team_number = %d, player_number = %d }\n' "$team" "$player" >"$site/behavior.lua"
+  # the referee places team 1 on the touch line at its right in the first half (y = -W, its own
+  # goal at -x), team 2 on its left: the robots know it (the pose filter's side)
+  side=$([ "$team" = 1 ] && echo right || echo left)
+  printf 'return { team_number = %d, player_number = %d, world = { pose = { placement = "%s" } } }\n' \
+    "$team" "$player" "$side" >"$site/behavior.lua"
+  rm -f "$site/game.lua"
+  for t in ${ALONE:-}; do
+    [ "$t" = "$team" ] && printf 'return { team = { enabled = false }, roles = { enabled = false } }\n' >"$site/game.lua"
+  done
   ROBOT_ID=$((ID + i)) HRP_SITE="$site" HRP_GC_PORT=$GC_PORT HRP_GC_RETURN_PORT=$RET_PORT \
     HRP_TEAM_PORT=$((TEAM_PORT + team - 1)) ./run_main --quiet >"$DIR/main_${team}_${player}.log" 2>&1 &
   PIDS+=($!)

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Scenario (make test): a short refereed 2v2 match (Tests/bench/match.sh: halves of 15 s, READY 10 s):
 # the referee takes the game through both halves to the end and prints the result, every robot
-# answers the GameController (return packets), and no robot process dies.
+# answers the GameController (return packets), no robot process dies, and no robot's pose belief
+# is the mirror of the truth for more than 2 s in all (the side: Player/World/pose_filter.lua).
 #   Tests/game/match_test.sh      env: ROBOT_ID (the match uses ROBOT_ID+270 ..), logs in build/match/<id>/
 set -u
 source "$(dirname "$0")/lib.sh"
@@ -25,5 +26,9 @@ check() { if [ "$2" = 0 ]; then echo "check $1 ok $3"; else echo "check $1 FAIL 
   died=$(cat "$DIR"/main_*.log 2>/dev/null | grep -ci 'exited\|error\|restart')
   [ "$died" = 0 ]
   check no_crash $? "$died lines of dying or restarting processes in $DIR/main_*.log"
+  tallies=$(grep '^tally ' "$LOG")
+  worst=$(echo "$tallies" | grep -o 'mirrored=[0-9.]*' | cut -d= -f2 | sort -g | tail -1)
+  [ "$(echo "$tallies" | wc -l)" = 4 ] && awk -v w="${worst:-99}" 'BEGIN { exit !(w <= 2.0) }'
+  check side $? "the longest mirrored belief of a robot ${worst:-?} s ($(echo "$tallies" | grep -o '^tally [0-9/]*.*mirrored=[0-9.]*' | sed 's/striker.*mirrored/mirrored/' | tr '\n' ';'))"
 } >"$LOGDIR/match_checks.log"
-report_checks "$LOGDIR/match_checks.log" 3
+report_checks "$LOGDIR/match_checks.log" 4

@@ -1,0 +1,99 @@
+-- luacheck: std +busted
+-- Robot detection (Player/Vision/detect_robots.lua, through the pipeline) on frames ray-cast by
+-- the test: green ground, a grey wall above the horizon, another robot as a grey upright cylinder
+-- (0.1 m radius, 0.52 m tall: an OP3) with a jersey band of its team's colour (the sim's red or
+-- blue), seen from the OP3's camera pose: its foot point against the truth, its team, and no robot
+-- where there is none (the ball neither). The world model's obstacles come from these.
+local ffi = require('ffi')
+local kinematics = require('kinematics')
+local project = require('Vision.project')
+local pipeline = require('Vision.pipeline')
+
+local W, H = 640, 480
+local FOVY = math.rad(43.3)
+local RADIUS, HEIGHT = 0.1, 0.52
+local JERSEY = { [0] = { 72, 195, 98 }, [1] = { 83, 107, 212 } } -- blue, red (YUV)
+
+local vcfg = require('Config').load('vision', nil, { robot = 'op3', platform = 'Sim' })
+local ccfg = { width = W, height = H, fovy = FOVY, head_joint = { 0, 1 } }
+local model = assert(kinematics.load({ robot = 'op3' }))
+local cm = project.camera(W, H, FOVY)
+local q0 = {}
+for i = 1, #model.joints do q0[i] = 0 end
+
+local function pose_for(pan, tilt)
+  local q = {}
+  for i = 1, #q0 do q[i] = q0[i] end
+  q[1], q[2] = pan, tilt
+  return (model:camera_pose(q, { 0, 0 }))
+end
+
+-- a frame with a robot of `team` at (rx, ry) on the ground (nil: none) and a ball at (bx, by) or none
+local function render(pose, rx, ry, team, bx, by)
+  local buf = ffi.new('uint8_t[?]', W * H * 2)
+  local cx, cy, cz = pose[1], pose[2], pose[3]
+  local ground = cz - pose.height
+  for v = 0, H - 1 do
+    for u = 0, W - 1, 2 do
+      local dx, dy, dz = project.ray(cm, pose, u + 0.5, v + 0.5)
+      local Y, U, V = 150, 128, 128          -- grey wall
+      local t_hit = math.huge
+      if dz < 0 then Y, U, V = 99, 95, 86 t_hit = (ground - cz) / dz end -- green ground
+      if rx then -- the cylinder's side: |(c + t d - r)_xy| = RADIUS
+        local ox, oy = cx - rx, cy - ry
+        local a, b, c = dx * dx + dy * dy, 2 * (ox * dx + oy * dy), ox * ox + oy * oy - RADIUS * RADIUS
+        local disc = b * b - 4 * a * c
+        if disc >= 0 then
+          local t = (-b - math.sqrt(disc)) / (2 * a)
+          local z = cz + t * dz - ground
+          if t > 0 and t < t_hit and z >= 0 and z <= HEIGHT then
+            if z > 0.25 and z < 0.38 then Y, U, V = JERSEY[team][1], JERSEY[team][2], JERSEY[team][3]
+            else Y, U, V = 120, 128, 128 end
+          end
+        end
+      end
+      if bx then
+        local ox, oy, oz = cx - bx, cy - by, cz - (ground + 0.07)
+        local a = dx * dx + dy * dy + dz * dz
+        local b = 2 * (ox * dx + oy * dy + oz * dz)
+        local c = ox * ox + oy * oy + oz * oz - 0.07 * 0.07
+        if b * b - 4 * a * c >= 0 and b < 0 then Y, U, V = 147, 45, 205 end
+      end
+      local p = (v * W + u) * 2
+      buf[p], buf[p + 1], buf[p + 2], buf[p + 3] = Y, U, Y, V
+    end
+  end
+  return buf
+end
+
+local function detect(buf, pan, tilt)
+  local vp = assert(pipeline.new(vcfg, ccfg, model))
+  local q = {}
+  for i = 1, #q0 do q[i] = 0 end
+  local det = assert(vp:process({ yuyv = buf, width = W, height = H, head = ffi.new('double[2]', pan, tilt) },
+    q, { 0, 0 }))
+  return det.robots
+end
+
+describe('robot detection', function()
+  it('finds a robot standing on the field, its foot point and its jersey colour', function()
+    for k, case in ipairs({ { 1.2, 0.2, 1, 0.0 }, { 2.0, -0.5, 0, 0.2 }, { 0.8, -0.3, 1, -0.3 } }) do
+      local rx, ry, team, pan = case[1], case[2], case[3], case[4]
+      local pose = pose_for(pan, -0.3)
+      local robots = detect(render(pose, rx, ry, team), pan, -0.3)
+      assert.are.equal(1, robots.n, 'case ' .. k)
+      local r = robots[1]
+      -- the foot point is the cylinder's near side: within its radius of the centre
+      local e = math.sqrt((r.x - rx) ^ 2 + (r.y - ry) ^ 2)
+      assert.is_true(e < RADIUS + 0.1, string.format('case %d: foot (%.2f, %.2f), robot at (%.2f, %.2f)', k, r.x, r.y,
+        rx, ry))
+      assert.are.equal(team, r.team, 'case ' .. k)
+    end
+  end)
+
+  it('sees no robot on an empty field, nor the ball', function()
+    local pose = pose_for(0, -0.3)
+    assert.are.equal(0, detect(render(pose), 0, -0.3).n)
+    assert.are.equal(0, detect(render(pose, nil, nil, nil, 1.0, 0.1), 0, -0.3).n)
+  end)
+end)
