@@ -24,6 +24,7 @@ import argparse
 import json
 import os
 import re
+import secrets
 import signal
 import subprocess
 import sys
@@ -148,6 +149,11 @@ def main():
                             "parsed": parse(out)})
         return report(results, args)
 
+    if not args.address:
+        # Ray's token authentication stays on, with a token made for this run and held in the
+        # environment (its workers inherit it): nothing is written outside the repository (~/.ray)
+        os.environ.setdefault("RAY_AUTH_MODE", "token")
+        os.environ.setdefault("RAY_AUTH_TOKEN", secrets.token_hex(32))
     import ray  # late: --help works without it
     if args.address:
         ray.init(address=args.address, log_to_driver=False)
