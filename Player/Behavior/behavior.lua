@@ -118,7 +118,8 @@ function Behavior:read_vision()
     end
     local robots = {}
     for k = 1, math.min(4, math.max(0, b.robots[0])) do
-      robots[k] = { x = b.robot_position[2 * k - 2], y = b.robot_position[2 * k - 1], team = b.robot_team[k - 1] }
+      robots[k] = { x = b.robot_position[2 * k - 2], y = b.robot_position[2 * k - 1], team = b.robot_team[k - 1],
+        foot_visible = b.robot_foot_visible[k - 1] ~= 0 }
     end
     return {
       frame = b.frame[0], time = b.time[0], ball_detected = b.ball_detected[0] ~= 0,

@@ -140,6 +140,7 @@ local function publish(frame, det)
     b.robot_position[2 * i - 2], b.robot_position[2 * i - 1] = r.x, r.y
     b.robot_image[k], b.robot_image[k + 1], b.robot_image[k + 2], b.robot_image[k + 3] = r.u0, r.v0, r.u1, r.v1
     b.robot_team[i - 1] = r.team
+    b.robot_foot_visible[i - 1] = r.foot_visible and 1 or 0
   end
   b.fps[0] = fps
   b:end_write()

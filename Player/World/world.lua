@@ -131,7 +131,7 @@ function World:move_obstacles(dx, dy, da)
   end
 end
 
--- Robots seen in a frame ({ { x, y, team } ... }, robot frame): each updates the obstacle it is
+-- Robots seen in a frame ({ { x, y, team, foot_visible } ... }, robot frame): each updates the obstacle it is
 -- near (within obstacle_merge m) or is a new one; a robot that the pose puts off the field (the
 -- floor beyond the carpet looks the same to the vision) is dropped once the pose is trusted, and
 -- so is one nearer than min_range (the robot's own feet and arms, seen looking down).
@@ -151,7 +151,15 @@ function World:observe_robots(list, t)
         if d < bd then best, bd = o, d end
       end
       if best then
-        best.x, best.y = best.x + oc.blend * (r.x - best.x), best.y + oc.blend * (r.y - best.y)
+        local sx, sy = r.x, r.y
+        if r.foot_visible == false then
+          -- its feet below the image (a robot near, the head looking further): the image's bottom
+          -- row's ground point is beyond them, so the sighting's range is only an upper bound; its
+          -- bearing holds, the range stays the obstacle's when that is nearer
+          local rr, ro = sqrt(sx * sx + sy * sy), sqrt(best.x * best.x + best.y * best.y)
+          if ro < rr and rr > 0 then sx, sy = sx * ro / rr, sy * ro / rr end
+        end
+        best.x, best.y = best.x + oc.blend * (sx - best.x), best.y + oc.blend * (sy - best.y)
         best.t = t
         if r.team >= 0 then best.team = r.team end
       elseif #obs < oc.max then
