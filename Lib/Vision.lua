@@ -42,7 +42,7 @@ function M.goal_posts()
 end
 
 -- Other robots of the latest frame: the foot point of each (x, y), the team colour seen (-1 unknown,
--- 0 blue, 1 red) and its box in the image.
+-- 0 blue, 1 red), its box in the image and whether its feet are in it (else its range is an upper bound).
 function M.robots()
   local b = vision()
   return b:read(function(v)
@@ -51,7 +51,7 @@ function M.robots()
       local k = 4 * (i - 1)
       list[i] = { x = v.robot_position[2 * i - 2], y = v.robot_position[2 * i - 1], team = v.robot_team[i - 1],
                   u0 = v.robot_image[k], v0 = v.robot_image[k + 1], u1 = v.robot_image[k + 2],
-                  v1 = v.robot_image[k + 3] }
+                  v1 = v.robot_image[k + 3], foot_visible = v.robot_foot_visible[i - 1] ~= 0 }
     end
     return list
   end)
