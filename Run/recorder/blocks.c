@@ -18,6 +18,14 @@ static size_t type_size(int type) {
   return type >= 1 && type <= 9 ? sizes[type] : 0;
 }
 
+void *rec_field(shm_block *b, const char *name, int type, int *count) {
+  int t, n;
+  void *p = shm_field_ptr(b, name, &t, &n);
+  if (!p || t != type) return NULL;
+  if (count) *count = n;
+  return p;
+}
+
 /* offset of an i32 field named `name`, or -1 */
 static int i32_field(shm_block *b, const char *name) {
   int type, count;

@@ -15,25 +15,17 @@
 /* Lib/lockstep.lua's STAGE.observer: after motion and vision (0) and the behavior (1) */
 #define OBSERVER_STAGE 2
 
-static void *field(shm_block *b, const char *name, int type, int *count) {
-  int t, n;
-  void *p = shm_field_ptr(b, name, &t, &n);
-  if (!p || t != type) return NULL;
-  if (count) *count = n;
-  return p;
-}
-
 int rec_observer_join(rec_observer *ob, shm_schema *schema, int robot_id, char *err, size_t errlen) {
   memset(ob, 0, sizeof *ob);
   int rc = shm_block_open(schema, "sync", robot_id, SHM_OPEN_CREATE, &ob->blk, err, errlen);
   if (rc < 0) return rc;
-  ob->lockstep = (int32_t *)field(ob->blk, "lockstep", SHM_I32, NULL);
-  ob->tick = (uint32_t *)field(ob->blk, "tick", SHM_U32, NULL);
-  ob->done_count = (uint32_t *)field(ob->blk, "done_count", SHM_U32, NULL);
-  ob->pid = (int32_t *)field(ob->blk, "pid", SHM_I32, &ob->n);
-  ob->wake = (uint32_t *)field(ob->blk, "wake_tick", SHM_U32, NULL);
-  ob->done = (uint32_t *)field(ob->blk, "done_tick", SHM_U32, NULL);
-  ob->observer = (int32_t *)field(ob->blk, "observer", SHM_I32, NULL);
+  ob->lockstep = (int32_t *)rec_field(ob->blk, "lockstep", SHM_I32, NULL);
+  ob->tick = (uint32_t *)rec_field(ob->blk, "tick", SHM_U32, NULL);
+  ob->done_count = (uint32_t *)rec_field(ob->blk, "done_count", SHM_U32, NULL);
+  ob->pid = (int32_t *)rec_field(ob->blk, "pid", SHM_I32, &ob->n);
+  ob->wake = (uint32_t *)rec_field(ob->blk, "wake_tick", SHM_U32, NULL);
+  ob->done = (uint32_t *)rec_field(ob->blk, "done_tick", SHM_U32, NULL);
+  ob->observer = (int32_t *)rec_field(ob->blk, "observer", SHM_I32, NULL);
   if (!ob->lockstep || !ob->tick || !ob->done_count || !ob->pid || !ob->wake || !ob->done || !ob->observer) {
     snprintf(err, errlen, "recorder: block 'sync' lacks a lockstep field (Config/shm.schema)");
     shm_block_close(ob->blk);

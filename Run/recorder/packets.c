@@ -9,26 +9,18 @@
 #include <stdlib.h>
 #include <string.h>
 
-static void *field(shm_block *b, const char *name, int type, int *count) {
-  int t, n;
-  void *p = shm_field_ptr(b, name, &t, &n);
-  if (!p || t != type) return NULL;
-  if (count) *count = n;
-  return p;
-}
-
 int rec_packets_open(rec_packets *p, shm_schema *schema, int robot_id, char *err, size_t errlen) {
   memset(p, 0, sizeof *p);
   int rc = shm_block_open(schema, REC_PACKETS_BLOCK, robot_id, SHM_OPEN_CREATE, &p->blk, err, errlen);
   if (rc < 0) return rc;
   int bytes = 0, n2 = 0, n3 = 0, n4 = 0, n5 = 0;
-  p->count = (const uint32_t *)field(p->blk, "written", SHM_U32, NULL);
-  p->source = (const int32_t *)field(p->blk, "source", SHM_I32, &p->slots);
-  p->length = (const int32_t *)field(p->blk, "length", SHM_I32, &n2);
-  p->time = (const double *)field(p->blk, "time", SHM_F64, &n3);
-  p->host = (const uint32_t *)field(p->blk, "host", SHM_U32, &n4);
-  p->port = (const int32_t *)field(p->blk, "port", SHM_I32, &n5);
-  p->data = (const uint8_t *)field(p->blk, "data", SHM_U8, &bytes);
+  p->count = (const uint32_t *)rec_field(p->blk, "written", SHM_U32, NULL);
+  p->source = (const int32_t *)rec_field(p->blk, "source", SHM_I32, &p->slots);
+  p->length = (const int32_t *)rec_field(p->blk, "length", SHM_I32, &n2);
+  p->time = (const double *)rec_field(p->blk, "time", SHM_F64, &n3);
+  p->host = (const uint32_t *)rec_field(p->blk, "host", SHM_U32, &n4);
+  p->port = (const int32_t *)rec_field(p->blk, "port", SHM_I32, &n5);
+  p->data = (const uint8_t *)rec_field(p->blk, "data", SHM_U8, &bytes);
   if (!p->count || !p->source || !p->length || !p->time || !p->host || !p->port || !p->data || p->slots < 1 ||
       n2 != p->slots || n3 != p->slots || n4 != p->slots || n5 != p->slots || bytes % p->slots) {
     snprintf(err, errlen, "recorder: block '%s' (Config/shm.schema) needs u32 written and source, length, time, host, "

@@ -82,6 +82,9 @@ void rec_queue_tick_end(rec_queue *q);
 uint64_t rec_queue_dropped(rec_queue *q);
 
 /* ---- the blocks being recorded */
+/* a block's field `name` if it has the type `type` (SHM_*), else NULL; its element count in *count */
+void *rec_field(shm_block *b, const char *name, int type, int *count);
+
 typedef struct rec_block {
   shm_block *blk;
   shmlog_block msg;        /* its message (the camera's raw field left out when frames go as JPEG) */

@@ -9,7 +9,8 @@
 # env: ROBOT_ID (robots ROBOT_ID+270 ..; UDP ports derived from it), logs in build/match/<first id>/;
 # ALONE="2" (team numbers, space-separated): those teams' robots play without team play (no team
 # messages, no roles: each robot alone; game.lua's team.enabled, roles.enabled), for Run/league.py.
-# The robots' vision does not tell robots apart: robots of either team are not seen (only bumped into).
+# The robots see each other (jerseys in the sim camera, the vision block's robots, the world's obstacles) and walk
+# around them on the way to a point (BodyFSM/nav.lua); dribbling does not avoid them yet.
 set -u
 cd "$(dirname "$0")/../.." || exit 1
 source Run/env.sh

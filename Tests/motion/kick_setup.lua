@@ -60,6 +60,18 @@ function M.wait_for_motion(wait)
   return nil
 end
 
+-- Applies WALK_PARAMS='key=v[,v..];key=v' (Walk.set, retried until the walk takes it), so a
+-- scenario runs with other walk parameters (e.g. feedback off); `note` (optional) logs each one.
+function M.apply_walk_params(Walk, wait, note)
+  for kv in (os.getenv('WALK_PARAMS') or ''):gmatch('[^;]+') do
+    local key, v = kv:match('^(.-)=(.*)$')
+    local vals = {}
+    for x in v:gmatch('[^,]+') do vals[#vals + 1] = tonumber(x) end
+    while not Walk.set(key, #vals == 1 and vals[1] or vals) do wait(0.01) end
+    if note then note('walk parameter %s = %s', key, v) end
+  end
+end
+
 -- leg joint angles (or velocities with get = Body.get_velocity) of one side
 function M.leg(side, get)
   get = get or Body.get_position

@@ -19,13 +19,8 @@ local out = arg[1] or '-'
 local forces, moments = {}, {}
 for x in (arg[2] or '15'):gmatch('[^,]+') do forces[#forces + 1] = tonumber(x) end
 for x in (arg[3] or '0'):gmatch('[^,]+') do moments[#moments + 1] = tonumber(x) end
--- WALK_PARAMS='key=v[,v..];key=v': walk parameters for the run (as Tests/motion/sim_scenarios.lua)
-for kv in (os.getenv('WALK_PARAMS') or ''):gmatch('[^;]+') do
-  local key, v = kv:match('^(.-)=(.*)$')
-  local vals = {}
-  for x in v:gmatch('[^,]+') do vals[#vals + 1] = tonumber(x) end
-  while not Walk.set(key, #vals == 1 and vals[1] or vals) do wait(0.01) end
-end
+-- WALK_PARAMS changes walk parameters first (e.g. to switch feedback off)
+ks.apply_walk_params(Walk, wait)
 if arg[4] then while not Walk.set('stepAdjust.gain', tonumber(arg[4])) do wait(0.01) end end
 
 local function one(f, k, csv)

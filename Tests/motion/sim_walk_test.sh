@@ -12,6 +12,7 @@
 set -u
 cd "$(dirname "$0")/../.."
 source Run/env.sh
+source Tests/tap_lib.sh
 LOGDIR="$HRP_ROOT/build/test-logs/motion"
 mkdir -p "$LOGDIR"
 BASE_ID=${ROBOT_ID:-9200}
@@ -43,17 +44,6 @@ for s in "${SCEN[@]}"; do
   kill -TERM "$main_pid" 2>/dev/null
   wait "$main_pid" 2>/dev/null
   Run/shm --robot "$id" remove >/dev/null 2>&1
-  # renumber the scenario's TAP lines into one sequence
-  while IFS= read -r line; do
-    if [[ $line =~ ^(not\ ok|ok)\ [0-9]+\ -\ (.*)$ ]]; then
-      k=$((k + 1)); echo "${BASH_REMATCH[1]} $k - ${parts[0]}: ${BASH_REMATCH[2]}"
-      [[ ${BASH_REMATCH[1]} == "not ok" ]] && failed=$((failed + 1))
-    elif [[ $line == \#* ]]; then echo "$line"; fi
-  done <"$LOGDIR/${parts[0]}.log"
-  if [ $rc -ne 0 ]; then
-    k=$((k + 1)); failed=$((failed + 1))
-    echo "not ok $k - ${parts[0]}: scenario script exited with status $rc (log $LOGDIR/${parts[0]}.log)"
-    tail -n 5 "$LOGDIR/${parts[0]}.log" | sed 's/^/#   /'
-  fi
+  tap_merge "$LOGDIR/${parts[0]}.log" "${parts[0]}" "$rc"
 done
 [ $failed -eq 0 ]

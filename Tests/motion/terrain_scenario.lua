@@ -30,14 +30,8 @@ if not motion then
   os.exit(1)
 end
 
--- WALK_PARAMS='key=v[,v..];key=v': walk parameters first (as Tests/motion/sim_scenarios.lua)
-for kv in (os.getenv('WALK_PARAMS') or ''):gmatch('[^;]+') do
-  local k, v = kv:match('^(.-)=(.*)$')
-  local vals = {}
-  for x in v:gmatch('[^,]+') do vals[#vals + 1] = tonumber(x) end
-  while not Walk.set(k, #vals == 1 and vals[1] or vals) do wait(0.01) end
-  note('walk parameter %s = %s', k, v)
-end
+-- WALK_PARAMS changes walk parameters first (e.g. to switch feedback off)
+ks.apply_walk_params(Walk, wait, note)
 
 -- the gyro feedback's gains as configured, and switched off
 local FB = {}

@@ -11,6 +11,7 @@
 set -u
 cd "$(dirname "$0")/../.."
 source Run/env.sh
+source Tests/tap_lib.sh
 LOGDIR="$HRP_ROOT/build/test-logs/motion"
 mkdir -p "$LOGDIR"
 BASE_ID=$(( ${ROBOT_ID:-9200} + 70 ))
@@ -35,16 +36,6 @@ for layout in "${LAYOUTS[@]}"; do
   kill -TERM "$main_pid" 2>/dev/null
   wait "$main_pid" 2>/dev/null
   Run/shm --robot "$id" remove >/dev/null 2>&1
-  while IFS= read -r line; do
-    if [[ $line =~ ^(not\ ok|ok)\ [0-9]+\ -\ (.*)$ ]]; then
-      k=$((k + 1)); echo "${BASH_REMATCH[1]} $k - ${BASH_REMATCH[2]}"
-      [[ ${BASH_REMATCH[1]} == "not ok" ]] && failed=$((failed + 1))
-    elif [[ $line == \#* ]]; then echo "$line"; fi
-  done <"$LOGDIR/terrain_$layout.log"
-  if [ $rc -ne 0 ]; then
-    k=$((k + 1)); failed=$((failed + 1))
-    echo "not ok $k - terrain $layout: scenario script exited with status $rc (log $LOGDIR/terrain_$layout.log)"
-    tail -n 5 "$LOGDIR/terrain_$layout.log" | sed 's/^/#   /'
-  fi
+  tap_merge "$LOGDIR/terrain_$layout.log" "$layout" "$rc"
 done
 [ $failed -eq 0 ]

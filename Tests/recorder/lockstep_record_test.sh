@@ -5,11 +5,7 @@
 set -u
 cd "$(dirname "$0")/../.."
 source Run/env.sh
-dir=$(mktemp -d)
-trap 'rm -rf "$dir"; Run/shm remove >/dev/null 2>&1' EXIT
-n=0; fails=0
-res() { n=$((n + 1)); if [ "$1" = 0 ]; then echo "ok $n - $2"; else fails=$((fails + 1)); echo "not ok $n - $2"; fi; }
-Run/shm remove >/dev/null 2>&1
+source Tests/recorder/lib.sh
 build/bin/hrp_record --lockstep --dir "$dir" --quiet > "$dir/record.out" 2>&1 &
 rec=$!
 build/bin/dcm_sim --lockstep-wait 1 --duration 3 --quiet

@@ -6,11 +6,7 @@
 set -u
 cd "$(dirname "$0")/../.."
 source Run/env.sh
-dir=$(mktemp -d)
-trap 'rm -rf "$dir"; Run/shm remove >/dev/null 2>&1' EXIT
-n=0; fails=0
-res() { n=$((n + 1)); if [ "$1" = 0 ]; then echo "ok $n - $2"; else fails=$((fails + 1)); echo "not ok $n - $2"; fi; }
-Run/shm remove >/dev/null 2>&1
+source Tests/recorder/lib.sh
 
 # chunks written every 0.1 s (site overlay), so that the truncated log below always keeps several whole
 # ones, however fast the machine produced the 2 s
