@@ -211,4 +211,22 @@ describe('world', function()
     local turned = ((w.pose.a - before) + math.pi) % (2 * math.pi) - math.pi
     assert.is_true(math.abs(turned - 0.3) < 0.1, 'turned ' .. turned)
   end)
+
+  it('takes only the bearing of a robot whose feet are below the image when it is nearer', function()
+    local cfg = setmetatable({ obstacles = { memory = 4, merge = 0.5, blend = 0.5, field_margin = 0.5,
+      min_range = 0.3, max = 8 } }, { __index = wcfg })
+    local w = World.new(cfg)
+    w:observe_robots({ { x = 0.6, y = 0.0, team = -1, foot_visible = true } }, 0)
+    -- then its feet are out of the image: the sighting's range (0.67 m) is an upper bound
+    local r = math.sqrt(0.5 ^ 2 + 0.45 ^ 2)
+    w:observe_robots({ { x = 0.5, y = 0.45, team = -1, foot_visible = false } }, 0.1)
+    local o = w.obstacles[1]
+    assert.are.equal(1, #w.obstacles)
+    assert.is_near((0.6 + 0.5 * 0.6 / r) / 2, o.x, 1e-9) -- blended with the sighting at range 0.6
+    assert.is_near(0.45 * 0.6 / r / 2, o.y, 1e-9)
+    -- a sighting with the feet in the image moves it out
+    local before = math.sqrt(o.x ^ 2 + o.y ^ 2)
+    w:observe_robots({ { x = 0.5, y = 0.45, team = -1, foot_visible = true } }, 0.2)
+    assert.is_true(math.sqrt(o.x ^ 2 + o.y ^ 2) > before + 0.03)
+  end)
 end)
