@@ -166,9 +166,22 @@ function M.clamp_velocity(p, vx, vy, va)
   return vx, vy, va
 end
 
--- The duration of one step. The analytic engine takes tStep as it is; an engine that plans on its
--- own sample grid (Motion.walk_preview) rounds it to whole ticks.
-function Walk:step_time() return self.p.tStep end
+-- The duration of a step at velocity v: tStep, shortened towards `turnStep.tStep` as the turning
+-- rate |v[3]| rises from turnStep.va[1] to turnStep.va[2] (rad/s; the feet's relative yaw is bounded
+-- by the legs, so a faster turn takes more steps, not larger ones); no `turnStep`: tStep.
+function M.step_period(p, v)
+  local T = p.tStep
+  local ts = rawget(p, 'turnStep')
+  if ts and v then
+    local f = clamp((abs(v[3]) - ts.va[1]) / (ts.va[2] - ts.va[1]), 0, 1)
+    T = T + f * (ts.tStep - T)
+  end
+  return T
+end
+
+-- The duration of a step at velocity v (default: the walk's). The analytic engine takes the period
+-- as it is; an engine that plans on its own sample grid (Motion.walk_preview) rounds it to whole ticks.
+function Walk:step_time(v) return M.step_period(self.p, v or self.vel) end
 
 function Walk:set_velocity(vx, vy, va)
   local cx, cy, ca = M.clamp_velocity(self.p, vx, vy, va)
@@ -196,13 +209,20 @@ function Walk:is_active() return self.active end
 -- Swing foot target for the step, given the support foot and the velocity.
 function Walk:step_target(support_u, swing_left, v)
   local p = self.p
-  local T = self:step_time()
+  local T = self:step_time(v)
   local sgn = swing_left and 1 or -1
   local dx = v[1] * T
   -- sideways and turning: the foot on the side of the motion takes the whole step, the other returns
   local dy, da = 0, 0
   if (v[2] > 0) == swing_left and v[2] ~= 0 then dy = 2 * v[2] * T end
-  if (v[3] > 0) == swing_left and v[3] ~= 0 then da = 2 * v[3] * T end
+  -- turning: each step turns the swing foot by the turn of two steps against the support foot; the
+  -- closing foot lands toed in by `turnToeIn` x a step's turn (the opening one opens that much less),
+  -- so the feet's relative yaw swings about zero (the OP3's legs touch at the hips beyond about
+  -- 0.55 rad toed out and 0.45 toed in: opening from parallel alone met them at 1.1 rad/s)
+  if v[3] ~= 0 then
+    local closing = (rawget(p, 'turnToeIn') or 0) * v[3] * T
+    da = (v[3] > 0) == swing_left and 2 * v[3] * T - closing or closing
+  end
   -- the support foot turned: keep forward steps along the mean heading
   local rel = { dx, sgn * 2 * p.footY + dy, da }
   rel[1] = clamp(rel[1], p.stepLimitX[1], p.stepLimitX[2])
@@ -257,13 +277,13 @@ end
 -- rate-limits the current velocity towards the command over one step
 function Walk:update_velocity(v, stopping)
   local p = self.p
-  local T = self:step_time()
+  v = v or self.vel
+  local T = self:step_time(v)
   local c = self.cmd
   local tx, ty, ta = c[1], c[2], c[3]
   if stopping == nil then stopping = self.stopping end
   if stopping then tx, ty, ta = 0, 0, 0 end
   local acc = p.accLimit
-  v = v or self.vel
   v[1] = v[1] + clamp(tx - v[1], -acc[1] * T, acc[1] * T)
   v[2] = v[2] + clamp(ty - v[2], -acc[2] * T, acc[2] * T)
   v[3] = v[3] + clamp(ta - v[3], -acc[3] * T, acc[3] * T)
@@ -278,7 +298,6 @@ end
 
 function Walk:begin_step()
   local p = self.p
-  local T = self:step_time()
   self.uLeft1, self.uRight1 = self.uLeft2, self.uRight2
   self.uTorso1 = self.uTorso2
   -- a step ended early (step adjustment's touch-down): the next one starts from the COM's plan now
@@ -308,6 +327,7 @@ function Walk:begin_step()
   local ve = self.vel_eff
   ve[1], ve[2], ve[3] = v[1], v[2], v[3] + self.va_correction
   v = ve
+  local T = self:step_time(v)
   if self.support == LEFT then
     self.uRight2 = self:step_target(self.uLeft1, false, v)
     self.uLeft2 = self.uLeft1
@@ -420,7 +440,9 @@ function Walk:advance(dt)
       sw[3] = wrap(a1 + M.trapezoid(phs, ramp) * wrap(a2 - a1))
     end
     if self.step_hook then self.step_hook:swing(self, t) end
-    -- heading: turns at a constant rate over the whole step (no yaw jerk from the swing)
+    -- heading: turns at a constant rate over the whole step (no yaw jerk from the swing; a torso
+    -- that followed the feet's mean yaw, so that both hips share the swing foot's turn, measured
+    -- worse on the OP3: its stop and start in double support slipped the support foot)
     local a1 = wrap(self.uLeft1[3] + 0.5 * wrap(self.uRight1[3] - self.uLeft1[3]))
     local a2 = wrap(self.uLeft2[3] + 0.5 * wrap(self.uRight2[3] - self.uLeft2[3]))
     set3(self.uTorso, x, y, wrap(a1 + ph * wrap(a2 - a1)))
@@ -536,6 +558,23 @@ function Walk:bind(robot, files)
   return self
 end
 
+-- The hip yaw servos' lag made up: the command leads the plan by `hipYawLead` (s) x its rate (a
+-- first-order servo with time constant tau follows q + tau q' without lag), so that a turning swing
+-- foot lands turned as planned. Only while stepping (the IK's rate from the previous tick).
+function Walk:lead_hip_yaw(q, dt)
+  local lead = rawget(self.p, 'hipYawLead') or 0
+  local prev = self.hip_yaw_prev
+  if not prev then prev = {} self.hip_yaw_prev = prev end
+  for side = LEFT, RIGHT do
+    local i = self.legs[side][1]
+    local qi = q[i]
+    if lead > 0 and self.active and prev[side] and dt and dt > 0 then
+      q[i] = qi + lead * (qi - prev[side]) / dt
+    end
+    prev[side] = self.active and qi or nil
+  end
+end
+
 local function deadband(x, d)
   if x > d then return x - d elseif x < -d then return x + d end
   return 0
@@ -553,6 +592,7 @@ end
 function Walk:joint_angles(q, sensors, dt, support)
   local p = self.p
   local flags = self.model:legs_ik(self.lpose, self.rpose, q)
+  self:lead_hip_yaw(q, dt)
   -- arms: the posture by joint name (read live: Walk.set('arms.l.posture.l_el', 0.3) lands at once)
   local arms, larm, rarm = p.arms, self.arms.l, self.arms.r
   for side, arm in pairs(self.arms) do

@@ -45,13 +45,13 @@ function Preview:bind(robot, files)
   return self
 end
 
--- Samples per step: tStep rounded to whole ticks.
-function Preview:step_samples()
+-- Samples per step at velocity v (default: the walk's): the step's period rounded to whole ticks.
+function Preview:step_samples(v)
   assert(self.dt, 'walk_preview: the motion tick is unknown (bind() the walk to the robot)')
-  return max(1, floor(self.p.tStep / self.dt + 0.5))
+  return max(1, floor(walk.step_period(self.p, v or self.vel) / self.dt + 0.5))
 end
 
-function Preview:step_time() return self:step_samples() * self.dt end
+function Preview:step_time(v) return self:step_samples(v) * self.dt end
 
 -- A walk starts with a lead-in in double support: the first step is planned at once, to begin
 -- `preview.lead` s later, so that the COM can move before the ZMP must (without it, the first
@@ -162,7 +162,7 @@ end
 -- for (replanned only at the next step, a stop gave a 3 cm ZMP spike ahead of the feet).
 local function plan_ahead(self, k)
   local p = self.p
-  local n, last = self:step_samples(), self.next_k + self.K.N
+  local last = self.next_k + self.K.N
   local v = { self.vel[1], self.vel[2], self.vel[3] }
   local l, r, torso, support = self.uLeft2, self.uRight2, self.uTorso2, self.support
   local still_steps = self.steps_still or 0
@@ -175,6 +175,7 @@ local function plan_ahead(self, k)
     still_steps = still and still_steps + 1 or 0
     support = 1 - support
     local ve = { v[1], v[2], v[3] + self.va_correction }
+    local n = self:step_samples(ve)
     local s
     if support == LEFT then
       r = self:step_target(l, false, ve)

@@ -32,18 +32,28 @@ return {
   sole = { toe = 0.0635, heel = 0.0635, inner = 0.026 },
   footClearance = 0.01,      -- m
   stepHeight = 0.035,        -- m, swing foot lift
+  -- turning (Player/Motion/walk.lua step_target, step_period, lead_hip_yaw): the legs touch at the
+  -- hip roll links (op3.urdf's boxes) once the feet's relative yaw passes about 0.55 rad toed out or
+  -- 0.5 toed in (stepLimitA), and the feet turn by that much per step at most: so the closing foot
+  -- lands toed in by a step's turn (turnToeIn: the relative yaw swings about zero, not from zero to
+  -- twice it), and a fast turn takes shorter steps (turnStep: tStep from the walk's at va[1] rad/s
+  -- to this one at va[2]). hipYawLead: the XM430's lag made up (the sim's servo: time constant
+  -- 1 / 30 s from Config/common/actuators.lua, plus one 8 ms tick before a command acts)
+  turnToeIn = 1.0,
+  turnStep = { tStep = 0.2, va = { 1.5, 2.0 } },
+  hipYawLead = 0.041,        -- s
   swingYawRamp = 0.2,        -- the swing foot turns over all of single support, ramps of this fraction
   swingLead = 0.65,          -- fraction of single support in which the swing foot reaches its place
   swingDelay = 0.0,          -- fraction of single support the swing foot lifts before it moves
   -- velocity: limits and acceleration (per second)
   velLimitX = { -0.15, 0.40 },
   velLimitY = { -0.15, 0.15 },
-  velLimitA = { -1.8, 1.8 },
+  velLimitA = { -2.2, 2.2 },
   accLimit = { 0.4, 0.4, 2.0 },
   -- steps: swing foot relative to the support foot (y, a measured outward)
   stepLimitX = { -0.06, 0.11 },
   stepLimitY = { 0.08, 0.17 },
-  stepLimitA = { -0.05, 0.95 },
+  stepLimitA = { -0.5, 0.5 },  -- the legs' touch (turning, above)
   -- arms, by joint name (Player/Motion/walk.lua, kick.lua, states/falling.lua): each side's posture
   -- while standing, walking and kicking (the joints named here are the ones the walk drives), and
   -- the joints that turn the arm about the torso's y axis (`pitch`: arm swing, gyro feedback, the
