@@ -43,6 +43,23 @@ describe('preview walk engine', function()
     assert.matches("walk.lua: key 'engine' must be 'analytic' or 'preview', got 'fast'", err, 1, true)
   end)
 
+  it('turns fast in the shorter steps of turnStep, whole ticks each, with the same footsteps', function()
+    local function steps_of(engine)
+      local w, trace = run(engine, 0, 0, 2.0, 5)
+      local n, last = 0, trace[math.floor(3 / dt)].steps
+      for k = math.floor(3 / dt) + 1, math.floor(4 / dt) do
+        if trace[k].steps ~= last then n, last = n + 1, trace[k].steps end
+      end
+      return n, w
+    end
+    local p = fixture.params
+    local T = p.turnStep and p.turnStep.tStep or p.tStep
+    local n, w = steps_of('preview')
+    assert.is_near(1 / (math.floor(T / dt + 0.5) * dt), n, 1)
+    assert.is_near(math.floor(T / dt + 0.5) * dt, w:step_time({ 0, 0, 2.0 }), 1e-12)
+    assert.are.equal(steps_of('analytic'), n)
+  end)
+
   it('keeps the COM velocity continuous where the analytic engine jumps at step boundaries', function()
     local function worst_jump(engine)
       local _, trace = run(engine, 0.3, 0, 0, 4)

@@ -133,6 +133,63 @@ describe('walk', function()
     assert.is_true(s.max_com_speed < 0.6, 'COM speed ' .. s.max_com_speed)
   end)
 
+  it('turns fast in shorter steps, the feet\'s relative yaw swinging about zero within the step limits', function()
+    local p = copy(params)
+    p.turnToeIn, p.turnStep, p.stepLimitA = 1.0, { tStep = 0.2, va = { 1.5, 2.0 } }, { -0.5, 0.5 }
+    -- the step's period from the turning rate: the walk's below va[1], turnStep's above va[2]
+    assert.is_near(p.tStep, Walk.step_period(p, { 0.1, 0, 1.0 }), 1e-12)
+    assert.is_near(0.5 * (p.tStep + 0.2), Walk.step_period(p, { 0, 0, -1.75 }), 1e-12)
+    assert.is_near(0.2, Walk.step_period(p, { 0, 0, 2.4 }), 1e-12)
+    local w = Walk.new(p, model):bind(robot)
+    w:set_velocity(0, 0, 2.0)
+    w:start()
+    local lo, hi, steps, a0 = 0, 0, 0, nil
+    for k = 1, math.floor(4 / dt) do
+      w:advance(dt)
+      if k * dt > 2 then
+        if not a0 then a0, steps = w.uTorso[3], w.stats.steps end
+        local rel = Walk.pose_relative(w.uLeft2, w.uRight2)[3] -- the left foot's yaw against the right's
+        lo, hi = math.min(lo, rel), math.max(hi, rel)
+      end
+    end
+    -- steady at 2 rad/s: 0.2 s steps, the closing foot toed in as far as the opening one is out
+    assert.is_near(10, w.stats.steps - steps, 1)
+    assert.is_near(0.4, hi, 0.02)
+    assert.is_near(-0.4, lo, 0.02)
+    -- 2 s at 2 rad/s from a0 (the heading wraps: count whole turns through its sine and cosine)
+    local a = w.uTorso[3]
+    assert.is_near(math.cos(a0 + 4), math.cos(a), 0.1)
+    assert.is_near(math.sin(a0 + 4), math.sin(a), 0.1)
+  end)
+
+  it('leads the hip yaw command by hipYawLead x its rate while stepping', function()
+    local function walk_with(lead)
+      local p = copy(params)
+      p.hipYawLead = lead
+      local w = Walk.new(p, model):bind(robot)
+      w:set_velocity(0, 0, 1.0)
+      w:start()
+      local q, trace = {}, {}
+      for i = 1, #robot.joints do q[i] = 0 end
+      for _ = 1, 200 do
+        w:advance(dt)
+        w:joint_angles(q, nil, dt)
+        trace[#trace + 1] = { q[w.legs[Walk.LEFT][1]], q[w.legs[Walk.RIGHT][1]] }
+      end
+      return trace
+    end
+    local plain, led = walk_with(0), walk_with(0.04)
+    local moved = 0
+    for k = 2, #plain do
+      for side = 1, 2 do
+        local rate = (plain[k][side] - plain[k - 1][side]) / dt
+        assert.is_near(plain[k][side] + 0.04 * rate, led[k][side], 1e-9)
+        moved = math.max(moved, math.abs(rate))
+      end
+    end
+    assert.is_true(moved > 1, 'the hip yaws turned at ' .. moved .. ' rad/s')
+  end)
+
   it('takes parameter changes while walking', function()
     local p = copy(params)
     local w = Walk.new(p, model):bind(robot)
