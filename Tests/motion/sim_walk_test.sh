@@ -6,7 +6,7 @@
 # foot sends a ball (its centre 0.1 m ahead of the toe) far and the robot stays up; the README's
 # Body.set_head_command moves the head while walking, until Body.release. The speeds and
 # distances each body must reach: Tests/motion/targets.lua (OP3: forward >= 0.25 m/s, sideways and
-# backwards 0.1 m/s, turning 1 rad/s, kick >= 2 m). Each scenario runs in its own sim
+# backwards 0.1 m/s, turning 2 rad/s, kick >= 2 m). Each scenario runs in its own sim
 # (Tests/motion/sim_scenarios.lua prints TAP).
 #   [ROBOT=name] [SIM_SEED=N] Tests/motion/sim_walk_test.sh [SCENARIO...]   (the sim's seed, default 1)
 set -u
