@@ -218,7 +218,7 @@ function Walk:step_target(support_u, swing_left, v)
   -- turning: each step turns the swing foot by the turn of two steps against the support foot; the
   -- closing foot lands toed in by `turnToeIn` x a step's turn (the opening one opens that much less),
   -- so the feet's relative yaw swings about zero (the OP3's legs touch at the hips beyond about
-  -- 0.55 rad toed out and 0.45 toed in: opening from parallel alone met them at 1.1 rad/s)
+  -- 0.55 rad toed out and 0.5 toed in: opening from parallel alone met them at 1.1 rad/s)
   if v[3] ~= 0 then
     local closing = (rawget(p, 'turnToeIn') or 0) * v[3] * T
     da = (v[3] > 0) == swing_left and 2 * v[3] * T - closing or closing
@@ -553,9 +553,29 @@ function Walk:bind(robot, files)
     end
   end
   table.sort(self.arm_joints)
+  M.check_turning(self.p, files)
   self.qleg = {}
   self.pose_meas = {}
   return self
+end
+
+-- The turning keys of a walk config, when it has them (a bad one would only show as NaN steps):
+-- turnToeIn (0..1), turnStep = { tStep = s > 0, va = { lo, hi } rad/s, 0 <= lo < hi }, hipYawLead (s >= 0).
+function M.check_turning(p, files)
+  local function bad(key, what) error(string.format("%s: key '%s' must be %s", files, key, what), 3) end
+  local function num(x) return type(x) == 'number' and x == x and x ~= math.huge and x ~= -math.huge end
+  local k = rawget(p, 'turnToeIn')
+  if k ~= nil and not (num(k) and k >= 0 and k <= 1) then bad('turnToeIn', 'a number in 0..1') end
+  local lead = rawget(p, 'hipYawLead')
+  if lead ~= nil and not (num(lead) and lead >= 0) then bad('hipYawLead', 'a number of s >= 0') end
+  local ts = rawget(p, 'turnStep')
+  if ts ~= nil then
+    local va = type(ts) == 'table' and rawget(ts, 'va')
+    if not (type(ts) == 'table' and num(rawget(ts, 'tStep')) and ts.tStep > 0 and type(va) == 'table'
+        and num(va[1]) and num(va[2]) and va[1] >= 0 and va[2] > va[1]) then
+      bad('turnStep', '{ tStep = s > 0, va = { lo, hi } } rad/s with 0 <= lo < hi')
+    end
+  end
 end
 
 -- The hip yaw servos' lag made up: the command leads the plan by `hipYawLead` (s) x its rate (a
