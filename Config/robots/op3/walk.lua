@@ -32,14 +32,15 @@ return {
   sole = { toe = 0.0635, heel = 0.0635, inner = 0.026 },
   footClearance = 0.01,      -- m
   stepHeight = 0.035,        -- m, swing foot lift
-  -- turning (Player/Motion/walk.lua step_target, step_period, lead_hip_yaw): the legs touch (op3.urdf's
-  -- boxes: hip roll links, knees) once the feet's relative yaw passes 0.52 rad toed out or 0.41 toed
-  -- in at the stance's spacing (Tests/motion/hip_yaw_clearance.py; a toed-in foot lands wider, and
-  -- walking measured -0.50 .. +0.52): stepLimitA. The feet turn by that much per step at most: so the closing foot
-  -- lands toed in by a step's turn (turnToeIn: the relative yaw swings about zero, not from zero to
-  -- twice it), and a fast turn takes shorter steps (turnStep: tStep from the walk's at va[1] rad/s
-  -- to this one at va[2]). hipYawLead: the XM430's lag made up (the sim's servo: time constant
-  -- 1 / 30 s from Config/common/actuators.lua, plus one 8 ms tick before a command acts)
+  -- turning (Player/Motion/walk.lua step_target, step_period, lead_hip_yaw): the legs touch
+  -- (op3.urdf's boxes: hip roll links, knees) once the feet's relative yaw passes 0.52 rad toed out
+  -- or 0.41 toed in at the stance's spacing (Tests/motion/hip_yaw_clearance.py; a toed-in foot
+  -- lands wider, and walking measured -0.50 .. +0.52): stepLimitA. The feet turn by that much per
+  -- step at most: so the closing foot lands toed in by a step's turn (turnToeIn: the relative yaw
+  -- swings about zero, not from zero to twice it), and a fast turn takes shorter steps (turnStep:
+  -- tStep from the walk's at va[1] rad/s to this one at va[2]). hipYawLead: the XM430's lag made
+  -- up (the sim's servo: time constant 1 / 30 s from Config/common/actuators.lua, plus one 8 ms
+  -- tick before a command acts)
   turnToeIn = 1.0,
   turnStep = { tStep = 0.2, va = { 1.5, 2.0 } },
   hipYawLead = 0.041,        -- s
