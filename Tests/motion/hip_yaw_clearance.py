@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Where the legs of a body touch each other as the hip yaws turn (the self-collision the sim
-models between the URDF's collision boxes), at the body's stance (robot.lua's safe_pose): a map
+models between the URDF's collision boxes), at the walk's stance (the body's walk config through the leg IK): a map
 over each foot's toe-out (rad, positive = the toe turned outward), and the feet's relative yaw
 (the sum of both toe-outs) at which the legs first touch toed out and toed in with both hips
 turned alike -- the numbers behind a walk config's stepLimitA and turnToeIn.
@@ -12,11 +12,15 @@ import numpy as np
 
 cfg = json.loads(subprocess.check_output(['luajit', '-e', """
 local Config = require('Config')
-local r = Config.load('robot')
-local q = {}
-for k, v in pairs(r.safe_pose.q) do q[#q + 1] = string.format('"%s": %.17g', k, v) end
-print(string.format('{"urdf": "%s", "lleg": ["%s"], "rleg": ["%s"], "q": {%s}}', Config.robot_file(r.description),
-  table.concat(r.groups.lleg, '", "'), table.concat(r.groups.rleg, '", "'), table.concat(q, ', ')))"""]))
+local robot = Config.load('robot')
+local walk = require('Motion.walk').new(Config.load('walk'), require('kinematics').load()):bind(robot)
+walk:advance(robot.period)
+local q, out = {}, {}
+for i = 1, #robot.joints do q[i] = 0 end
+walk:joint_angles(q, nil, robot.period)
+for i, name in ipairs(robot.joints) do out[#out + 1] = string.format('"%s": %.17g', name, q[i]) end
+print(string.format('{"urdf": "%s", "lleg": ["%s"], "rleg": ["%s"], "q": {%s}}', Config.robot_file(robot.description),
+  table.concat(robot.groups.lleg, '", "'), table.concat(robot.groups.rleg, '", "'), table.concat(out, ', ')))"""]))
 urdf = ET.parse(cfg['urdf']).getroot()
 
 

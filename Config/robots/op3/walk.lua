@@ -34,7 +34,7 @@ return {
   stepHeight = 0.035,        -- m, swing foot lift
   -- turning (Player/Motion/walk.lua step_target, step_period, lead_hip_yaw): the legs touch
   -- (op3.urdf's boxes: hip roll links, knees) once the feet's relative yaw passes 0.52 rad toed out
-  -- or 0.41 toed in at the stance's spacing (Tests/motion/hip_yaw_clearance.py; a toed-in foot
+  -- or 0.45 toed in at the stance's spacing (Tests/motion/hip_yaw_clearance.py; a toed-in foot
   -- lands wider, and walking measured -0.50 .. +0.52): stepLimitA. The feet turn by that much per
   -- step at most: so the closing foot lands toed in by a step's turn (turnToeIn: the relative yaw
   -- swings about zero, not from zero to twice it), and a fast turn takes shorter steps (turnStep:
