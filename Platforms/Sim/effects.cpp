@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <random>
 #include <stdexcept>
 
 namespace sim {
@@ -103,8 +102,6 @@ double phase(uint64_t seed, int self, int k) {
   return (double)(z >> 11) / (double)(1ull << 53) * 2 * M_PI;
 }
 
-inline uint8_t sat(int y) { return (uint8_t)(y < 0 ? 0 : (y > 255 ? 255 : y)); }
-
 }  // namespace
 
 void realism_drift(const Realism &r, uint64_t seed, int self, double t, double *gain, double *wb_red,
@@ -117,101 +114,6 @@ void realism_drift(const Realism &r, uint64_t seed, int self, double t, double *
   *gain = drift(0, r.gain_drift);
   *wb_red = drift(2, r.wb_drift);
   *wb_blue = drift(4, r.wb_drift);
-}
-
-Developer::Developer(uint64_t seed) {
-  std::mt19937_64 rng(seed ^ 0x5851f42d4c957f2dull);
-  std::normal_distribution<double> n(0, 16);
-  noise_.resize(65536);
-  for (int8_t &x : noise_) x = (int8_t)std::max(-127.0, std::min(127.0, std::round(n(rng))));
-  noise_.resize(65536 + kExtra);
-  std::copy(noise_.begin(), noise_.begin() + kExtra, noise_.begin() + 65536);
-}
-
-void Developer::run(const Develop &d, const uint8_t *src, int W, int H, uint8_t *out) const {
-  const int32_t *map = d.map ? d.map->src.data() : nullptr;
-  const int n = std::max(1, std::min(Develop::kMaxTaps, d.taps));
-  // 1. geometry: each pixel from its scratch pixel (the lens's map) averaged over the blur's taps
-  if (n == 1 && !map) {
-    if (out != src) memcpy(out, src, (size_t)W * H * 2);
-  } else if (n == 1) {
-    for (int v = 0; v < H; v++) {
-      uint8_t *row = out + (size_t)v * W * 2;
-      const int32_t *mrow = map + (size_t)v * W;
-      for (int u = 0; u < W; u += 2) {
-        const int sa = mrow[u], sb = mrow[u + 1];   // byte offsets of the lumas
-        const uint8_t *c = src + (sa & ~3);         // the pair of the first (the scratch's width is even)
-        uint8_t *q = row + 2 * u;
-        q[0] = src[sa];
-        q[1] = c[1];
-        q[2] = src[sb];
-        q[3] = c[3];
-      }
-    }
-  } else {
-    for (int v = 0; v < H; v++) {
-      uint8_t *row = out + (size_t)v * W * 2;
-      // the taps' rows and, for the pixels whose taps all stay inside the row, no clamping
-      int vrow[Develop::kMaxTaps], lo = 0, hi = W - 2;
-      for (int k = 0; k < n; k++) {
-        vrow[k] = std::min(H - 1, std::max(0, v + d.dy[k])) * W;
-        lo = std::max(lo, -d.dx[k]);
-        hi = std::min(hi, W - 2 - d.dx[k]);
-      }
-      for (int u = 0; u < W; u += 2) {
-        int y0 = 0, y1 = 0, us = 0, vs = 0;
-        const bool inside = u >= lo && u <= hi;
-        for (int k = 0; k < n; k++) {
-          int oa = vrow[k] + u + d.dx[k], ob = oa + 1;   // pixel indices
-          if (!inside) {
-            oa = vrow[k] + std::min(W - 1, std::max(0, u + d.dx[k]));
-            ob = vrow[k] + std::min(W - 1, std::max(0, u + 1 + d.dx[k]));
-          }
-          const int sa = map ? map[oa] : 2 * oa, sb = map ? map[ob] : 2 * ob;
-          y0 += src[sa];
-          y1 += src[sb];
-          const uint8_t *c = src + (sa & ~3);
-          us += c[1];
-          vs += c[3];
-        }
-        uint8_t *q = row + 2 * u;
-        q[0] = (uint8_t)((y0 + n / 2) / n);
-        q[1] = (uint8_t)((us + n / 2) / n);
-        q[2] = (uint8_t)((y1 + n / 2) / n);
-        q[3] = (uint8_t)((vs + n / 2) / n);
-      }
-    }
-  }
-  // 2. light: exposure gain, white balance, noise, in place, through tables. A gain g_r on red moves
-  // V - 128 = 0.713 (R - Y) to (V - 128) (1 + (g_r - 1)) + (g_r - 1) 0.713 Y (Y's own change, 0.30
-  // and 0.11 of it, left to the exposure gain); U likewise with g_b and 0.564; then all times g.
-  const bool plain = d.gain == 1 && d.wb_red == 1 && d.wb_blue == 1 && d.noise_luma == 0 && d.noise_chroma == 0;
-  if (plain) return;
-  int ty[256], tu[256], tv[256], tyu[256], tyv[256], ky[256];
-  for (int x = 0; x < 256; x++) {
-    ty[x] = (int)std::lround(x * d.gain);
-    tu[x] = (int)std::lround((x - 128) * d.gain * d.wb_blue);
-    tv[x] = (int)std::lround((x - 128) * d.gain * d.wb_red);
-    tyu[x] = (int)std::lround(x * d.gain * (d.wb_blue - 1) * 0.564);
-    tyv[x] = (int)std::lround(x * d.gain * (d.wb_red - 1) * 0.713);
-    // noise: the table's N(0, 16^2) times sigma / 16 (x 256); luma with shot noise, sigma ~ sqrt(Y / 128)
-    ky[x] = (int)std::lround(256.0 * d.noise_luma * std::sqrt(std::max(x, 8) / 128.0) / 16);
-  }
-  const int kc = (int)std::lround(256.0 * d.noise_chroma / 16);
-  const int8_t *nt = noise_.data();
-  static const int8_t zero_row[kExtra] = {0};
-  for (int v = 0; v < H; v++) {
-    uint8_t *q = out + (size_t)v * W * 2;
-    const int8_t *nr = W * 2 <= kExtra ? nt + (((uint32_t)v * W * 2 + d.noise_offset) & 0xffff) : zero_row;
-    for (int u = 0; u < 2 * W; u += 4, q += 4) {
-      const int y0 = ty[q[0]], y1 = ty[q[2]], ym = (q[0] + q[2]) >> 1;
-      const int cu = tu[q[1]] + tyu[ym], cv = tv[q[3]] + tyv[ym];
-      q[0] = sat(y0 + ((nr[u] * ky[sat(y0)]) >> 8));
-      q[1] = sat(128 + cu + ((nr[u + 1] * kc) >> 8));
-      q[2] = sat(y1 + ((nr[u + 2] * ky[sat(y1)]) >> 8));
-      q[3] = sat(128 + cv + ((nr[u + 3] * kc) >> 8));
-    }
-  }
 }
 
 }  // namespace sim

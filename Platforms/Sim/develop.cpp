@@ -1,0 +1,325 @@
+// develop: Developer::run (effects.h), the per-frame development of the renderer's scratch into the
+// camera's frame: the lens's map and the motion blur's samples, then the gains, white balance and
+// noise. Row by row through a row buffer that stays in the cache. SSE2 where the machine has it; the
+// portable loops do the same integer arithmetic (the same pixels either way), so a seed's frames do
+// not depend on the build.
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <random>
+#include <stdexcept>
+#include <string>
+
+#include "effects.h"
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
+
+namespace sim {
+
+namespace {
+
+inline uint8_t sat(int y) { return (uint8_t)(y < 0 ? 0 : (y > 255 ? 255 : y)); }
+
+// The light of a frame in fixed point (1 << kShift is 1): luma Y' = Y g; a gain g_r on red moves
+// V - 128 = 0.713 (R - Y) to (V - 128) g_r + (g_r - 1) 0.713 Y (Y's own change, 0.30 and 0.11 of it,
+// left to the exposure gain), U likewise with g_b and 0.564; then all times g. The noise: the
+// table's N(0, 16^2) times sigma / 16, luma with shot noise (sigma ~ sqrt(Y / 128)).
+constexpr int kShift = 13, kHalf = 1 << (kShift - 1);
+struct Tone {
+  int gy, gu, gyu, gv, gyv;   // x (1 << kShift)
+  float ky;                   // luma noise x 256 at Y = 128
+  int kc;                     // chroma noise x 256
+};
+
+Tone tone_of(const Develop &d) {
+  auto fix = [](double x, const char *what) {
+    const long k = std::lround(x * (1 << kShift));
+    if (k < -32768 || k > 32767) {
+      throw std::runtime_error(std::string("develop: the ") + what + " coefficient " + std::to_string(x) +
+                               " is outside the 16-bit fixed point's range (|x| < 4)");
+    }
+    return (int)k;
+  };
+  Tone t;
+  t.gy = fix(d.gain, "gain");
+  t.gu = fix(d.gain * d.wb_blue, "blue gain");
+  t.gyu = fix(d.gain * (d.wb_blue - 1) * 0.564, "blue balance");
+  t.gv = fix(d.gain * d.wb_red, "red gain");
+  t.gyv = fix(d.gain * (d.wb_red - 1) * 0.713, "red balance");
+  if (!(d.noise_luma >= 0 && d.noise_luma <= 60 && d.noise_chroma >= 0 && d.noise_chroma <= 60)) {
+    throw std::runtime_error("develop: noise " + std::to_string(d.noise_luma) + " / " + std::to_string(d.noise_chroma) +
+                             " outside 0..60 grey levels");
+  }
+  t.ky = (float)(256.0 * d.noise_luma / 16);
+  t.kc = (int)std::lround(256.0 * d.noise_chroma / 16);
+  return t;
+}
+
+// Luma noise scale (x 256) at the lit luma yy (0..255): float steps the SSE2 path repeats exactly
+// (IEEE single, rounded to nearest even as cvtps does; no sum, so nothing to fuse).
+inline int luma_k(const Tone &t, int yy) {
+  return (int)std::lrintf(std::sqrt((float)std::max(yy, 8) * (1.0f / 128)) * t.ky);
+}
+
+// One row of W pixels (W even) through the light: in and out may be the same. nr: the noise bytes
+// beside the row's bytes (luma under luma, chroma under chroma).
+void light_row(const Tone &t, const uint8_t *in, uint8_t *out, int W, const int8_t *nr) {
+  int u = 0;
+#ifdef __SSE2__
+  const __m128i low = _mm_set1_epi16(0x00ff), even = _mm_set1_epi32(0x0000ffff), zero = _mm_setzero_si128();
+  const __m128i k128 = _mm_set1_epi16(128), k255 = _mm_set1_epi16(255), half = _mm_set1_epi32(kHalf);
+  const __m128i cy = _mm_set1_epi32((int)((uint32_t)kHalf << 16 | (uint16_t)t.gy));   // (gy, half)
+  const __m128i cc = _mm_setr_epi16((short)t.gu, (short)t.gyu, (short)t.gv, (short)t.gyv, (short)t.gu, (short)t.gyu,
+                                    (short)t.gv, (short)t.gyv);
+  const __m128i one = _mm_set1_epi32(0x00010000), kc = _mm_set1_epi16((short)t.kc), hi8 = _mm_set1_epi16((short)0xff00);
+  const __m128 inv128 = _mm_set1_ps(1.0f / 128), eight = _mm_set1_ps(8.0f), ky = _mm_set1_ps(t.ky);
+  for (; u + 8 <= W; u += 8) {
+    const __m128i px = _mm_loadu_si128((const __m128i *)(in + 2 * u));
+    const __m128i Y = _mm_and_si128(px, low);           // 8 lumas
+    const __m128i C = _mm_srli_epi16(px, 8);            // U V U V ...
+    // the mean luma of each pair in both of its lanes
+    __m128i ym = _mm_and_si128(_mm_srli_epi16(_mm_add_epi16(Y, _mm_srli_epi32(Y, 16)), 1), even);
+    ym = _mm_or_si128(ym, _mm_slli_epi32(ym, 16));
+    const __m128i x = _mm_sub_epi16(C, k128);
+    const __m128i c = _mm_packs_epi32(
+        _mm_srai_epi32(_mm_add_epi32(_mm_madd_epi16(_mm_unpacklo_epi16(x, ym), cc), half), kShift),
+        _mm_srai_epi32(_mm_add_epi32(_mm_madd_epi16(_mm_unpackhi_epi16(x, ym), cc), half), kShift));
+    // Y gy + half as (Y, 1) . (gy, half)
+    const __m128i y = _mm_packs_epi32(_mm_srai_epi32(_mm_madd_epi16(_mm_or_si128(_mm_unpacklo_epi16(Y, zero), one), cy), kShift),
+                                      _mm_srai_epi32(_mm_madd_epi16(_mm_or_si128(_mm_unpackhi_epi16(Y, zero), one), cy), kShift));
+    const __m128i yy = _mm_max_epi16(_mm_min_epi16(y, k255), zero);
+    auto k4 = [&](__m128i y32) {
+      const __m128 f = _mm_max_ps(_mm_cvtepi32_ps(y32), eight);
+      return _mm_cvtps_epi32(_mm_mul_ps(_mm_sqrt_ps(_mm_mul_ps(f, inv128)), ky));
+    };
+    const __m128i kyv = _mm_packs_epi32(k4(_mm_unpacklo_epi16(yy, zero)), k4(_mm_unpackhi_epi16(yy, zero)));
+    const __m128i nb = _mm_loadu_si128((const __m128i *)(nr + 2 * u));
+    // noise n x 256 in each lane: mulhi gives (n 256 k) >> 16 = (n k) >> 8
+    const __m128i yo = _mm_add_epi16(y, _mm_mulhi_epi16(_mm_slli_epi16(nb, 8), kyv));
+    const __m128i co = _mm_add_epi16(_mm_add_epi16(c, k128), _mm_mulhi_epi16(_mm_and_si128(nb, hi8), kc));
+    const __m128i ys = _mm_max_epi16(_mm_min_epi16(yo, k255), zero), cs = _mm_max_epi16(_mm_min_epi16(co, k255), zero);
+    _mm_storeu_si128((__m128i *)(out + 2 * u), _mm_or_si128(ys, _mm_slli_epi16(cs, 8)));
+  }
+#endif
+  for (; u < W; u += 2) {
+    const uint8_t *p = in + 2 * u;
+    uint8_t *q = out + 2 * u;
+    const int8_t *n = nr + 2 * u;
+    const int ym = (p[0] + p[2]) >> 1;
+    const int y0 = (p[0] * t.gy + kHalf) >> kShift, y1 = (p[2] * t.gy + kHalf) >> kShift;
+    const int cu = ((p[1] - 128) * t.gu + ym * t.gyu + kHalf) >> kShift;
+    const int cv = ((p[3] - 128) * t.gv + ym * t.gyv + kHalf) >> kShift;
+    q[0] = sat(y0 + ((n[0] * 256 * luma_k(t, sat(y0))) >> 16));
+    q[1] = sat(128 + cu + ((n[1] * 256 * t.kc) >> 16));
+    q[2] = sat(y1 + ((n[2] * 256 * luma_k(t, sat(y1))) >> 16));
+    q[3] = sat(128 + cv + ((n[3] * 256 * t.kc) >> 16));
+  }
+}
+
+// One row through the lens's map alone (no blur): each pixel's luma from its scratch pixel, the
+// pair's chroma from the first one's pair.
+void lens_row(const uint8_t *src, const int32_t *mrow, int W, uint8_t *row) {
+  for (int u = 0; u < W; u += 2) {
+    const int sa = mrow[u], sb = mrow[u + 1];   // byte offsets of the lumas
+    const uint8_t *c = src + (sa & ~3);         // the pair of the first (the scratch's width is even)
+    uint8_t *q = row + 2 * u;
+    q[0] = src[sa];
+    q[1] = c[1];
+    q[2] = src[sb];
+    q[3] = c[3];
+  }
+}
+
+#ifndef __SSE2__
+// One row of the blur, sample by sample: each pixel the rounded mean of its samples through the map
+// (clamped at the frame's edges), the pair's chroma that of its first pixel's samples.
+void blur_row(const Develop &d, int n, const uint8_t *src, const int32_t *map, int W, int H, int v, uint8_t *row) {
+  int vrow[Develop::kMaxTaps], lo = 0, hi = W - 2;
+  for (int k = 0; k < n; k++) {
+    vrow[k] = std::min(H - 1, std::max(0, v + d.dy[k])) * W;
+    lo = std::max(lo, -d.dx[k]);
+    hi = std::min(hi, W - 2 - d.dx[k]);
+  }
+  for (int u = 0; u < W; u += 2) {
+    int y0 = 0, y1 = 0, us = 0, vs = 0;
+    const bool inside = u >= lo && u <= hi;
+    for (int k = 0; k < n; k++) {
+      int oa = vrow[k] + u + d.dx[k], ob = oa + 1;   // pixel indices
+      if (!inside) {
+        oa = vrow[k] + std::min(W - 1, std::max(0, u + d.dx[k]));
+        ob = vrow[k] + std::min(W - 1, std::max(0, u + 1 + d.dx[k]));
+      }
+      const int sa = map ? map[oa] : 2 * oa, sb = map ? map[ob] : 2 * ob;
+      y0 += src[sa];
+      y1 += src[sb];
+      const uint8_t *c = src + (sa & ~3);
+      us += c[1];
+      vs += c[3];
+    }
+    uint8_t *q = row + 2 * u;
+    q[0] = (uint8_t)((y0 + n / 2) / n);
+    q[1] = (uint8_t)((us + n / 2) / n);
+    q[2] = (uint8_t)((y1 + n / 2) / n);
+    q[3] = (uint8_t)((vs + n / 2) / n);
+  }
+}
+#else
+// The blur on planes: Y, U and V of every frame pixel through the map (U and V those of its scratch
+// pixel's pair), each row padded by P copies of its edge pixels on both sides, so that the samples
+// (|dx| <= P) read whole rows without clamping; then each output row sums its samples' rows 16
+// pixels at a time. The same pixels as the sample by sample loop.
+struct Planes {
+  int W = 0, H = 0, P = 0, stride = 0;
+  std::vector<uint8_t> y, u, v;
+  void fill(const uint8_t *src, const int32_t *map, int W_, int H_, int P_) {
+    W = W_;
+    H = H_;
+    P = P_;
+    stride = W + 2 * P;
+    const size_t size = (size_t)stride * H;
+    if (y.size() < size) {
+      y.resize(size);
+      u.resize(size);
+      v.resize(size);
+    }
+    for (int r = 0; r < H; r++) {
+      uint8_t *py = y.data() + (size_t)r * stride + P, *pu = u.data() + (size_t)r * stride + P,
+              *pv = v.data() + (size_t)r * stride + P;
+      const int32_t *mrow = map ? map + (size_t)r * W : nullptr;
+      for (int i = 0; i < W; i++) {
+        const int s = mrow ? mrow[i] : 2 * (r * W + i);
+        const uint8_t *c = src + (s & ~3);
+        py[i] = src[s];
+        pu[i] = c[1];
+        pv[i] = c[3];
+      }
+      for (uint8_t *p : {py, pu, pv}) {
+        memset(p - P, p[0], P);
+        memset(p + W, p[W - 1], P);
+      }
+    }
+  }
+};
+
+void blur_row(const Develop &d, int n, const Planes &pl, int v, uint8_t *row) {
+  const uint8_t *ry[Develop::kMaxTaps], *ru[Develop::kMaxTaps], *rv[Develop::kMaxTaps];
+  for (int k = 0; k < n; k++) {
+    const size_t off = (size_t)std::min(pl.H - 1, std::max(0, v + d.dy[k])) * pl.stride + pl.P + d.dx[k];
+    ry[k] = pl.y.data() + off;
+    ru[k] = pl.u.data() + off;
+    rv[k] = pl.v.data() + off;
+  }
+  // (s + n / 2) / n as ((s + n / 2) M) >> 16, M = 65536 / n + 1: exact for every s <= 8 * 255 + 4
+  // (tests/sim_realism.cpp checks it)
+  const __m128i m = _mm_set1_epi16((short)(uint16_t)(65536 / n + 1)), h = _mm_set1_epi16((short)(n / 2));
+  const __m128i zero = _mm_setzero_si128(), even = _mm_set1_epi32(0x0000ffff);
+  const int W = pl.W;
+  int u = 0;
+  for (; u + 16 <= W; u += 16) {
+    __m128i y0 = zero, y1 = zero, u0 = zero, u1 = zero, v0 = zero, v1 = zero;
+    for (int k = 0; k < n; k++) {
+      const __m128i a = _mm_loadu_si128((const __m128i *)(ry[k] + u));
+      const __m128i b = _mm_loadu_si128((const __m128i *)(ru[k] + u));
+      const __m128i c = _mm_loadu_si128((const __m128i *)(rv[k] + u));
+      y0 = _mm_add_epi16(y0, _mm_unpacklo_epi8(a, zero));
+      y1 = _mm_add_epi16(y1, _mm_unpackhi_epi8(a, zero));
+      u0 = _mm_add_epi16(u0, _mm_unpacklo_epi8(b, zero));
+      u1 = _mm_add_epi16(u1, _mm_unpackhi_epi8(b, zero));
+      v0 = _mm_add_epi16(v0, _mm_unpacklo_epi8(c, zero));
+      v1 = _mm_add_epi16(v1, _mm_unpackhi_epi8(c, zero));
+    }
+    auto mean = [&](__m128i s) { return _mm_mulhi_epu16(_mm_add_epi16(s, h), m); };
+    // YUYV: each pair's U and V from its first pixel's samples
+    auto pack = [&](__m128i ys, __m128i us, __m128i vs) {
+      const __m128i c = _mm_or_si128(_mm_and_si128(mean(us), even), _mm_slli_epi32(mean(vs), 16));
+      return _mm_or_si128(mean(ys), _mm_slli_epi16(c, 8));
+    };
+    _mm_storeu_si128((__m128i *)(row + 2 * u), pack(y0, u0, v0));
+    _mm_storeu_si128((__m128i *)(row + 2 * u + 16), pack(y1, u1, v1));
+  }
+  for (; u < W; u += 2) {
+    int y0 = 0, y1 = 0, us = 0, vs = 0;
+    for (int k = 0; k < n; k++) {
+      y0 += ry[k][u];
+      y1 += ry[k][u + 1];
+      us += ru[k][u];
+      vs += rv[k][u];
+    }
+    uint8_t *q = row + 2 * u;
+    q[0] = (uint8_t)((y0 + n / 2) / n);
+    q[1] = (uint8_t)((us + n / 2) / n);
+    q[2] = (uint8_t)((y1 + n / 2) / n);
+    q[3] = (uint8_t)((vs + n / 2) / n);
+  }
+}
+#endif
+
+}  // namespace
+
+Developer::Developer(uint64_t seed) {
+  std::mt19937_64 rng(seed ^ 0x5851f42d4c957f2dull);
+  std::normal_distribution<double> n(0, 16);
+  noise_.resize(65536);
+  for (int8_t &x : noise_) x = (int8_t)std::max(-127.0, std::min(127.0, std::round(n(rng))));
+  noise_.resize(65536 + kExtra);
+  std::copy(noise_.begin(), noise_.begin() + kExtra, noise_.begin() + 65536);
+}
+
+void Developer::run(const Develop &d, const uint8_t *src, int W, int H, uint8_t *out) const {
+  const int32_t *map = d.map ? d.map->src.data() : nullptr;
+  const int n = std::max(1, std::min(Develop::kMaxTaps, d.taps));
+  const bool plain = d.gain == 1 && d.wb_red == 1 && d.wb_blue == 1 && d.noise_luma == 0 && d.noise_chroma == 0;
+  if (plain && n == 1 && !map) {
+    if (out != src) memcpy(out, src, (size_t)W * H * 2);
+    return;
+  }
+  Tone t{};
+  if (!plain) t = tone_of(d);
+  static const int8_t zero_row[kExtra] = {0};
+  thread_local std::vector<uint8_t> row_buf;
+  row_buf.resize((size_t)W * 2);
+#ifdef __SSE2__
+  thread_local Planes planes;
+  if (n > 1) {
+    // a sample farther than the frame's width reads its edge, as one at the width does
+    int P = 0;
+    for (int k = 0; k < n; k++) P = std::max(P, std::min(W - 1, std::abs(d.dx[k])));
+    Develop dc = d;
+    for (int k = 0; k < n; k++) dc.dx[k] = std::max(-P, std::min(P, d.dx[k]));
+    planes.fill(src, map, W, H, P);
+    for (int v = 0; v < H; v++) {
+      uint8_t *row = out + (size_t)v * W * 2;
+      blur_row(dc, n, planes, v, plain ? row : row_buf.data());
+      if (!plain) {
+        const int8_t *nr = W * 2 <= kExtra ? noise_.data() + (((uint32_t)v * W * 2 + d.noise_offset) & 0xffff) : zero_row;
+        light_row(t, row_buf.data(), row, W, nr);
+      }
+    }
+    return;
+  }
+#endif
+  for (int v = 0; v < H; v++) {
+    uint8_t *row = out + (size_t)v * W * 2;
+    // 1. geometry: the scratch's pixels through the lens's map and the blur's samples
+    const uint8_t *g = src + (size_t)v * W * 2;   // no map, no blur: the scratch is the frame
+    uint8_t *geo = plain ? row : row_buf.data();
+#ifndef __SSE2__
+    if (n > 1) {
+      blur_row(d, n, src, map, W, H, v, geo);
+      g = geo;
+    } else
+#endif
+    if (map) {
+      lens_row(src, map + (size_t)v * W, W, geo);
+      g = geo;
+    }
+    // 2. light: exposure gain, white balance, noise
+    if (!plain) {
+      const int8_t *nr = W * 2 <= kExtra ? noise_.data() + (((uint32_t)v * W * 2 + d.noise_offset) & 0xffff) : zero_row;
+      light_row(t, g, row, W, nr);
+    }
+  }
+}
+
+}  // namespace sim
