@@ -323,9 +323,15 @@ void Renderer::ground(const Camera &c, const Look &look, uint8_t *img) const {
         for (int u0 = a; u0 < ub; u0 += 8) {
           const int u1 = std::min(u0 + 8, ub);
           const int l1 = light(u1);
-          const int step = ((l1 - l0) << 16) / (u1 - u0);   // 16.16 fixed point
-          int l = l0 << 16;
-          for (int k = u0 + 1; k <= u1; k++) lt[k] = (l += step) >> 16;
+          if (u1 - u0 == 8) {
+            // the 16.16 step (l1 - l0) 65536 / 8 below is exact here: the same values without a division
+            const int dl = l1 - l0;
+            for (int k = 1; k <= 8; k++) lt[u0 + k] = l0 + ((k * dl) >> 3);
+          } else {
+            const int step = (l1 - l0) * 65536 / (u1 - u0);   // 16.16 fixed point
+            int l = l0 * 65536;
+            for (int k = u0 + 1; k <= u1; k++) lt[k] = (l += step) >> 16;
+          }
           l0 = l1;
         }
       }
