@@ -117,17 +117,41 @@ void light_row(const Tone &t, const uint8_t *in, uint8_t *out, int W, const int8
   }
 }
 
-// One row through the lens's map alone (no blur): each pixel's luma from its scratch pixel, the
-// pair's chroma from the first one's pair.
-void lens_row(const uint8_t *src, const int32_t *mrow, int W, uint8_t *row) {
-  for (int u = 0; u < W; u += 2) {
-    const int sa = mrow[u], sb = mrow[u + 1];   // byte offsets of the lumas
-    const uint8_t *c = src + (sa & ~3);         // the pair of the first (the scratch's width is even)
-    uint8_t *q = row + 2 * u;
-    q[0] = src[sa];
-    q[1] = c[1];
-    q[2] = src[sb];
-    q[3] = c[3];
+// Bytes p[j ^ 1] for j < n (n even): each byte pair swapped.
+void swap_copy(const uint8_t *p, int n, uint8_t *q) {
+  int j = 0;
+#ifdef __SSE2__
+  for (; j + 16 <= n; j += 16) {
+    const __m128i x = _mm_loadu_si128((const __m128i *)(p + j));
+    _mm_storeu_si128((__m128i *)(q + j), _mm_or_si128(_mm_slli_epi16(x, 8), _mm_srli_epi16(x, 8)));
+  }
+#endif
+  for (; j < n; j++) q[j] = p[j ^ 1];
+}
+
+// Row v through the lens's map alone (no blur): each pixel's luma from its scratch pixel, the pair's
+// chroma from the first one's pair. A regular run (LensMap::Run) is a copy: of whole scratch pairs
+// where it starts on an even scratch pixel, else of the bytes from the pair's U on, each byte pair
+// swapped (Y0 U Y1 V of the frame are Y U' Y' V' of the scratch's U'' Y U' Y' V' from one pair on).
+void lens_row(const uint8_t *src, const LensMap &m, int v, int W, uint8_t *row) {
+  const int32_t *mrow = m.src.data() + (size_t)v * W;
+  for (int k = m.row_runs[v]; k < m.row_runs[v + 1]; k++) {
+    const LensMap::Run &r = m.runs[k];
+    const int s = mrow[r.u];
+    uint8_t *q = row + 2 * r.u;
+    if (r.regular) {
+      if ((s & 3) == 0) memcpy(q, src + s, (size_t)4 * r.pairs);
+      else swap_copy(src + s - 1, 4 * r.pairs, q);
+      continue;
+    }
+    for (int u = r.u; u < r.u + 2 * r.pairs; u += 2, q += 4) {
+      const int sa = mrow[u], sb = mrow[u + 1];   // byte offsets of the lumas
+      const uint8_t *c = src + (sa & ~3);         // the pair of the first (the scratch's width is even)
+      q[0] = src[sa];
+      q[1] = c[1];
+      q[2] = src[sb];
+      q[3] = c[3];
+    }
   }
 }
 
@@ -172,7 +196,9 @@ void blur_row(const Develop &d, int n, const uint8_t *src, const int32_t *map, i
 struct Planes {
   int W = 0, H = 0, P = 0, stride = 0;
   std::vector<uint8_t> y, u, v;
-  void fill(const uint8_t *src, const int32_t *map, int W_, int H_, int P_) {
+  // the scratch's planes (its own size; with a map), each pixel's U and V those of its pair
+  std::vector<uint8_t> sy, su, sv;
+  void fill(const uint8_t *src, const LensMap *map, int W_, int H_, int P_) {
     W = W_;
     H = H_;
     P = P_;
@@ -183,21 +209,76 @@ struct Planes {
       u.resize(size);
       v.resize(size);
     }
-    for (int r = 0; r < H; r++) {
-      uint8_t *py = y.data() + (size_t)r * stride + P, *pu = u.data() + (size_t)r * stride + P,
-              *pv = v.data() + (size_t)r * stride + P;
-      const int32_t *mrow = map ? map + (size_t)r * W : nullptr;
-      for (int i = 0; i < W; i++) {
-        const int s = mrow ? mrow[i] : 2 * (r * W + i);
-        const uint8_t *c = src + (s & ~3);
-        py[i] = src[s];
-        pu[i] = c[1];
-        pv[i] = c[3];
+    if (!map) {
+      for (int r = 0; r < H; r++) {
+        const size_t o = (size_t)r * stride + P;
+        split(src + (size_t)r * W * 2, W, &y[o], &u[o], &v[o]);
       }
-      for (uint8_t *p : {py, pu, pv}) {
+    } else {
+      const int SW = map->width, SH = map->height;
+      if (sy.size() < (size_t)SW * SH) {
+        sy.resize((size_t)SW * SH);
+        su.resize(sy.size());
+        sv.resize(sy.size());
+      }
+      for (int r = 0; r < SH; r++) {
+        const size_t o = (size_t)r * SW;
+        split(src + o * 2, SW, &sy[o], &su[o], &sv[o]);
+      }
+      // the frame's planes: the runs copied, the rest pixel by pixel
+      for (int r = 0; r < H; r++) {
+        const size_t o = (size_t)r * stride + P;
+        const int32_t *mrow = map->src.data() + (size_t)r * W;
+        for (int k = map->row_runs[r]; k < map->row_runs[r + 1]; k++) {
+          const LensMap::Run &run = map->runs[k];
+          if (run.regular) {
+            const size_t s = mrow[run.u] / 2, n = 2 * run.pairs;
+            memcpy(&y[o + run.u], &sy[s], n);
+            memcpy(&u[o + run.u], &su[s], n);
+            memcpy(&v[o + run.u], &sv[s], n);
+            continue;
+          }
+          for (int i = run.u; i < run.u + 2 * run.pairs; i++) {
+            const int s = mrow[i] / 2;
+            y[o + i] = sy[s];
+            u[o + i] = su[s];
+            v[o + i] = sv[s];
+          }
+        }
+      }
+    }
+    for (int r = 0; r < H; r++) {
+      for (uint8_t *p : {&y[(size_t)r * stride + P], &u[(size_t)r * stride + P], &v[(size_t)r * stride + P]}) {
         memset(p - P, p[0], P);
         memset(p + W, p[W - 1], P);
       }
+    }
+  }
+  // n pixels (even) of YUYV into Y, U, V planes, each pair's chroma to both of its pixels
+  static void split(const uint8_t *p, int n, uint8_t *py, uint8_t *pu, uint8_t *pv) {
+    const __m128i low = _mm_set1_epi16(0x00ff), even = _mm_set1_epi32(0x0000ffff);
+    int i = 0;
+    for (; i + 16 <= n; i += 16) {
+      const __m128i a = _mm_loadu_si128((const __m128i *)(p + 2 * i));
+      const __m128i b = _mm_loadu_si128((const __m128i *)(p + 2 * i + 16));
+      _mm_storeu_si128((__m128i *)(py + i), _mm_packus_epi16(_mm_and_si128(a, low), _mm_and_si128(b, low)));
+      const __m128i ca = _mm_srli_epi16(a, 8), cb = _mm_srli_epi16(b, 8);   // U V U V ...
+      auto dup_u = [&](__m128i c) {
+        c = _mm_and_si128(c, even);
+        return _mm_or_si128(c, _mm_slli_epi32(c, 16));
+      };
+      auto dup_v = [&](__m128i c) {
+        c = _mm_srli_epi32(c, 16);
+        return _mm_or_si128(c, _mm_slli_epi32(c, 16));
+      };
+      _mm_storeu_si128((__m128i *)(pu + i), _mm_packus_epi16(dup_u(ca), dup_u(cb)));
+      _mm_storeu_si128((__m128i *)(pv + i), _mm_packus_epi16(dup_v(ca), dup_v(cb)));
+    }
+    for (; i < n; i += 2) {
+      py[i] = p[2 * i];
+      py[i + 1] = p[2 * i + 2];
+      pu[i] = pu[i + 1] = p[2 * i + 1];
+      pv[i] = pv[i + 1] = p[2 * i + 3];
     }
   }
 };
@@ -287,7 +368,7 @@ void Developer::run(const Develop &d, const uint8_t *src, int W, int H, uint8_t 
     for (int k = 0; k < n; k++) P = std::max(P, std::min(W - 1, std::abs(d.dx[k])));
     Develop dc = d;
     for (int k = 0; k < n; k++) dc.dx[k] = std::max(-P, std::min(P, d.dx[k]));
-    planes.fill(src, map, W, H, P);
+    planes.fill(src, d.map, W, H, P);
     for (int v = 0; v < H; v++) {
       uint8_t *row = out + (size_t)v * W * 2;
       blur_row(dc, n, planes, v, plain ? row : row_buf.data());
@@ -311,7 +392,7 @@ void Developer::run(const Develop &d, const uint8_t *src, int W, int H, uint8_t 
     } else
 #endif
     if (map) {
-      lens_row(src, map + (size_t)v * W, W, geo);
+      lens_row(src, *d.map, v, W, geo);
       g = geo;
     }
     // 2. light: exposure gain, white balance, noise

@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <stdexcept>
 
 namespace sim {
@@ -22,16 +21,73 @@ void Lens::undistort(double xd, double yd, double *x, double *y) const {
   *y = v;
 }
 
+namespace {
+
+// Lens::undistort's answers as a function of the distorted radius^2 q: the ratio s of the pinhole
+// radius to the distorted one solves s f(s^2 q) = 1. A table over q, linear in between, then one
+// Newton step: the same map as Lens::undistort pixel by pixel in a tenth of the time (the ratio's
+// curvature leaves the table ~1e-10 off, the step squares that). None where a step does not converge
+// (a lens beyond a webcam's): the caller then iterates as Lens::undistort.
+struct RadialInverse {
+  const Lens &l;
+  double q_max, scale;
+  std::vector<double> s;
+  bool ok = true;
+  RadialInverse(const Lens &lens, double qmax) : l(lens), q_max(qmax) {
+    const int n = 4096;
+    scale = n / q_max;
+    s.resize(n + 2);
+    double x = 1;
+    for (int i = 0; i <= n + 1 && ok; i++) {
+      const double q = i / scale;
+      int k = 0;
+      for (; k < 50; k++) {
+        const double step = newton(x, q);
+        x -= step;
+        if (!std::isfinite(x) || !(h_slope(x, q) > 0.1)) ok = false;
+        if (std::fabs(step) < 1e-15 || !ok) break;
+      }
+      if (k == 50) ok = false;
+      s[i] = x;
+    }
+  }
+  double h_slope(double x, double q) const {
+    const double x2q = x * x * q;
+    return 1 + x2q * (3 * l.k1 + 5 * l.k2 * x2q);
+  }
+  double newton(double x, double q) const { return (x * l.factor(x * x * q) - 1) / h_slope(x, q); }
+  // the ratio at q (0 <= q <= q_max)
+  double at(double q) const {
+    const double t = q * scale;
+    const int i = (int)t;
+    const double x = s[i] + (t - i) * (s[i + 1] - s[i]);
+    return x - newton(x, q);
+  }
+};
+
+}  // namespace
+
 void lens_map_build(const Lens &l, LensMap *m) {
   m->lens = l;
   const int W = l.width, H = l.height;
   // pinhole position of every frame pixel; the scratch covers them all
   std::vector<float> px((size_t)W * H), py((size_t)W * H);
   double umin = 1e30, umax = -1e30, vmin = 1e30, vmax = -1e30;
+  double q_max = 0;   // the largest distorted radius^2: at a corner
+  for (int v : {0, H - 1})
+    for (int u : {0, W - 1}) q_max = std::max(q_max, std::pow((u - l.cx) / l.fx, 2) + std::pow((v - l.cy) / l.fy, 2));
+  const RadialInverse inv(l, q_max * 1.001);
   for (int v = 0; v < H; v++) {
     for (int u = 0; u < W; u++) {
+      const double xd = (u - l.cx) / l.fx, yd = (v - l.cy) / l.fy;
       double x, y;
-      l.undistort((u - l.cx) / l.fx, (v - l.cy) / l.fy, &x, &y);
+      if (inv.ok) {
+        const double s = inv.at(xd * xd + yd * yd);
+        x = xd * s;
+        y = yd * s;
+      } else {
+        l.undistort(xd, yd, &x, &y);
+      }
       const double su = l.cx + l.fx * x, sv = l.cy + l.fy * y;
       px[(size_t)v * W + u] = (float)su;
       py[(size_t)v * W + u] = (float)sv;
@@ -56,6 +112,21 @@ void lens_map_build(const Lens &l, LensMap *m) {
     const int su = std::min(m->width - 1, std::max(0, (int)std::floor(px[i] + 0.5) - u0));
     const int sv = std::min(m->height - 1, std::max(0, (int)std::floor(py[i] + 0.5) - v0));
     m->src[i] = (sv * m->width + su) * 2;
+  }
+  m->runs.clear();
+  m->row_runs.assign(1, 0);
+  for (int v = 0; v < H; v++) {
+    const int32_t *r = m->src.data() + (size_t)v * W;
+    for (int u = 0; u + 1 < W; u += 2) {
+      const bool regular = r[u + 1] == r[u] + 2;
+      LensMap::Run *last = (int)m->runs.size() > m->row_runs.back() ? &m->runs.back() : nullptr;
+      if (last && last->regular == regular && (!regular || r[u] == r[u - 2] + 4)) {
+        last->pairs++;
+      } else {
+        m->runs.push_back({u, 1, regular});
+      }
+    }
+    m->row_runs.push_back((int)m->runs.size());
   }
 }
 

@@ -36,6 +36,16 @@ struct LensMap {
   int width = 0, height = 0; // scratch size
   double cx = 0, cy = 0;     // principal point in the scratch
   std::vector<int32_t> src;  // per pixel of the frame: the byte offset of its scratch pixel's luma
+  // The same map as runs of pixel pairs along each row: in a regular run the pixels show consecutive
+  // scratch pixels from the run's first one on (the distortion moves a row's source by a pixel only
+  // every few dozen), so that it is copied rather than looked up pixel by pixel; the others go
+  // through src. Row v's runs: runs[row_runs[v]] up to runs[row_runs[v + 1]].
+  struct Run {
+    int u, pairs;   // first pixel (even), length in pairs
+    bool regular;
+  };
+  std::vector<Run> runs;
+  std::vector<int> row_runs;
 };
 void lens_map_build(const Lens &l, LensMap *m);
 
