@@ -70,6 +70,8 @@ struct Lighting {
   double g0 = 1, gx = 0, gy = 0;   // light = g0 + gx * x + gy * y (field frame, m), before shadows
   std::vector<Caster> casters;
   double at(double x, double y) const;          // with shadows, for the ground
+  // lround(256 at(x[i], y[i])) for i < n: the same numbers, the casters sorted out per block of points
+  void at256(const double *x, const double *y, int n, int *l) const;
   double ambient(double x, double y) const { return g0 + gx * x + gy * y; }   // for solids
 };
 

@@ -59,7 +59,7 @@ inline void put_span(uint8_t *row, int u0, int u1, const uint8_t *ys, int y, int
 
 // A row of the ground in the light (realism): each pixel's colour (class cls: floor, carpet, line,
 // sky) times its light lt (x 256; the sky unlit), the pair's chroma the mean of its two pixels'.
-void lit_row(const uint8_t *cls, const int *lt, const uint8_t *const col[4], int W, uint8_t *row) {
+void lit_row(const uint8_t *cls, const int16_t *lt, const uint8_t *const col[4], int W, uint8_t *row) {
   int u = 0;
 #ifdef __SSE2__
   // 8 pixels at a time, the same integer arithmetic as the loop below (bit-identical output):
@@ -75,7 +75,7 @@ void lit_row(const uint8_t *cls, const int *lt, const uint8_t *const col[4], int
       for (int i = 0; i < 4; i++) x = _mm_or_si128(x, _mm_and_si128(m[i], _mm_set1_epi16(col[i][k])));
       return x;
     };
-    __m128i l = _mm_packs_epi32(_mm_loadu_si128((const __m128i *)(lt + u)), _mm_loadu_si128((const __m128i *)(lt + u + 4)));
+    __m128i l = _mm_loadu_si128((const __m128i *)(lt + u));
     l = _mm_or_si128(_mm_and_si128(m[3], k256), _mm_andnot_si128(m[3], l));
     const __m128i y = _mm_min_epi16(_mm_mulhi_epu16(_mm_slli_epi16(pick(0), 8), l), k255);
     const __m128i cu = _mm_mulhi_epi16(_mm_slli_epi16(_mm_sub_epi16(pick(1), k128), 8), l);
@@ -237,7 +237,10 @@ void Renderer::ground(const Camera &c, const Look &look, uint8_t *img) const {
   const uint8_t *cells = cells_.data();
   const int cells_x = cells_x_;
   std::vector<uint8_t> cls(W);
-  std::vector<int> lt(look.light ? W : 0);   // realism: light x 256 per pixel of the row
+  // realism: light x 256 per pixel of the row (16 bits: the light stays below 2), and at the samples
+  std::vector<int16_t> lt(look.light ? W : 0);
+  std::vector<double> lx(look.light ? W / 8 + 2 : 0), ly(lx.size());
+  std::vector<int> sl(lx.size());
   for (int v = 0; v < H; v++) {
     uint8_t *row = img + (size_t)v * W * 2;
     const Vec3 d0 = R * Vec3(1, cu / f, -(v - cv) / fv);
@@ -308,29 +311,37 @@ void Renderer::ground(const Camera &c, const Look &look, uint8_t *img) const {
     const uint32_t base = (uint32_t)(v * W);
     if (look.light) {
       // the light at the ground point every 8 pixels, linear in between (it changes over decimetres)
-      auto light = [&](int uu) {
-        float gx, gy;
-        ground_xy(uu, &gx, &gy);
-        // beyond the carpet (rays near the horizon reach kilometres) the light is the carpet edge's
-        const double x = std::max(-(double)fw, std::min((double)fw, (double)gx)) * res_ + x0_;
-        const double y = std::max(-(double)fh, std::min((double)fh, (double)gy)) * res_ + y0_;
-        return (int)std::lround(256 * look.light->at(x, y));
-      };
       const int a = std::max(ua, 0);
       if (ub >= a) {
-        int l0 = light(a);
-        lt[a] = l0;
-        for (int u0 = a; u0 < ub; u0 += 8) {
-          const int u1 = std::min(u0 + 8, ub);
-          const int l1 = light(u1);
+        int ns = 0;
+        for (int uu = a;; uu = std::min(uu + 8, ub)) {
+          float gx, gy;
+          ground_xy(uu, &gx, &gy);
+          // beyond the carpet (rays near the horizon reach kilometres) the light is the carpet edge's
+          lx[ns] = std::max(-(double)fw, std::min((double)fw, (double)gx)) * res_ + x0_;
+          ly[ns] = std::max(-(double)fh, std::min((double)fh, (double)gy)) * res_ + y0_;
+          ns++;
+          if (uu == ub) break;
+        }
+        look.light->at256(lx.data(), ly.data(), ns, sl.data());
+        int l0 = sl[0];
+        lt[a] = (int16_t)l0;
+        for (int j = 1, u0 = a; j < ns; j++, u0 += 8) {
+          const int u1 = std::min(u0 + 8, ub), l1 = sl[j];
           if (u1 - u0 == 8) {
             // the 16.16 step (l1 - l0) 65536 / 8 below is exact here: the same values without a division
             const int dl = l1 - l0;
-            for (int k = 1; k <= 8; k++) lt[u0 + k] = l0 + ((k * dl) >> 3);
+#ifdef __SSE2__
+            const __m128i k18 = _mm_setr_epi16(1, 2, 3, 4, 5, 6, 7, 8);
+            _mm_storeu_si128((__m128i *)&lt[u0 + 1],
+                             _mm_add_epi16(_mm_set1_epi16((short)l0), _mm_srai_epi16(_mm_mullo_epi16(_mm_set1_epi16((short)dl), k18), 3)));
+#else
+            for (int k = 1; k <= 8; k++) lt[u0 + k] = (int16_t)(l0 + ((k * dl) >> 3));
+#endif
           } else {
             const int step = (l1 - l0) * 65536 / (u1 - u0);   // 16.16 fixed point
             int l = l0 * 65536;
-            for (int k = u0 + 1; k <= u1; k++) lt[k] = (l += step) >> 16;
+            for (int k = u0 + 1; k <= u1; k++) lt[k] = (int16_t)((l += step) >> 16);
           }
           l0 = l1;
         }
