@@ -134,18 +134,18 @@ void swap_copy(const uint8_t *p, int n, uint8_t *q) {
 // where it starts on an even scratch pixel, else of the bytes from the pair's U on, each byte pair
 // swapped (Y0 U Y1 V of the frame are Y U' Y' V' of the scratch's U'' Y U' Y' V' from one pair on).
 void lens_row(const uint8_t *src, const LensMap &m, int v, int W, uint8_t *row) {
-  const int32_t *mrow = m.src.data() + (size_t)v * W;
   for (int k = m.row_runs[v]; k < m.row_runs[v + 1]; k++) {
     const LensMap::Run &r = m.runs[k];
-    const int s = mrow[r.u];
+    const int s = r.src;
     uint8_t *q = row + 2 * r.u;
     if (r.regular) {
       if ((s & 3) == 0) memcpy(q, src + s, (size_t)4 * r.pairs);
       else swap_copy(src + s - 1, 4 * r.pairs, q);
       continue;
     }
-    for (int u = r.u; u < r.u + 2 * r.pairs; u += 2, q += 4) {
-      const int sa = mrow[u], sb = mrow[u + 1];   // byte offsets of the lumas
+    const int32_t *o = m.other.data() + r.src;
+    for (int i = 0; i < r.pairs; i++, q += 4) {
+      const int sa = o[2 * i], sb = o[2 * i + 1];   // byte offsets of the lumas
       const uint8_t *c = src + (sa & ~3);         // the pair of the first (the scratch's width is even)
       q[0] = src[sa];
       q[1] = c[1];
@@ -228,21 +228,21 @@ struct Planes {
       // the frame's planes: the runs copied, the rest pixel by pixel
       for (int r = 0; r < H; r++) {
         const size_t o = (size_t)r * stride + P;
-        const int32_t *mrow = map->src.data() + (size_t)r * W;
         for (int k = map->row_runs[r]; k < map->row_runs[r + 1]; k++) {
           const LensMap::Run &run = map->runs[k];
           if (run.regular) {
-            const size_t s = mrow[run.u] / 2, n = 2 * run.pairs;
+            const size_t s = run.src / 2, n = 2 * run.pairs;
             memcpy(&y[o + run.u], &sy[s], n);
             memcpy(&u[o + run.u], &su[s], n);
             memcpy(&v[o + run.u], &sv[s], n);
             continue;
           }
-          for (int i = run.u; i < run.u + 2 * run.pairs; i++) {
-            const int s = mrow[i] / 2;
-            y[o + i] = sy[s];
-            u[o + i] = su[s];
-            v[o + i] = sv[s];
+          const int32_t *os = map->other.data() + run.src;
+          for (int i = 0; i < 2 * run.pairs; i++) {
+            const int s = os[i] / 2;
+            y[o + run.u + i] = sy[s];
+            u[o + run.u + i] = su[s];
+            v[o + run.u + i] = sv[s];
           }
         }
       }

@@ -114,6 +114,7 @@ void lens_map_build(const Lens &l, LensMap *m) {
     m->src[i] = (sv * m->width + su) * 2;
   }
   m->runs.clear();
+  m->other.clear();
   m->row_runs.assign(1, 0);
   for (int v = 0; v < H; v++) {
     const int32_t *r = m->src.data() + (size_t)v * W;
@@ -123,7 +124,11 @@ void lens_map_build(const Lens &l, LensMap *m) {
       if (last && last->regular == regular && (!regular || r[u] == r[u - 2] + 4)) {
         last->pairs++;
       } else {
-        m->runs.push_back({u, 1, regular});
+        m->runs.push_back({u, 1, regular, regular ? r[u] : (int32_t)m->other.size()});
+      }
+      if (!regular) {
+        m->other.push_back(r[u]);
+        m->other.push_back(r[u + 1]);
       }
     }
     m->row_runs.push_back((int)m->runs.size());

@@ -40,12 +40,16 @@ struct LensMap {
   // scratch pixels from the run's first one on (the distortion moves a row's source by a pixel only
   // every few dozen), so that it is copied rather than looked up pixel by pixel; the others go
   // through src. Row v's runs: runs[row_runs[v]] up to runs[row_runs[v + 1]].
+  // The runs and the others' offsets are in the order they are read (the map itself is 1.2 MB: a
+  // look-up per run missed the cache).
   struct Run {
     int u, pairs;   // first pixel (even), length in pairs
     bool regular;
+    int32_t src;    // regular: src of the first pixel; else the index of its pixels' src in `other`
   };
   std::vector<Run> runs;
   std::vector<int> row_runs;
+  std::vector<int32_t> other;
 };
 void lens_map_build(const Lens &l, LensMap *m);
 
