@@ -25,16 +25,19 @@ inline uint8_t sat(int y) { return (uint8_t)(y < 0 ? 0 : (y > 255 ? 255 : y)); }
 // V - 128 = 0.713 (R - Y) to (V - 128) g_r + (g_r - 1) 0.713 Y (Y's own change, 0.30 and 0.11 of it,
 // left to the exposure gain), U likewise with g_b and 0.564; then all times g. The noise: the
 // table's N(0, 16^2) times sigma / 16, luma with shot noise (sigma ~ sqrt(Y / 128)).
-constexpr int kShift = 13, kHalf = 1 << (kShift - 1);
+// Each term rounded by itself, as the tables of before did.
+constexpr int kShift = 13, kHalf = 1 << (kShift - 1);   // chroma (gains up to 2.25)
+constexpr int kShiftY = 14, kHalfY = 1 << (kShiftY - 1);   // luma (gain up to 1.5)
 struct Tone {
-  int gy, gu, gyu, gv, gyv;   // x (1 << kShift)
+  int gy;                     // x (1 << kShiftY)
+  int gu, gyu, gv, gyv;       // x (1 << kShift)
   float ky;                   // luma noise x 256 at Y = 128
   int kc;                     // chroma noise x 256
 };
 
 Tone tone_of(const Develop &d) {
-  auto fix = [](double x, const char *what) {
-    const long k = std::lround(x * (1 << kShift));
+  auto fix = [](double x, const char *what, int shift = kShift) {
+    const long k = std::lround(x * (1 << shift));
     if (k < -32768 || k > 32767) {
       throw std::runtime_error(std::string("develop: the ") + what + " coefficient " + std::to_string(x) +
                                " is outside the 16-bit fixed point's range (|x| < 4)");
@@ -42,7 +45,7 @@ Tone tone_of(const Develop &d) {
     return (int)k;
   };
   Tone t;
-  t.gy = fix(d.gain, "gain");
+  t.gy = fix(d.gain, "gain", kShiftY);
   t.gu = fix(d.gain * d.wb_blue, "blue gain");
   t.gyu = fix(d.gain * (d.wb_blue - 1) * 0.564, "blue balance");
   t.gv = fix(d.gain * d.wb_red, "red gain");
@@ -68,10 +71,13 @@ void light_row(const Tone &t, const uint8_t *in, uint8_t *out, int W, const int8
   int u = 0;
 #ifdef __SSE2__
   const __m128i low = _mm_set1_epi16(0x00ff), even = _mm_set1_epi32(0x0000ffff), zero = _mm_setzero_si128();
-  const __m128i k128 = _mm_set1_epi16(128), k255 = _mm_set1_epi16(255), half = _mm_set1_epi32(kHalf);
-  const __m128i cy = _mm_set1_epi32((int)((uint32_t)kHalf << 16 | (uint16_t)t.gy));   // (gy, half)
-  const __m128i cc = _mm_setr_epi16((short)t.gu, (short)t.gyu, (short)t.gv, (short)t.gyv, (short)t.gu, (short)t.gyu,
-                                    (short)t.gv, (short)t.gyv);
+  const __m128i k128 = _mm_set1_epi16(128), k255 = _mm_set1_epi16(255);
+  const __m128i cy = _mm_set1_epi32((int)((uint32_t)kHalfY << 16 | (uint16_t)t.gy));   // (gy, half)
+  // (gu, half) (gv, half) for the chroma's own term, (gyu, half) (gyv, half) for the luma's
+  auto pairs = [](int a, int b) {
+    return _mm_setr_epi16((short)a, (short)kHalf, (short)b, (short)kHalf, (short)a, (short)kHalf, (short)b, (short)kHalf);
+  };
+  const __m128i cc = pairs(t.gu, t.gv), cyc = pairs(t.gyu, t.gyv);
   const __m128i one = _mm_set1_epi32(0x00010000), kc = _mm_set1_epi16((short)t.kc), hi8 = _mm_set1_epi16((short)0xff00);
   const __m128 inv128 = _mm_set1_ps(1.0f / 128), eight = _mm_set1_ps(8.0f), ky = _mm_set1_ps(t.ky);
   for (; u + 8 <= W; u += 8) {
@@ -81,13 +87,13 @@ void light_row(const Tone &t, const uint8_t *in, uint8_t *out, int W, const int8
     // the mean luma of each pair in both of its lanes
     __m128i ym = _mm_and_si128(_mm_srli_epi16(_mm_add_epi16(Y, _mm_srli_epi32(Y, 16)), 1), even);
     ym = _mm_or_si128(ym, _mm_slli_epi32(ym, 16));
-    const __m128i x = _mm_sub_epi16(C, k128);
-    const __m128i c = _mm_packs_epi32(
-        _mm_srai_epi32(_mm_add_epi32(_mm_madd_epi16(_mm_unpacklo_epi16(x, ym), cc), half), kShift),
-        _mm_srai_epi32(_mm_add_epi32(_mm_madd_epi16(_mm_unpackhi_epi16(x, ym), cc), half), kShift));
-    // Y gy + half as (Y, 1) . (gy, half)
-    const __m128i y = _mm_packs_epi32(_mm_srai_epi32(_mm_madd_epi16(_mm_or_si128(_mm_unpacklo_epi16(Y, zero), one), cy), kShift),
-                                      _mm_srai_epi32(_mm_madd_epi16(_mm_or_si128(_mm_unpackhi_epi16(Y, zero), one), cy), kShift));
+    // x g + half as (x, 1) . (g, half), in 32 bits
+    auto term = [&](__m128i x, __m128i g, int shift) {
+      const __m128i lo = _mm_or_si128(_mm_unpacklo_epi16(x, zero), one), hi = _mm_or_si128(_mm_unpackhi_epi16(x, zero), one);
+      return _mm_packs_epi32(_mm_srai_epi32(_mm_madd_epi16(lo, g), shift), _mm_srai_epi32(_mm_madd_epi16(hi, g), shift));
+    };
+    const __m128i c = _mm_add_epi16(term(_mm_sub_epi16(C, k128), cc, kShift), term(ym, cyc, kShift));
+    const __m128i y = term(Y, cy, kShiftY);
     const __m128i yy = _mm_max_epi16(_mm_min_epi16(y, k255), zero);
     auto k4 = [&](__m128i y32) {
       const __m128 f = _mm_max_ps(_mm_cvtepi32_ps(y32), eight);
@@ -107,9 +113,9 @@ void light_row(const Tone &t, const uint8_t *in, uint8_t *out, int W, const int8
     uint8_t *q = out + 2 * u;
     const int8_t *n = nr + 2 * u;
     const int ym = (p[0] + p[2]) >> 1;
-    const int y0 = (p[0] * t.gy + kHalf) >> kShift, y1 = (p[2] * t.gy + kHalf) >> kShift;
-    const int cu = ((p[1] - 128) * t.gu + ym * t.gyu + kHalf) >> kShift;
-    const int cv = ((p[3] - 128) * t.gv + ym * t.gyv + kHalf) >> kShift;
+    const int y0 = (p[0] * t.gy + kHalfY) >> kShiftY, y1 = (p[2] * t.gy + kHalfY) >> kShiftY;
+    const int cu = (((p[1] - 128) * t.gu + kHalf) >> kShift) + ((ym * t.gyu + kHalf) >> kShift);
+    const int cv = (((p[3] - 128) * t.gv + kHalf) >> kShift) + ((ym * t.gyv + kHalf) >> kShift);
     q[0] = sat(y0 + ((n[0] * 256 * luma_k(t, sat(y0))) >> 16));
     q[1] = sat(128 + cu + ((n[1] * 256 * t.kc) >> 16));
     q[2] = sat(y1 + ((n[2] * 256 * luma_k(t, sat(y1))) >> 16));
@@ -292,7 +298,7 @@ void blur_row(const Develop &d, int n, const Planes &pl, int v, uint8_t *row) {
     rv[k] = pl.v.data() + off;
   }
   // (s + n / 2) / n as ((s + n / 2) M) >> 16, M = 65536 / n + 1: exact for every s <= 8 * 255 + 4
-  // (tests/sim_realism.cpp checks it)
+  // (checked for every such s and n = 2..8)
   const __m128i m = _mm_set1_epi16((short)(uint16_t)(65536 / n + 1)), h = _mm_set1_epi16((short)(n / 2));
   const __m128i zero = _mm_setzero_si128(), even = _mm_set1_epi32(0x0000ffff);
   const int W = pl.W;
