@@ -39,7 +39,8 @@ const double kPatchCos = std::cos(0.30);
 // half covered gets the average of its old chroma and the new one.
 inline uint8_t sat(int y) { return (uint8_t)(y < 0 ? 0 : (y > 255 ? 255 : y)); }
 
-// Noise of pixel `index` (row-major) in a frame: a seeded table walked from a per-frame offset.
+// Noise of pixel `index` (row-major) in a frame: a seeded table walked from a per-frame offset (no
+// table: none, for the spans of solids and the ball; the ground's light path adds none either).
 struct Noise {
   const int8_t *table;
   uint32_t offset;
@@ -48,7 +49,11 @@ struct Noise {
 
 inline void put_span(uint8_t *row, int u0, int u1, const uint8_t *ys, int y, int cu, int cv, const Noise &nz,
                      uint32_t row_index) {
-  for (int u = u0; u <= u1; u++) row[2 * u] = sat((ys ? ys[u - u0] : y) + nz.at(row_index + u));
+  if (!nz.table) {   // no noise (realism: develop() adds it); y and ys are 0..255
+    for (int u = u0; u <= u1; u++) row[2 * u] = ys ? ys[u - u0] : (uint8_t)y;
+  } else {
+    for (int u = u0; u <= u1; u++) row[2 * u] = sat((ys ? ys[u - u0] : y) + nz.at(row_index + u));
+  }
   for (int pu = u0 & ~1; pu <= u1; pu += 2) {
     uint8_t *c = row + 2 * pu;
     const bool full = pu >= u0 && pu + 1 <= u1;
@@ -169,7 +174,6 @@ Renderer::Renderer(const Params &p, uint64_t seed)
   const double hl = p.field_length / 2 + p.border, hw = p.field_width / 2 + p.border;
   half_diagonal_ = std::hypot(hl, hw);
   light_dir_ = (double)((seed * 0x9e3779b97f4a7c15ull) >> 11) / (double)(1ull << 53) * 2 * M_PI;
-  zeros_.assign(65536 + kNoiseExtra, 0);
   // The markings are symmetric in |X| and |Y|: one quarter of the carpet at 1 cm, stored in
   // 8 x 8 texel tiles (one cache line each) so that rays walking in any direction stay cached.
   res_ = 0.01;
@@ -658,7 +662,7 @@ void Renderer::render(const Shot &sh, const std::vector<Solid> &solids, uint8_t 
       const double sg = 0.7 * sh.ball_radius;   // a contact shadow, darkest where the ball touches
       light.casters.push_back({sh.ball.x(), sh.ball.y(), 1 / (2 * sg * sg), real_.shadow_ball});
     }
-    draw(sh, pin, solids, Look{Noise{zeros_.data(), 0}, &light}, scratch);
+    draw(sh, pin, solids, Look{Noise{nullptr, 0}, &light}, scratch);
   }
   dev_.run(d, scratch, c.width, c.height, img);
 }
