@@ -72,13 +72,12 @@ void light_row(const Tone &t, const uint8_t *in, uint8_t *out, int W, const int8
 #ifdef __SSE2__
   const __m128i low = _mm_set1_epi16(0x00ff), even = _mm_set1_epi32(0x0000ffff), zero = _mm_setzero_si128();
   const __m128i k128 = _mm_set1_epi16(128), k255 = _mm_set1_epi16(255);
-  const __m128i cy = _mm_set1_epi32((int)((uint32_t)kHalfY << 16 | (uint16_t)t.gy));   // (gy, half)
-  // (gu, half) (gv, half) for the chroma's own term, (gyu, half) (gyv, half) for the luma's
-  auto pairs = [](int a, int b) {
-    return _mm_setr_epi16((short)a, (short)kHalf, (short)b, (short)kHalf, (short)a, (short)kHalf, (short)b, (short)kHalf);
-  };
-  const __m128i cc = pairs(t.gu, t.gv), cyc = pairs(t.gyu, t.gyv);
-  const __m128i one = _mm_set1_epi32(0x00010000), kc = _mm_set1_epi16((short)t.kc), hi8 = _mm_set1_epi16((short)0xff00);
+  const __m128i cy = _mm_set1_epi16((short)t.gy);
+  const __m128i cc = _mm_setr_epi16((short)t.gu, (short)t.gv, (short)t.gu, (short)t.gv, (short)t.gu, (short)t.gv,
+                                    (short)t.gu, (short)t.gv);
+  const __m128i cyc = _mm_setr_epi16((short)t.gyu, (short)t.gyv, (short)t.gyu, (short)t.gyv, (short)t.gyu,
+                                     (short)t.gyv, (short)t.gyu, (short)t.gyv);
+  const __m128i kc = _mm_set1_epi16((short)t.kc), hi8 = _mm_set1_epi16((short)0xff00);
   const __m128 inv128 = _mm_set1_ps(1.0f / 128), eight = _mm_set1_ps(8.0f), ky = _mm_set1_ps(t.ky);
   for (; u + 8 <= W; u += 8) {
     const __m128i px = _mm_loadu_si128((const __m128i *)(in + 2 * u));
@@ -87,10 +86,10 @@ void light_row(const Tone &t, const uint8_t *in, uint8_t *out, int W, const int8
     // the mean luma of each pair in both of its lanes
     __m128i ym = _mm_and_si128(_mm_srli_epi16(_mm_add_epi16(Y, _mm_srli_epi32(Y, 16)), 1), even);
     ym = _mm_or_si128(ym, _mm_slli_epi32(ym, 16));
-    // x g + half as (x, 1) . (g, half), in 32 bits
+    // (x g + 2^(shift - 1)) >> shift as (x 2^(16 - shift)) g, rounded by the low half's top bit
     auto term = [&](__m128i x, __m128i g, int shift) {
-      const __m128i lo = _mm_or_si128(_mm_unpacklo_epi16(x, zero), one), hi = _mm_or_si128(_mm_unpackhi_epi16(x, zero), one);
-      return _mm_packs_epi32(_mm_srai_epi32(_mm_madd_epi16(lo, g), shift), _mm_srai_epi32(_mm_madd_epi16(hi, g), shift));
+      const __m128i xs = _mm_slli_epi16(x, 16 - shift);
+      return _mm_add_epi16(_mm_mulhi_epi16(xs, g), _mm_srli_epi16(_mm_mullo_epi16(xs, g), 15));
     };
     const __m128i c = _mm_add_epi16(term(_mm_sub_epi16(C, k128), cc, kShift), term(ym, cyc, kShift));
     const __m128i y = term(Y, cy, kShiftY);
