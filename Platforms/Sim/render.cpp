@@ -75,7 +75,12 @@ void lit_row(const uint8_t *cls, const int16_t *lt, const uint8_t *const col[4],
   for (; u + 8 <= W; u += 8) {
     const __m128i cl = _mm_unpacklo_epi8(_mm_loadl_epi64((const __m128i *)(cls + u)), zero);
     for (int k = 0; k < 4; k++) m[k] = _mm_cmpeq_epi16(cl, _mm_set1_epi16((short)k));
+    // 8 pixels of carpet (most of a frame): its colour, else each pixel's by its class
+    uint64_t c8;
+    memcpy(&c8, cls + u, 8);
+    const bool carpet = c8 == 0x0101010101010101ull;
     auto pick = [&](int k) {
+      if (carpet) return _mm_set1_epi16(col[1][k]);
       __m128i x = zero;
       for (int i = 0; i < 4; i++) x = _mm_or_si128(x, _mm_and_si128(m[i], _mm_set1_epi16(col[i][k])));
       return x;
