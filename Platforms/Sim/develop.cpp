@@ -40,7 +40,7 @@ Tone tone_of(const Develop &d) {
     const long k = std::lround(x * (1 << shift));
     if (k < -32768 || k > 32767) {
       throw std::runtime_error(std::string("develop: the ") + what + " coefficient " + std::to_string(x) +
-                               " is outside the 16-bit fixed point's range (|x| < 4)");
+                               " is outside the range of its 16-bit fixed point");
     }
     return (int)k;
   };
