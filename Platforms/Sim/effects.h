@@ -36,6 +36,20 @@ struct LensMap {
   int width = 0, height = 0; // scratch size
   double cx = 0, cy = 0;     // principal point in the scratch
   std::vector<int32_t> src;  // per pixel of the frame: the byte offset of its scratch pixel's luma
+  // The same map as runs of pixel pairs along each row: in a regular run the pixels show consecutive
+  // scratch pixels from the run's first one on (the distortion moves a row's source by a pixel only
+  // every few dozen), so that it is copied rather than looked up pixel by pixel; the others go
+  // through src. Row v's runs: runs[row_runs[v]] up to runs[row_runs[v + 1]].
+  // The runs and the others' offsets are in the order they are read (the map itself is 1.2 MB: a
+  // look-up per run missed the cache).
+  struct Run {
+    int u, pairs;   // first pixel (even), length in pairs
+    bool regular;
+    int32_t src;    // regular: src of the first pixel; else the index of its pixels' src in `other`
+  };
+  std::vector<Run> runs;
+  std::vector<int> row_runs;
+  std::vector<int32_t> other;
 };
 void lens_map_build(const Lens &l, LensMap *m);
 
@@ -60,6 +74,8 @@ struct Lighting {
   double g0 = 1, gx = 0, gy = 0;   // light = g0 + gx * x + gy * y (field frame, m), before shadows
   std::vector<Caster> casters;
   double at(double x, double y) const;          // with shadows, for the ground
+  // lround(256 at(x[i], y[i])) for i < n: the same numbers, the casters sorted out per block of points
+  void at256(const double *x, const double *y, int n, int *l) const;
   double ambient(double x, double y) const { return g0 + gx * x + gy * y; }   // for solids
 };
 

@@ -39,7 +39,8 @@ const double kPatchCos = std::cos(0.30);
 // half covered gets the average of its old chroma and the new one.
 inline uint8_t sat(int y) { return (uint8_t)(y < 0 ? 0 : (y > 255 ? 255 : y)); }
 
-// Noise of pixel `index` (row-major) in a frame: a seeded table walked from a per-frame offset.
+// Noise of pixel `index` (row-major) in a frame: a seeded table walked from a per-frame offset (no
+// table: none, for the spans of solids and the ball; the ground's light path adds none either).
 struct Noise {
   const int8_t *table;
   uint32_t offset;
@@ -48,12 +49,64 @@ struct Noise {
 
 inline void put_span(uint8_t *row, int u0, int u1, const uint8_t *ys, int y, int cu, int cv, const Noise &nz,
                      uint32_t row_index) {
-  for (int u = u0; u <= u1; u++) row[2 * u] = sat((ys ? ys[u - u0] : y) + nz.at(row_index + u));
+  if (!nz.table) {   // no noise (realism: develop() adds it); y and ys are 0..255
+    for (int u = u0; u <= u1; u++) row[2 * u] = ys ? ys[u - u0] : (uint8_t)y;
+  } else {
+    for (int u = u0; u <= u1; u++) row[2 * u] = sat((ys ? ys[u - u0] : y) + nz.at(row_index + u));
+  }
   for (int pu = u0 & ~1; pu <= u1; pu += 2) {
     uint8_t *c = row + 2 * pu;
     const bool full = pu >= u0 && pu + 1 <= u1;
     c[1] = full ? (uint8_t)cu : (uint8_t)((c[1] + cu + 1) >> 1);
     c[3] = full ? (uint8_t)cv : (uint8_t)((c[3] + cv + 1) >> 1);
+  }
+}
+
+// A row of the ground in the light (realism): each pixel's colour (class cls: floor, carpet, line,
+// sky) times its light lt (x 256; the sky unlit), the pair's chroma the mean of its two pixels'.
+void lit_row(const uint8_t *cls, const int16_t *lt, const uint8_t *const col[4], int W, uint8_t *row) {
+  int u = 0;
+#ifdef __SSE2__
+  // 8 pixels at a time, the same integer arithmetic as the loop below (bit-identical output):
+  // (A la) >> 8 as mulhi(A 256, la), the pair's sum halved toward zero as C's / 2
+  const __m128i zero = _mm_setzero_si128(), even = _mm_set1_epi32(0x0000ffff), k128 = _mm_set1_epi16(128);
+  const __m128i k255 = _mm_set1_epi16(255), k256 = _mm_set1_epi16(256);
+  __m128i m[4];
+  for (; u + 8 <= W; u += 8) {
+    const __m128i cl = _mm_unpacklo_epi8(_mm_loadl_epi64((const __m128i *)(cls + u)), zero);
+    for (int k = 0; k < 4; k++) m[k] = _mm_cmpeq_epi16(cl, _mm_set1_epi16((short)k));
+    // 8 pixels of carpet (most of a frame): its colour, else each pixel's by its class
+    uint64_t c8;
+    memcpy(&c8, cls + u, 8);
+    const bool carpet = c8 == 0x0101010101010101ull;
+    auto pick = [&](int k) {
+      if (carpet) return _mm_set1_epi16(col[1][k]);
+      __m128i x = zero;
+      for (int i = 0; i < 4; i++) x = _mm_or_si128(x, _mm_and_si128(m[i], _mm_set1_epi16(col[i][k])));
+      return x;
+    };
+    __m128i l = _mm_loadu_si128((const __m128i *)(lt + u));
+    l = _mm_or_si128(_mm_and_si128(m[3], k256), _mm_andnot_si128(m[3], l));
+    const __m128i y = _mm_min_epi16(_mm_mulhi_epu16(_mm_slli_epi16(pick(0), 8), l), k255);
+    const __m128i cu = _mm_mulhi_epi16(_mm_slli_epi16(_mm_sub_epi16(pick(1), k128), 8), l);
+    const __m128i cv = _mm_mulhi_epi16(_mm_slli_epi16(_mm_sub_epi16(pick(2), k128), 8), l);
+    // U's pair sum in the even lanes, V's in the odd ones
+    __m128i s = _mm_or_si128(_mm_and_si128(_mm_add_epi16(cu, _mm_srli_epi32(cu, 16)), even),
+                             _mm_andnot_si128(even, _mm_add_epi16(cv, _mm_slli_epi32(cv, 16))));
+    s = _mm_srai_epi16(_mm_add_epi16(s, _mm_srli_epi16(s, 15)), 1);
+    const __m128i c = _mm_max_epi16(_mm_min_epi16(_mm_add_epi16(s, k128), k255), zero);
+    _mm_storeu_si128((__m128i *)(row + 2 * u), _mm_or_si128(y, _mm_slli_epi16(c, 8)));
+  }
+#endif
+  for (; u < W; u += 2) {
+    const int ca = cls[u], cb = cls[u + 1];
+    const int la = ca == 3 ? 256 : lt[u], lb = cb == 3 ? 256 : lt[u + 1];
+    const uint8_t *A = col[ca], *B = col[cb];
+    uint8_t *p = row + 2 * u;
+    p[0] = sat((A[0] * la) >> 8);
+    p[1] = sat(128 + ((((A[1] - 128) * la) >> 8) + (((B[1] - 128) * lb) >> 8)) / 2);
+    p[2] = sat((B[0] * lb) >> 8);
+    p[3] = sat(128 + ((((A[2] - 128) * la) >> 8) + (((B[2] - 128) * lb) >> 8)) / 2);
   }
 }
 
@@ -126,7 +179,6 @@ Renderer::Renderer(const Params &p, uint64_t seed)
   const double hl = p.field_length / 2 + p.border, hw = p.field_width / 2 + p.border;
   half_diagonal_ = std::hypot(hl, hw);
   light_dir_ = (double)((seed * 0x9e3779b97f4a7c15ull) >> 11) / (double)(1ull << 53) * 2 * M_PI;
-  zeros_.assign(65536 + kNoiseExtra, 0);
   // The markings are symmetric in |X| and |Y|: one quarter of the carpet at 1 cm, stored in
   // 8 x 8 texel tiles (one cache line each) so that rays walking in any direction stay cached.
   res_ = 0.01;
@@ -194,7 +246,10 @@ void Renderer::ground(const Camera &c, const Look &look, uint8_t *img) const {
   const uint8_t *cells = cells_.data();
   const int cells_x = cells_x_;
   std::vector<uint8_t> cls(W);
-  std::vector<int> lt(look.light ? W : 0);   // realism: light x 256 per pixel of the row
+  // realism: light x 256 per pixel of the row (16 bits: the light stays below 2), and at the samples
+  std::vector<int16_t> lt(look.light ? W : 0);
+  std::vector<double> lx(look.light ? W / 8 + 2 : 0), ly(lx.size());
+  std::vector<int> sl(lx.size());
   for (int v = 0; v < H; v++) {
     uint8_t *row = img + (size_t)v * W * 2;
     const Vec3 d0 = R * Vec3(1, cu / f, -(v - cv) / fv);
@@ -265,37 +320,42 @@ void Renderer::ground(const Camera &c, const Look &look, uint8_t *img) const {
     const uint32_t base = (uint32_t)(v * W);
     if (look.light) {
       // the light at the ground point every 8 pixels, linear in between (it changes over decimetres)
-      auto light = [&](int uu) {
-        float gx, gy;
-        ground_xy(uu, &gx, &gy);
-        // beyond the carpet (rays near the horizon reach kilometres) the light is the carpet edge's
-        const double x = std::max(-(double)fw, std::min((double)fw, (double)gx)) * res_ + x0_;
-        const double y = std::max(-(double)fh, std::min((double)fh, (double)gy)) * res_ + y0_;
-        return (int)std::lround(256 * look.light->at(x, y));
-      };
       const int a = std::max(ua, 0);
       if (ub >= a) {
-        int l0 = light(a);
-        lt[a] = l0;
-        for (int u0 = a; u0 < ub; u0 += 8) {
-          const int u1 = std::min(u0 + 8, ub);
-          const int l1 = light(u1);
-          const int step = ((l1 - l0) << 16) / (u1 - u0);   // 16.16 fixed point
-          int l = l0 << 16;
-          for (int k = u0 + 1; k <= u1; k++) lt[k] = (l += step) >> 16;
+        int ns = 0;
+        for (int uu = a;; uu = std::min(uu + 8, ub)) {
+          float gx, gy;
+          ground_xy(uu, &gx, &gy);
+          // beyond the carpet (rays near the horizon reach kilometres) the light is the carpet edge's
+          lx[ns] = std::max(-(double)fw, std::min((double)fw, (double)gx)) * res_ + x0_;
+          ly[ns] = std::max(-(double)fh, std::min((double)fh, (double)gy)) * res_ + y0_;
+          ns++;
+          if (uu == ub) break;
+        }
+        look.light->at256(lx.data(), ly.data(), ns, sl.data());
+        int l0 = sl[0];
+        lt[a] = (int16_t)l0;
+        for (int j = 1, u0 = a; j < ns; j++, u0 += 8) {
+          const int u1 = std::min(u0 + 8, ub), l1 = sl[j];
+          if (u1 - u0 == 8) {
+            // the 16.16 step (l1 - l0) 65536 / 8 below is exact here: the same values without a division
+            const int dl = l1 - l0;
+#ifdef __SSE2__
+            const __m128i k18 = _mm_setr_epi16(1, 2, 3, 4, 5, 6, 7, 8);
+            _mm_storeu_si128((__m128i *)&lt[u0 + 1],
+                             _mm_add_epi16(_mm_set1_epi16((short)l0), _mm_srai_epi16(_mm_mullo_epi16(_mm_set1_epi16((short)dl), k18), 3)));
+#else
+            for (int k = 1; k <= 8; k++) lt[u0 + k] = (int16_t)(l0 + ((k * dl) >> 3));
+#endif
+          } else {
+            const int step = (l1 - l0) * 65536 / (u1 - u0);   // 16.16 fixed point
+            int l = l0 * 65536;
+            for (int k = u0 + 1; k <= u1; k++) lt[k] = (int16_t)((l += step) >> 16);
+          }
           l0 = l1;
         }
       }
-      for (u = 0; u < W; u += 2) {
-        const int ca = cls[u], cb = cls[u + 1];
-        const int la = ca == 3 ? 256 : lt[u], lb = cb == 3 ? 256 : lt[u + 1];
-        const uint8_t *A = col[ca], *B = col[cb];
-        uint8_t *p = row + 2 * u;
-        p[0] = sat((A[0] * la) >> 8);
-        p[1] = sat(128 + ((((A[1] - 128) * la) >> 8) + (((B[1] - 128) * lb) >> 8)) / 2);
-        p[2] = sat((B[0] * lb) >> 8);
-        p[3] = sat(128 + ((((A[2] - 128) * la) >> 8) + (((B[2] - 128) * lb) >> 8)) / 2);
-      }
+      lit_row(cls.data(), lt.data(), col, W, row);
       continue;
     }
     u = 0;
@@ -607,7 +667,7 @@ void Renderer::render(const Shot &sh, const std::vector<Solid> &solids, uint8_t 
       const double sg = 0.7 * sh.ball_radius;   // a contact shadow, darkest where the ball touches
       light.casters.push_back({sh.ball.x(), sh.ball.y(), 1 / (2 * sg * sg), real_.shadow_ball});
     }
-    draw(sh, pin, solids, Look{Noise{zeros_.data(), 0}, &light}, scratch);
+    draw(sh, pin, solids, Look{Noise{nullptr, 0}, &light}, scratch);
   }
   dev_.run(d, scratch, c.width, c.height, img);
 }

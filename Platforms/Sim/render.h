@@ -97,7 +97,6 @@ class Renderer {
   int cells_x_;
   static constexpr int kNoiseExtra = 4096;
   std::vector<int8_t> noise_;    // luma noise table (65536 entries, then the first kNoiseExtra again)
-  std::vector<int8_t> zeros_;    // no noise (realism: develop() adds it)
   uint64_t seed_;
   bool white_ball_;              // sim.lua ball.kind: 'white' (patterned) or 'orange'
   Realism real_;
