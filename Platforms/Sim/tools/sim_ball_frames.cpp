@@ -37,6 +37,24 @@ void put(FILE *f, const void *p, size_t n) {
 void putd(FILE *f, double x) { put(f, &x, 8); }
 void puti(FILE *f, int32_t x) { put(f, &x, 4); }
 
+// The pixel of p and whether it lies in the frame. The lens polynomial turns back beyond the
+// frame's corners (k2 < 0), folding points far outside the view into the image: a point counts
+// only when its pinhole radius is within the corners' (undistorted) one.
+bool in_frame(const sim::Camera &c, const sim::Vec3 &p, double *u, double *v) {
+  if (!sim::camera_project(c, p, u, v) || *u < 0 || *v < 0 || *u >= c.width || *v >= c.height) return false;
+  const sim::Vec3 q = c.rot.transpose() * (p - c.pos);
+  const double x = -q.y() / q.x(), y = -q.z() / q.x();
+  double r2max = 0;
+  const sim::Lens l = c.lens();
+  for (int k = 0; k < 4; k++) {
+    double cx = ((k & 1) ? c.width : 0) - c.pu(), cy = ((k & 2) ? c.height : 0) - c.pv(), xu = cx / c.fu(),
+           yu = cy / c.fv();
+    if (c.distorted()) l.undistort(cx / c.fu(), cy / c.fv(), &xu, &yu);
+    r2max = std::max(r2max, xu * xu + yu * yu);
+  }
+  return x * x + y * y <= r2max;
+}
+
 }  // namespace
 
 int main(int argc, char **argv) {
@@ -195,8 +213,7 @@ int main(int argc, char **argv) {
         const sim::Truth o = w.truth(r);
         double oxr, oyr, ou = -1, ov = -1;
         to_robot(o.x, o.y, &oxr, &oyr);
-        const bool in = sim::camera_project(c, sim::Vec3(o.x, o.y, 0), &ou, &ov) && ou >= 0 && ov >= 0 &&
-                        ou < c.width && ov < c.height;
+        const bool in = in_frame(c, sim::Vec3(o.x, o.y, 0), &ou, &ov);
         putd(f, oxr);
         putd(f, oyr);
         putd(f, ou + 0.5);
