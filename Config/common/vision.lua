@@ -66,6 +66,8 @@ return {
     min_width_m = 0.08,         -- m, a band's width at its foot's range: at least (a leg)...
     max_width_m = 1.2,          -- ... and at most (two robots side by side)
     depth_offset = 0.06,        -- m from the front of the feet to the robot's middle, along the ray
+    self_x = 0.25, self_y = 0.2, -- m: a foot point (robot frame) with x <= self_x and |y| <= self_y is the
+                                -- own body (the op3's feet reach 0.12 m forward, its hands 0.15 m aside)
     height = 0.6,               -- m, a robot's height at most (the top of its box in the image)
     min_team = 6,               -- labels of a team colour in a band to name its team
     max_range = 6.0,            -- m

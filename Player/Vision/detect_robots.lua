@@ -69,6 +69,9 @@ function M.find(bd, p, cm, pose, cfg, ball, out)
   end
   for _, o in ipairs(merged) do
     local gx, gy, dh = ground(cm, pose, s, o.x0, o.x1, o.foot)
+    -- a foot within the own body's footprint is the own body (its feet, arms or shoulders at the
+    -- image's bottom edge when the head looks down): no other robot stands there
+    if gx and gx <= cfg.self_x and math.abs(gy) <= cfg.self_y then gx = nil end
     if gx then
       local hx, hy = gx - pose[1], gy - pose[2]
       local width = (o.x1 - o.x0 + 1) * s * dh / cm.f      -- m, at the foot's range
