@@ -19,8 +19,8 @@ typedef struct bd_candidate { double u, v, radius; double inner, ring; double sc
 typedef struct bd_mlp bd_mlp;
 typedef struct bd_obstacle { int32_t x0, x1; int32_t top, foot; int32_t foot_visible; int32_t red, blue; } bd_obstacle;
 int bd_obstacles(bd *w, const uint8_t *labels, int wl, int hl, const int16_t *top, uint8_t field_mask,
-                 uint8_t red, uint8_t blue, int min_run, int max_gap, int min_width, bd_obstacle *out,
-                 int maxn);
+                 uint8_t red, uint8_t blue, int min_run, int min_below, int max_gap, int leg_gap,
+                 int min_width, bd_obstacle *out, int maxn);
 double bd_ball_radius_px(const bd_view *view, double u, double v, double r);
 bd *bd_new(int max_w, int max_h);
 void bd_free(bd *w);
@@ -39,7 +39,7 @@ double bd_mlp_eval(const bd_mlp *m, const float *x);
 
 local C = native.load('bd')
 
-local NFEAT = 16 * 16 + 2 * 4 * 4
+local NFEAT = 16 * 16 + 2 * 4 * 4 + 3   -- balldetect.h BD_NFEAT
 local M = { C = C, NFEAT = NFEAT, MAXCAND = 16, MAXOBST = 24 }
 
 local errbuf = ffi.new('char[512]')
@@ -105,10 +105,11 @@ function Bd:classify(mlp, yuyv, width, height, c)
 end
 
 -- Obstacles standing on the field (after boundary) into self.obst[0 .. n-1]; returns n.
--- cfg: field (label bits of field and lines), red, blue (team colours' bits), min_run, max_gap, min_width.
+-- cfg: field (label bits of field and lines), red, blue (team colours' bits), min_run, min_below, max_gap,
+-- leg_gap, min_width.
 function Bd:obstacles(labels, wl, hl, cfg)
-  local n = C.bd_obstacles(self.w, labels, wl, hl, self.top, cfg.field, cfg.red, cfg.blue, cfg.min_run, cfg.max_gap,
-                           cfg.min_width, self.obst, M.MAXOBST)
+  local n = C.bd_obstacles(self.w, labels, wl, hl, self.top, cfg.field, cfg.red, cfg.blue, cfg.min_run,
+                           cfg.min_below, cfg.max_gap, cfg.leg_gap, cfg.min_width, self.obst, M.MAXOBST)
   if n < 0 then error('balldetect: bad arguments to bd_obstacles', 2) end
   return n
 end

@@ -35,7 +35,8 @@ return {
       max_ring = 0.45,          -- fraction of not-field labels in the ring around it, at most
       min_radius = 4,           -- px, the smallest ball looked for (about 5 m away)
       max_candidates = 8,       -- candidates the classifier checks per frame, best shapes first
-      threshold = 0.5,          -- classifier probability for a ball
+      threshold = 0.98,         -- classifier probability for a ball (chosen on frames of seed 21: neither
+                                -- the training seeds nor the tests')
     },
     color = 1,                  -- label bit
     diameter = 0.14,            -- m
@@ -54,14 +55,19 @@ return {
     field = 25,                 -- label bits of field, lines and the orange ball (green | white | orange):
                                 -- not a robot
     red = 2, blue = 4,          -- label bits of the team colours (colors above)
-    min_run = 6,                -- label rows of a column's run, at least
+    min_run = 6,                -- label rows of a column's run, at least...
+    min_below = 5,              -- ... of them below the field boundary
     max_gap = 3,                -- field or line labels bridged inside a run (the field seen between legs)
+    leg_gap = 16,               -- label rows between a short run and the run above it that still make one
+                                -- column (legs blurred into the field's colour above the feet)
     min_width = 3,              -- label columns of a band, at least (and the columns bridged inside one)
     merge_gap = 0.12,           -- m between neighbouring bands at their range that still make one robot (legs)
     arm_width = 0.1,            -- m: a band no wider joins its neighbour whatever its foot (an arm)
     min_width_m = 0.08,         -- m, a band's width at its foot's range: at least (a leg)...
     max_width_m = 1.2,          -- ... and at most (two robots side by side)
     depth_offset = 0.06,        -- m from the front of the feet to the robot's middle, along the ray
+    self_x = 0.25, self_y = 0.2, -- m: a foot point (robot frame) with x <= self_x and |y| <= self_y is the
+                                -- own body (the op3's feet reach 0.12 m forward, its hands 0.15 m aside)
     height = 0.6,               -- m, a robot's height at most (the top of its box in the image)
     min_team = 6,               -- labels of a team colour in a band to name its team
     max_range = 6.0,            -- m

@@ -184,7 +184,9 @@ int bd_candidates(bd *w, const uint8_t *labels, int wl, int hl, int scale, uint8
       c->radius = rpx;
       c->inner = (double)ni / fi;
       c->ring = ring;
-      c->score = c->inner - ring;
+      /* less the part of the inner box beyond the boundary: the blurred far edge of the field is a
+       * row of not-field spots that would otherwise outrank a ball on the field */
+      c->score = c->inner - ring - (1 - (double)fi / ai);
       c->prob = -1;
     }
   }
@@ -240,7 +242,7 @@ int bd_features(const uint8_t *yuyv, int width, int height, double u, double v, 
   float *U = out + BD_GRID * BD_GRID, *V = U + BD_CGRID * BD_CGRID;
   for (int k = 0; k < BD_CGRID * BD_CGRID; k++) U[k] = V[k] = 0;
   const int per = BD_GRID / BD_CGRID;
-  double sum = 0, sum2 = 0;
+  double sum = 0, sum2 = 0, mid = 0;
   for (int j = 0; j < BD_GRID; j++) {
     for (int i = 0; i < BD_GRID; i++) {
       double ay = 0, au = 0, av = 0;
@@ -260,6 +262,7 @@ int bd_features(const uint8_t *yuyv, int width, int height, double u, double v, 
       const double inv = 1.0 / (ns * ns);
       Y[j * BD_GRID + i] = (float)(ay * inv);
       sum += ay * inv;
+      if (j >= BD_GRID / 4 && j < 3 * BD_GRID / 4 && i >= BD_GRID / 4 && i < 3 * BD_GRID / 4) mid += ay * inv;
       sum2 += ay * inv * ay * inv;
       const int c = (j / per) * BD_CGRID + i / per;
       U[c] += (float)(au * inv);
@@ -275,6 +278,10 @@ int bd_features(const uint8_t *yuyv, int width, int height, double u, double v, 
     U[k] = (float)((U[k] / cn - 128) / 32);
     V[k] = (float)((V[k] / cn - 128) / 32);
   }
+  float *L = V + BD_CGRID * BD_CGRID;
+  L[0] = (float)((mean - 128) / 64);
+  L[1] = (float)((mid / (n / 4) - 128) / 64);
+  L[2] = (float)((sd - 4) / 64);
   return BD_NFEAT;
 }
 

@@ -50,7 +50,7 @@ int bd_field_boundary(bd *w, const uint8_t *labels, int wl, int hl, uint8_t gree
 typedef struct bd_candidate {
   double u, v, radius;       /* px */
   double inner, ring;        /* fraction of non-field labels inside the disc and in a ring around it */
-  double score;              /* inner - ring */
+  double score;              /* inner - ring - the inner box's fraction beyond the boundary */
   double prob;               /* the classifier's probability (bd_candidates leaves it -1) */
 } bd_candidate;
 
@@ -66,11 +66,14 @@ int bd_candidates(bd *w, const uint8_t *labels, int wl, int hl, int scale, uint8
 
 /* Features of a square patch of side 2 * margin * radius around (u, v) in a YUYV frame:
  * BD_GRID x BD_GRID luma cells (mean over up to 3 x 3 samples each), normalised to zero mean and
- * unit spread, then BD_CGRID x BD_CGRID cells of U - 128 and of V - 128 over 32. Samples outside the
- * frame repeat its edge. Writes BD_NFEAT floats. */
+ * unit spread, then BD_CGRID x BD_CGRID cells of U - 128 and of V - 128 over 32, then BD_NLEVEL
+ * brightness levels that the normalisation removes: (mean - 128) / 64 of the whole patch and of its
+ * middle half (where the ball is), and the spread over 64 (a white ball is brighter than a grey
+ * robot's arm of the same shape). Samples outside the frame repeat its edge. Writes BD_NFEAT floats. */
 #define BD_GRID 16
 #define BD_CGRID 4
-#define BD_NFEAT (BD_GRID * BD_GRID + 2 * BD_CGRID * BD_CGRID)
+#define BD_NLEVEL 3
+#define BD_NFEAT (BD_GRID * BD_GRID + 2 * BD_CGRID * BD_CGRID + BD_NLEVEL)
 int bd_features(const uint8_t *yuyv, int width, int height, double u, double v, double radius,
                 double margin, float *out);
 
@@ -86,13 +89,14 @@ typedef struct bd_obstacle {
 } bd_obstacle;
 
 /* Obstacles in a label image with its field boundary (bd_field_boundary). min_run: rows a run
- * needs at least; max_gap: field-mask labels bridged inside a run (lines seen through legs);
- * min_width: columns of a band, and the columns without a run bridged inside one (the field seen
- * between legs). A run's foot must lie 2 rows below the boundary or more. Up to maxn bands, widest
- * first; returns the count. */
+ * needs at least, min_below of them below the boundary; max_gap: field-mask labels bridged inside a run (lines seen through legs);
+ * leg_gap: rows between a short run and the run above it that still make one (its foot is the
+ * short run's: legs blurred into the field's colour above the feet); min_width: columns of a band,
+ * and the columns without a run bridged inside one (the field seen between legs). A run's foot
+ * must lie 2 rows below the boundary or more. Up to maxn bands, widest first; returns the count. */
 int bd_obstacles(bd *w, const uint8_t *labels, int wl, int hl, const int16_t *top, uint8_t field_mask,
-                 uint8_t red, uint8_t blue, int min_run, int max_gap, int min_width, bd_obstacle *out,
-                 int maxn);
+                 uint8_t red, uint8_t blue, int min_run, int min_below, int max_gap, int leg_gap,
+                 int min_width, bd_obstacle *out, int maxn);
 
 /* A small classifier: nin inputs -> nhid ReLU units -> one sigmoid output. */
 typedef struct bd_mlp bd_mlp;

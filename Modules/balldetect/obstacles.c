@@ -15,10 +15,10 @@ static int by_width(const void *a, const void *b) {
 }
 
 int bd_obstacles(bd *w, const uint8_t *labels, int wl, int hl, const int16_t *top, uint8_t field_mask,
-                 uint8_t red, uint8_t blue, int min_run, int max_gap, int min_width, bd_obstacle *out,
-                 int maxn) {
+                 uint8_t red, uint8_t blue, int min_run, int min_below, int max_gap, int leg_gap,
+                 int min_width, bd_obstacle *out, int maxn) {
   (void)w;
-  if (!labels || !top || !out || wl <= 0 || hl <= 0 || wl > 4096 || maxn < 0) return BD_EARG;
+  if (!labels || !top || !out || wl <= 0 || hl <= 0 || wl > 4096 || maxn < 0 || leg_gap < 0) return BD_EARG;
   col cols[4096];
   for (int x = 0; x < wl; x++) {
     col *c = &cols[x];
@@ -26,10 +26,18 @@ int bd_obstacles(bd *w, const uint8_t *labels, int wl, int hl, const int16_t *to
     /* from the bottom up: the first obstacle label starts a run; bridged field-mask labels up to
      * max_gap; the run ends at a longer gap. Kept when long enough and up to the boundary. */
     int y = hl - 1;
+    /* foot and top of the runs below when they chain up to this one, and their labels below the boundary */
+    int chain = -1, chain_top = -1, chain_below = 0;
     while (y >= 0) {
       while (y >= 0 && (labels[(size_t)y * wl + x] & field_mask)) y--;
       if (y < 0) break;
-      const int foot = y;
+      /* a run starting within leg_gap rows above the last one continues it: thin legs smeared by
+       * motion blur take the field's colour, and the feet below them are the robot's foot */
+      if (chain < 0 || chain_top - y > leg_gap) {
+        chain = y;
+        chain_below = 0;
+      }
+      const int foot = chain;
       int gap = 0, yt = y, nred = 0, nblue = 0, n = 0;
       for (; y >= 0; y--) {
         const uint8_t l = labels[(size_t)y * wl + x];
@@ -39,13 +47,16 @@ int bd_obstacles(bd *w, const uint8_t *labels, int wl, int hl, const int16_t *to
           gap = 0;
           yt = y;
           n++;
+          chain_below += y > top[x];
           nred += (l & red) != 0;
           nblue += (l & blue) != 0;
         }
       }
-      /* the foot stands on the field, below its boundary (what rises from the boundary itself
-       * is the world beyond the field) */
-      if (n >= min_run && yt <= top[x] && foot >= top[x] + 2) {
+      /* the foot stands on the field, below its boundary, with min_below labels of the run (and
+       * of the runs chained to it) below the boundary: what rises from the boundary itself is the
+       * world beyond the field, and so is a strip between the boundary's hull and a field edge
+       * that the lens bent */
+      if (n >= min_run && yt <= top[x] && foot >= top[x] + 2 && chain_below >= min_below) {
         c->ok = 1;
         c->top = (int16_t)yt;
         c->foot = (int16_t)foot;
@@ -55,6 +66,7 @@ int bd_obstacles(bd *w, const uint8_t *labels, int wl, int hl, const int16_t *to
       }
       /* too short or inside the field (a ball, a mark): look further up, above what was seen */
       if (yt <= top[x]) break;
+      chain_top = yt;
       y = yt - 1;
     }
   }

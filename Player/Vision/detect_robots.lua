@@ -3,9 +3,11 @@
 -- field to the boundary), with the team colour where their jersey shows.
 --
 --   local detect_robots = require('Vision.detect_robots')
---   detect_robots.find(bd, p, cm, pose, cfg.robots, out)
+--   detect_robots.find(bd, p, cm, pose, cfg.robots, ball, out)
 --   -- out.n; out[i] = { x, y (m, robot frame, the robot's middle on the ground), range, team (-1 unknown,
 --   --   0 blue, 1 red), u0, v0, u1, v1 (px box), foot_visible }; nearest first, at most 4
+-- ball: the ball detected in this frame (Vision.detect's result): a band that is the ball (the white
+-- one's dark patches against what is beyond the field) is not a robot.
 local project = require('Vision.project')
 
 local M = {}
@@ -21,7 +23,15 @@ end
 local bands, merged = {}, {}   -- reused from frame to frame: no garbage per frame
 local function leftmost(a, b) return a.x0 < b.x0 end
 
-function M.find(bd, p, cm, pose, cfg, out)
+-- the band (label columns x0..x1, foot row) is the ball detected: within its width, its foot at its bottom
+local function is_ball(ball, s, x0, x1, foot)
+  if not ball.detected then return false end
+  local r = ball.radius
+  return x0 * s >= ball.u - 1.2 * r and (x1 + 1) * s <= ball.u + 1.2 * r and
+    math.abs((foot + 1) * s - (ball.v + r)) <= r
+end
+
+function M.find(bd, p, cm, pose, cfg, ball, out)
   out.n = 0
   local n = bd:obstacles(p.labels, p.wa, p.ha, cfg)
   local s = p.scale
@@ -32,7 +42,7 @@ function M.find(bd, p, cm, pose, cfg, out)
   for i = 0, n - 1 do
     local o = bd.obst[i]
     local _, _, dh = ground(cm, pose, s, o.x0, o.x1, o.foot)
-    if dh then
+    if dh and not is_ball(ball, s, o.x0, o.x1, o.foot) then
       nb = nb + 1
       local b = bands[nb] or {}
       bands[nb] = b
@@ -59,6 +69,9 @@ function M.find(bd, p, cm, pose, cfg, out)
   end
   for _, o in ipairs(merged) do
     local gx, gy, dh = ground(cm, pose, s, o.x0, o.x1, o.foot)
+    -- a foot within the own body's footprint is the own body (its feet, arms or shoulders at the
+    -- image's bottom edge when the head looks down): no other robot stands there
+    if gx and gx <= cfg.self_x and math.abs(gy) <= cfg.self_y then gx = nil end
     if gx then
       local hx, hy = gx - pose[1], gy - pose[2]
       local width = (o.x1 - o.x0 + 1) * s * dh / cm.f      -- m, at the foot's range

@@ -94,7 +94,7 @@ function Pipeline:detect(frame, pose)
   end
   detect.goal_posts(self.p, self.cm, pose, self.cfg.goal, res.goals)
   if self.cfg.robots.enabled then
-    detect_robots.find(self.bd, p, self.cm, pose, self.cfg.robots, res.robots)
+    detect_robots.find(self.bd, p, self.cm, pose, self.cfg.robots, res.ball, res.robots)
   else
     res.robots.n = 0
   end

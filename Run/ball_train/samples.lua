@@ -31,6 +31,9 @@ local margin = tonumber(os.getenv('BALL_MARGIN') or '1.4')
 math.randomseed(seed)
 local radius = vcfg.ball.diameter / 2
 local counts = { pos = 0, neg = 0, truth = 0 }
+-- all the candidates the search can give, not only the ones the detector classifies: more hard
+-- negatives (robots' arms and feet, the own body, posts, line crossings) per frame
+local cand_cfg = setmetatable({ max_candidates = balldetect.MAXCAND }, { __index = w })
 
 local function write(label, u, v, r, fr)
   balldetect.C.bd_features(fr.yuyv, fr.width, fr.height, u, v, r, margin, feat)
@@ -42,7 +45,7 @@ for fr in file:each() do
   bd:boundary(p.labels, p.wa, p.ha, w.green, w.boundary_run)
   bd:set_view(fr.cm, fr.pose)
   local b = fr.ball
-  local n = bd:candidates(p.labels, p.wa, p.ha, p.scale, w.green, radius, w)
+  local n = bd:candidates(p.labels, p.wa, p.ha, p.scale, w.green, radius, cand_cfg)
   for i = 0, n - 1 do
     local c = bd.cand[i]
     local d = math.sqrt((c.u - b.u) ^ 2 + (c.v - b.v) ^ 2)

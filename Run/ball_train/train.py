@@ -10,7 +10,7 @@ import sys
 
 import numpy as np
 
-NFEAT = 16 * 16 + 2 * 4 * 4
+NFEAT = 16 * 16 + 2 * 4 * 4 + 3  # balldetect.h BD_NFEAT
 
 
 def load(path):

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Trains the white-ball classifier from frames the sim renders, and writes it where the vision
 # loads it (vision.ball.white.model, Config/common/ball_white.mlp). CPU, a few minutes.
-#   Run/ball_train/train.sh [OUT]        FRAMES=N per chunk (250), CHUNKS=N (16), OTHERS=K robots (3)
+#   Run/ball_train/train.sh [OUT]        FRAMES=N per chunk (250), CHUNKS=N (40), OTHERS=K robots (3)
+#   SAMPLES=FILE keeps the samples there (train.py can be rerun on them with other settings)
 # Training seeds are 1000 + chunk: the tests render their scenes from seeds below 1000
 # (Tests/vision/ball_frames_test.sh), so no test frame is a training frame.
 set -eu
@@ -9,7 +10,7 @@ cd "$(dirname "$0")/../.."
 source Run/env.sh
 OUT="${1:-Config/common/ball_white.mlp}"
 FRAMES="${FRAMES:-250}"
-CHUNKS="${CHUNKS:-16}"
+CHUNKS="${CHUNKS:-40}"
 OTHERS="${OTHERS:-3}"
 MARGIN=1.4
 TMP="$(mktemp -d /tmp/ball_train.XXXXXX)"
@@ -22,3 +23,4 @@ for c in $(seq 1 "$CHUNKS"); do
   BALL_MARGIN=$MARGIN luajit Run/ball_train/samples.lua "$TMP/frames.bin" "$TMP/samples.bin" "$seed"
 done
 python3 Run/ball_train/train.py "$TMP/samples.bin" "$OUT" --margin $MARGIN
+if [ -n "${SAMPLES:-}" ]; then mv "$TMP/samples.bin" "$SAMPLES"; fi

@@ -91,6 +91,15 @@ describe('robot detection', function()
     end
   end)
 
+  it('takes nothing inside its own footprint for a robot (its own feet and arms), what stands beyond it yes', function()
+    local pose = pose_for(0, -1.0)
+    local inside = detect(render(pose, 0.3, 0.0, 1), 0, -1.0)   -- foot point 0.2 m ahead: vision.robots.self_x
+    assert.are.equal(0, inside.n)
+    local beyond = detect(render(pose, 0.45, 0.0, 1), 0, -1.0)
+    assert.are.equal(1, beyond.n)
+    assert.is_true(math.abs(beyond[1].x - 0.45) < RADIUS + 0.1, string.format('foot at %.2f', beyond[1].x))
+  end)
+
   it('sees no robot on an empty field, nor the ball', function()
     local pose = pose_for(0, -0.3)
     assert.are.equal(0, detect(render(pose), 0, -0.3).n)

@@ -70,7 +70,7 @@ int main(void) {
     }
   bd_field_boundary(w, L, W, H, GREEN, 4, top);
   bd_obstacle ob[8];
-  n = bd_obstacles(w, L, W, H, top, GREEN | WHITE, RED, 4, 6, 3, 3, ob, 8);   /* the line: 3 rows bridged */
+  n = bd_obstacles(w, L, W, H, top, GREEN | WHITE, RED, 4, 6, 2, 3, 0, 3, ob, 8);   /* the line: 3 rows bridged */
   check(n == 1, "one obstacle: the robot (not the sky, the line or the spot in the field)");
   check(n >= 1 && ob[0].x0 == 100 && ob[0].x1 == 120 && ob[0].foot == 100 && ob[0].foot_visible,
         "its columns and its foot");

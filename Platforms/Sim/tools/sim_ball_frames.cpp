@@ -1,6 +1,6 @@
 // sim_ball_frames: renders seeded random head-camera frames with their truth, for training and testing
 // the ball and robot detectors (Run/ball_train, Tests/vision/ball_frames_test.sh).
-//   sim_ball_frames --out FILE [--count N] [--seed N] [--others K] [--ball white|orange]
+//   sim_ball_frames --out FILE [--count N] [--seed N] [--others K] [--ball white|orange] [--walk 1]
 // Each scene: this robot somewhere on the carpet, the head anywhere in its range; the ball in view
 // in about 2/3 of the scenes (0.25..5 m, also partly in view), elsewhere on the carpet otherwise;
 // 0..K other robots around (0.4..4 m, any yaw), of either team; the ball turned any way (its
@@ -9,6 +9,11 @@
 // the head (up to 4 rad/s, a head sweeping or the body swaying in a walk) and a step of the body
 // (up to 0.3 m/s) during the exposure. --ball: the ball the camera sees (default: the sim config's ball.kind). The seed picks everything: training and test frames
 // differ by their seeds.
+// --walk 1: the robot walking: the torso swaying about its feet at a random phase of the gait (roll
+// +-4 deg, pitch 0..+5 deg at twice the step rate, the camera 1 cm up and down), its sway's turn rate
+// in the motion blur with the head's and body's, and the camera pose given to the vision off the true
+// one by up to 1.5 deg in roll and pitch (a torso estimate from the IMU in a walk; the OP3's gait and
+// its filter's error are not measured here: conservative round figures, larger than a gentle gait's).
 //
 // File (little-endian): "HRPBFRM1", i32 width, height, count, others; then per frame:
 //   f64 f, cx, cy, camera x, y (robot frame: the torso's ground point, x forward, y left), R[9]
@@ -37,6 +42,24 @@ void put(FILE *f, const void *p, size_t n) {
 void putd(FILE *f, double x) { put(f, &x, 8); }
 void puti(FILE *f, int32_t x) { put(f, &x, 4); }
 
+// The pixel of p and whether it lies in the frame. The lens polynomial turns back beyond the
+// frame's corners (k2 < 0), folding points far outside the view into the image: a point counts
+// only when its pinhole radius is within the corners' (undistorted) one.
+bool in_frame(const sim::Camera &c, const sim::Vec3 &p, double *u, double *v) {
+  if (!sim::camera_project(c, p, u, v) || *u < 0 || *v < 0 || *u >= c.width || *v >= c.height) return false;
+  const sim::Vec3 q = c.rot.transpose() * (p - c.pos);
+  const double x = -q.y() / q.x(), y = -q.z() / q.x();
+  double r2max = 0;
+  const sim::Lens l = c.lens();
+  for (int k = 0; k < 4; k++) {
+    double cx = ((k & 1) ? c.width : 0) - c.pu(), cy = ((k & 2) ? c.height : 0) - c.pv(), xu = cx / c.fu(),
+           yu = cy / c.fv();
+    if (c.distorted()) l.undistort(cx / c.fu(), cy / c.fv(), &xu, &yu);
+    r2max = std::max(r2max, xu * xu + yu * yu);
+  }
+  return x * x + y * y <= r2max;
+}
+
 }  // namespace
 
 int main(int argc, char **argv) {
@@ -44,6 +67,7 @@ int main(int argc, char **argv) {
   int count = 100, others = 3;
   uint64_t seed = 1;
   std::string ball_kind;
+  bool walk = false;
   for (int i = 1; i < argc; i++) {
     std::string a = argv[i];
     if (i + 1 >= argc) {
@@ -55,6 +79,7 @@ int main(int argc, char **argv) {
     else if (a == "--seed") seed = strtoull(argv[++i], nullptr, 10);
     else if (a == "--others") others = atoi(argv[++i]);
     else if (a == "--ball") ball_kind = argv[++i];
+    else if (a == "--walk") walk = atoi(argv[++i]) != 0;
     else {
       fprintf(stderr, "sim_ball_frames: unknown option %s\n", a.c_str());
       return 2;
@@ -123,6 +148,26 @@ int main(int argc, char **argv) {
       }
       sim::Camera c;
       w.camera_pose(0, &c.pos, &c.rot);
+      // walking: the torso's sway about the feet (rotation in the robot's heading frame), and its
+      // turn rate during the exposure (the gait's period about 0.6 s: sway rate = amplitude * 2 pi / T)
+      sim::Mat3 sway = sim::Mat3::Identity(), sway_start = sim::Mat3::Identity();
+      sim::Mat3 est_err = sim::Mat3::Identity();
+      if (walk) {
+        const double phase = rnd(0, 2 * M_PI), T = 0.6, dt = ren.realism().exposure;
+        auto sway_at = [&](double ph) {
+          const double roll = 0.07 * std::sin(ph), pitch = 0.045 + 0.045 * std::sin(2 * ph);
+          const sim::Mat3 head = Eigen::AngleAxisd(ryaw, sim::Vec3::UnitZ()).toRotationMatrix();
+          return sim::Mat3(head * Eigen::AngleAxisd(roll, sim::Vec3::UnitX()).toRotationMatrix() *
+                           Eigen::AngleAxisd(pitch, sim::Vec3::UnitY()).toRotationMatrix() * head.transpose());
+        };
+        sway = sway_at(phase);
+        sway_start = sway_at(phase - 2 * M_PI * dt / T);
+        const sim::Vec3 foot(rx, ry, 0);
+        c.pos = foot + sway * (c.pos - foot) + sim::Vec3(0, 0, 0.01 * std::sin(2 * phase));
+        c.rot = sway * c.rot;
+        est_err = Eigen::AngleAxisd(rnd(-0.026, 0.026), sim::Vec3::UnitX()).toRotationMatrix() *
+                  Eigen::AngleAxisd(rnd(-0.026, 0.026), sim::Vec3::UnitY()).toRotationMatrix();
+      }
       c.width = p.cam_width;
       c.height = p.cam_height;
       c.fovy = p.cam_fovy;
@@ -137,7 +182,8 @@ int main(int argc, char **argv) {
         const double exposure = ren.realism().exposure;
         const sim::Vec3 turn = sim::Vec3(rnd(-1, 1), rnd(-1, 1), rnd(-1, 1)).normalized();
         shot.cam_start = c;
-        shot.cam_start.rot = Eigen::AngleAxisd(-rnd(0, 4) * exposure, turn).toRotationMatrix() * c.rot;
+        const sim::Mat3 swayed = sway_start * sway.transpose();   // the sway during the exposure
+        shot.cam_start.rot = Eigen::AngleAxisd(-rnd(0, 4) * exposure, turn).toRotationMatrix() * swayed * c.rot;
         shot.cam_start.pos = c.pos - rnd(0, 0.3) * exposure * sim::Vec3(std::cos(ryaw), std::sin(ryaw), 0);
         shot.has_start = true;
       }
@@ -159,7 +205,8 @@ int main(int argc, char **argv) {
       to_robot(c.pos.x(), c.pos.y(), &cxr, &cyr);
       putd(f, cxr);
       putd(f, cyr);
-      const sim::Mat3 Rr = Eigen::AngleAxisd(-t.yaw, sim::Vec3::UnitZ()).toRotationMatrix() * c.rot;
+      // the pose the vision gets: the true one, or with the torso estimate's error when walking
+      const sim::Mat3 Rr = est_err * Eigen::AngleAxisd(-t.yaw, sim::Vec3::UnitZ()).toRotationMatrix() * c.rot;
       for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++) putd(f, Rr(i, j));
       putd(f, c.pos.z());
@@ -195,8 +242,7 @@ int main(int argc, char **argv) {
         const sim::Truth o = w.truth(r);
         double oxr, oyr, ou = -1, ov = -1;
         to_robot(o.x, o.y, &oxr, &oyr);
-        const bool in = sim::camera_project(c, sim::Vec3(o.x, o.y, 0), &ou, &ov) && ou >= 0 && ov >= 0 &&
-                        ou < c.width && ov < c.height;
+        const bool in = in_frame(c, sim::Vec3(o.x, o.y, 0), &ou, &ov);
         putd(f, oxr);
         putd(f, oyr);
         putd(f, ou + 0.5);
