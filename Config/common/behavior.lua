@@ -158,6 +158,8 @@ return {
       max_side = 0.16,           -- m: the ball this far to the side: align again
       max_ahead = 0.6,           -- m: the ball this far ahead: approach again
       min_ahead = 0.02,          -- m: the ball nearer (under the feet, behind): align again
+      fresh_age = 0.3,           -- s: a ball seen longer ago (the head looking at the goal) is taken
+                                 -- to roll on ahead: the three tests above wait for a new sighting
       slow_min = 0.3,            -- the least fraction of speed kept for a ball off to the side
       side_gain = 1.0,           -- 1/s: side-step per m of the ball's sideways offset
       side_per_turn = 0.1,       -- m/s of side-step per rad of attack direction error
