@@ -139,19 +139,19 @@ return {
     maxSpeed = { 0.15, 0.04, 0.3 }, -- m/s, m/s, rad/s: the walk no faster at the kick step's start
                              -- (tuned at 0.12 m/s straight; out of a 0.25 m/s walk it fell)
     forward = {
-      tStep = 0.565, phSingle = { 0.06, 0.94 },
+      tStep = 0.505, phSingle = { 0.06, 0.94 },
       ball = { x = 0.21, y = 0.013 },
       contact = { x = 0.13, y = 0.013 },
-      reach = { x = { -0.07, 0.14 }, y = { 0.07, 0.16 } },
-      support = { x = 0.006, y = 0.003 },
+      reach = { x = { -0.0525, 0.14 }, y = { 0.07, 0.16 } },
+      support = { x = -0.0035, y = 0.0151 },
       phases = {
-        { duration = 0.05, x = -0.10, z = 0.04 },
-        { duration = 0.1874, x = -0.2, z = 0.0612, hip = -0.0857, knee = 0.5811, ankle = -0.4477, arm = 0.3 },
-        { duration = 0.03, x = 0.035, z = 0.0302, hip = -0.5656, knee = -0.1176, ankle = 0.2674, arm = 0.2,
-          tilt = -0.2389, arms = 0.3789 },
-        { duration = 0.0912, x = 0.035, z = 0.0302, hip = -0.5656, knee = -0.1176, ankle = 0.2674, arm = 0.2,
-          tilt = -0.2389, arms = 0.3789 },
-        { duration = 0.0786, x = -0.04, z = 0.045 },
+        { duration = 0.05, x = -0.1, z = 0.04 },
+        { duration = 0.1244, x = -0.2, z = 0.0484, hip = -0.1867, knee = 0.5572, ankle = -0.4009, arm = 0.3 },
+        { duration = 0.03, x = 0.0256, z = 0.0406, hip = -0.6542, knee = -0.267, ankle = 0.0992, arm = 0.2,
+          tilt = -0.3874, arms = 0.3646 },
+        { duration = 0.0889, x = 0.0256, z = 0.0406, hip = -0.6542, knee = -0.267, ankle = 0.0992,
+          arm = 0.2, tilt = -0.3874, arms = 0.3646 },
+        { duration = 0.0913, x = -0.04, z = 0.045 },
       },
     },
     side = {
