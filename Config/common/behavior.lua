@@ -184,7 +184,9 @@ return {
     },
     attack_depth = 0.5,        -- m behind the goal line: the point aimed at
     dribble_distance = 1.2,    -- m: nearer than this to the goal line, walk the ball in
-    follow_time = 3.0,         -- s walking after the ball following a kick
+    follow_time = 3.0,         -- s walking after the ball following a kick ...
+    follow_speed = 0.15,       -- m/s ... at most this fast (out of a kick step out of the walk a
+                               -- start at the approach speed threw the OP3 over in the scoring runs)
     reposition = { -1.5, 0.0 }, -- field point to walk to when the ball is lost
     reposition_timeout = 10.0, -- s walking back towards the ball's last estimate before searching
   },

@@ -128,9 +128,16 @@ return {
   -- the ball's depth at that height). The strike is a short phase: the servos run at their speed
   -- limit (4.8 rad/s) through it. Way-points relative to the contact point (see walk_kick.lua).
   -- forward: from the cross-entropy search of Tests/motion/walk_kick_tune.sh (walking at 0.12 m/s,
-  -- both feet, ball positions across the zone, penalised for a fall or a stop): 0.55-0.92 m over
-  -- the sweep of Tests/motion/walk_kick_sweep.sh, the robot walking on; toe ~1.2-1.5 m/s, the foot
-  -- pushes the ball more than it strikes it. Found the hard way: a kick step whose single support
+  -- both feet, ball positions across the zone, penalised for a fall or a stop), two rounds: the
+  -- second over wider ranges (the torso thrown back 0.39 rad through the strike, the knee
+  -- straightened past the IK's pose, a short wind-up: the foot drawn back no more than 0.05 m
+  -- behind the support ankle, and the strike held 0.09 s so the leg still runs at the servos'
+  -- speed at contact): 1.01-1.26 m over the sweep of Tests/motion/walk_kick_sweep.sh, no fall, the
+  -- robot walking on; toe ~1.6-1.8 m/s at contact (was 1.2-1.5), the ball off at ~1.7 m/s. A
+  -- wind-up further back or a bigger hip/knee swing (the standing kick's) came out slower: the
+  -- foot falls from a higher wind-up, meets the ball going down, or scrapes the ground; the short
+  -- strike phase toward a target near the ball slows the servos before contact (their speed is
+  -- 30/s x the error). Found the hard way: a kick step whose single support
   -- lasts 0.4 s or more with the foot reaching 0.18 m ahead fell every time (the pendulum plan of a
   -- long single support is fragile), and a harder strike (hip -1.5, torso back 0.3 rad) fell after
   -- the kick. side: set by hand (0.5-0.65 m sideways in its zone, not tuned).
