@@ -3,7 +3,7 @@
 # in the sim's lockstep (the motion process alone): the OP3 walks, a ball is put in its kick zone,
 # Walk.kick asks for a forward or side kick with either foot; every kick sends the ball
 # its kind's minimum (the sim's truth; WALK_KICK_MIN_FORWARD default 1.0 m, WALK_KICK_MIN_SIDE 0.4 m,
-# what the kicks do now: forward 1.01-1.26 m, side 0.5-0.6 m where the foot meets the ball; issue
+# what the kicks do now: forward 1.05-1.41 m, side 0.4-0.6 m where the foot meets the ball; issue
 # 16's 1.5 m is not met, the figure is printed against it) while the robot walks on (no stop, no
 # fall). Prints the distance per case
 # (Tests/motion/walk_kick_scenario.lua).

@@ -28,7 +28,7 @@ return {
     -- more (slowing for it, approach and align after it) than it gains over dribbling at 0.3 m/s.
     walk_kick = {
       enabled = true,
-      max_range = 1.4,         -- m: the kick sends the ball 1.0-1.25 m: a shot to finish, not a pass
+      max_range = 1.4,         -- m: the kick sends the ball 1.05-1.4 m: a shot to finish, not a pass
       speed = 0.12,            -- m/s: the walk the kick was tuned at (walk_kick_tune.sh) ...
       max_vx = 0.14,           -- m/s: ... asked for below this (walk.lua walkKick.maxSpeed: 0.15)
     },
