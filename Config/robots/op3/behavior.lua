@@ -23,8 +23,10 @@ return {
     -- shooting with a kick out of the walk (walk.lua's walkKick.forward: the ball ~0.19 m ahead of
     -- the support ankle, in line with the kicking foot) to finish: the ball within max_range of the
     -- point aimed at (0.5 m behind the goal line), i.e. within ~0.9 m of the line. Scoring
-    -- (Tests/scenarios/score_test.sh, 10 seeds, lockstep, these speeds): with it 10/10, median
-    -- 54.8 s, no fall; without it 10/10, median 56.3 s. From further out the 1.0-1.25 m kick costs
+    -- (Tests/scenarios/score_test.sh, 10 seeds, lockstep, these speeds, a loaded machine: runs of
+    -- one setting differ by ~5 s in the median): without it 10/10, median 56.3 s; with the
+    -- 1.0-1.26 m kick 10/10, 54.8 s, no fall; with the 1.05-1.41 m kick 9/10, 57.8 s (the miss: a
+    -- shot on a wrong pose; 3 falls in one run, while approaching). From further out the kick costs
     -- more (slowing for it, approach and align after it) than it gains over dribbling at 0.3 m/s.
     walk_kick = {
       enabled = true,
