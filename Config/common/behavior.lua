@@ -129,8 +129,10 @@ return {
       -- stepping around another robot in the way (BodyFSM/nav.lua avoid): a robot nearer the straight
       -- path than `clearance` m (its foot point: its nearest edge; both bodies' half widths and a
       -- margin), from `behind` m behind to `short` m before the target, is passed along the tangent
-      -- to that circle turned out by `margin` rad; not within `min_distance` m of the target
-      avoid = { clearance = 0.55, behind = 0.1, short = 0.2, margin = 0.15, min_distance = 0.5 },
+      -- to that circle turned out by `margin` rad; not within `min_distance` m of the target;
+      -- teammates from their messages too, heard within `mate_age` s (a walking robot moves ~0.1 m
+      -- in the message period, 0.5 s)
+      avoid = { clearance = 0.55, behind = 0.1, short = 0.2, margin = 0.15, min_distance = 0.5, mate_age = 1.0 },
     },
     follow_turn_gain = 0.8,    -- 1/s: turning towards the ball's bearing after a kick
     reposition_near = 1.0,     -- m: the ball's last estimate this near: search (the head sees it from here)
@@ -165,6 +167,11 @@ return {
       side_per_turn = 0.1,       -- m/s of side-step per rad of attack direction error
       turn_gain = 0.8,           -- 1/s
       max_va = 0.4,              -- rad/s
+      -- another robot in the lane ahead of the ball (within `avoid_ahead` m, nearer its line to the
+      -- goal than `avoid_lane` m: both half widths and the ball's) is passed: the aim turned to its
+      -- side, by the angle that clears it by the lane, at most `avoid_angle` rad (under max_angle:
+      -- the dribble goes on)
+      avoid_ahead = 1.2, avoid_lane = 0.45, avoid_angle = 0.45,
     },
     -- shooting with a kick out of the walk (Player/BodyFSM/shot.lua, kick.lua): off by default (a
     -- body whose walk config has walkKick turns it on in its behavior.lua, with its kick zone)

@@ -58,6 +58,9 @@ return {
     striker_margin = 1.5,      -- s: the striker keeps the ball until another is this much faster
     keeper_depth = 0.5,        -- m out from the own goal's centre towards the ball
     keeper_clear = 1.5,        -- m: a ball this near the own goal's centre: the goalkeeper clears it
+                               -- (when it is first to it; the striker then waits upfield:)
+    receive_ahead = 1.5,       -- m upfield of the ball ...
+    receive_inside = 0.5,      -- ... at this fraction of the ball's y (towards the centre line)
     defender_fraction = 0.4,   -- of the way from the own goal's centre to the ball
     defender_max_x = -1.0,     -- m: the defender stays behind this line
     defender_home = 1.5,       -- m in front of the own goal while no ball is known

@@ -63,7 +63,8 @@ function M.new(opts)
     team = { enabled = 'boolean', port_base = 'number', broadcast = 'string', period = 'number',
       lost_after = 'number', max_per_step = 'number', max_players = 'number' },
     roles = { enabled = 'boolean', goalkeeper = 'number', walk_speed = 'number', turn_speed = 'number',
-      striker_margin = 'number', keeper_depth = 'number', keeper_clear = 'number', arrive = 'number' },
+      striker_margin = 'number', keeper_depth = 'number', keeper_clear = 'number', arrive = 'number',
+      receive_ahead = 'number', receive_inside = 'number' },
   })
   local port = opts.port or tonumber(os.getenv('HRP_GC_PORT') or '') or nil
   local return_port = opts.return_port or tonumber(os.getenv('HRP_GC_RETURN_PORT') or '') or nil
@@ -210,13 +211,13 @@ end
 function Behavior:assign_role()
   local rc, ctx, w = self.rules.roles, self.ctx, self.world
   ctx.team_ball = w:shared_ball()
-  if not rc.enabled then ctx.role = 'striker' return end
+  if not rc.enabled then ctx.role, ctx.clearing = 'striker', false return end
   local keeper = self.gc.gc_seen and self.gc.goalkeeper_player or rc.goalkeeper
   self.role_cfg = self.role_cfg or setmetatable({}, { __index = rc })
   self.role_cfg.goalkeeper = keeper
   local p = w.pose
-  ctx.role, ctx.roles = roles.assign({ player = self.cfg.player_number, pose = { p.x, p.y, p.a } }, w.mates,
-    self.role_cfg, ctx.team_ball, -w.cfg.field.length / 2, ctx.role)
+  ctx.role, ctx.roles, ctx.clearing = roles.assign({ player = self.cfg.player_number, pose = { p.x, p.y, p.a } },
+    w.mates, self.role_cfg, ctx.team_ball, -w.cfg.field.length / 2, ctx.role, ctx.clearing)
 end
 
 -- Closes the sockets (tests; the process just ends).

@@ -1,11 +1,33 @@
 -- Walk the ball towards the opponent goal: the ball kept centred just ahead of the feet, the
--- robot turning towards the attack direction and side-stepping to stay behind the ball. Used
+-- robot turning towards the attack direction (round a robot in the way: M.detour) and
+-- side-stepping to stay behind the ball. Used
 -- instead of kicking when the kick moves the ball little (config body.dribble).
 local nav = require('BodyFSM.nav')
 local localize = require('BodyFSM.localize')
 local shot = require('BodyFSM.shot')
 
 local M = {}
+
+-- The aim's turn (rad, + left) that passes a robot standing in the lane ahead of the ball (bx, by;
+-- attack direction ux, uy; robot frame), on the side away from it, kept (ctx.dribble_side) while one is there.
+function M.detour(ctx, bx, by, ux, uy)
+  local d = ctx.cfg.body.dribble
+  local best, best_along, best_across
+  for _, o in ipairs(nav.robots(ctx) or {}) do
+    local ox, oy = o.x - bx, o.y - by
+    local along, across = ox * ux + oy * uy, -ox * uy + oy * ux
+    if along > 0 and along < d.avoid_ahead and math.abs(across) < d.avoid_lane
+      and (not best or along < best_along) then
+      best, best_along, best_across = o, along, across
+    end
+  end
+  if not best then ctx.dribble_side = nil return 0 end
+  local side = ctx.dribble_side or (best_across > 0 and -1 or 1)
+  ctx.dribble_side = side
+  -- the aim passes the robot by the lane: the angle from the ball to the point `lane` beside it
+  local need = math.atan2(d.avoid_lane + side * best_across, best_along)
+  return side * math.min(math.max(need, 0), d.avoid_angle)
+end
 
 function M.update(ctx)
   local cfg = ctx.cfg.body
@@ -15,7 +37,7 @@ function M.update(ctx)
   local foot = shot.foot(ctx)
   if foot then ctx.kick_side = foot return 'shoot' end
   local bx, by, ux, uy = nav.attack(ctx)
-  local ea = nav.wrap(math.atan2(uy, ux))
+  local ea = nav.wrap(math.atan2(uy, ux) + M.detour(ctx, bx, by, ux, uy))
   -- while the head looks at the goal the ball's estimate stays where it was last seen and the
   -- robot walks up to it (the ball it pushes rolls on): only a fresh sighting says it got away
   local fresh = ctx.world:ball_age() < d.fresh_age

@@ -39,14 +39,34 @@ function M.behind_ball(ctx)
   return tx, ty, atan2(uy, ux)
 end
 
+-- The robots to keep clear of (robot frame): those seen (world.obstacles) and the teammates heard
+-- within `mate_age` s (world.mates, their own pose estimates), once our pose is trusted: a
+-- teammate is then known even when the camera does not see it or cannot tell its colour.
+function M.robots(ctx)
+  local w = ctx.world
+  local obs = w.obstacles
+  if not w.mates or #w.mates == 0 or not w:localised() then return obs end
+  local list = {}
+  for i, o in ipairs(obs or {}) do list[i] = o end
+  local max_age = ctx.cfg.body.nav.avoid.mate_age
+  for _, m in ipairs(w.mates) do
+    if m.age <= max_age and not m.penalised then
+      local x, y = w:to_robot(m.pose[1], m.pose[2])
+      list[#list + 1] = { x = x, y = y, team = 'mate' }
+    end
+  end
+  return list
+end
+
 -- The point to steer for on the way to (tx, ty) (robot frame): the target itself, or, when another
--- robot (world.obstacles, its foot point) stands in the way, a point on the tangent to a circle of
--- `clearance` m around it. In the way: nearer the straight path than `clearance`, from `behind` m
--- behind the robot (beside it: still in the way) to `short` m before the target. The side is the one away from the
--- obstacle's offset from the path, kept (ctx.avoid_side) until the way is clear, so that the robot
--- does not swing between the two. Inside the circle: straight away from it, sideways.
+-- robot (M.robots: seen, its foot point, or a teammate's reported pose) stands in the way, a point
+-- on the tangent to a circle of `clearance` m around it. In the way: nearer the straight path than
+-- `clearance`, from `behind` m behind the robot (beside it: still in the way) to `short` m before
+-- the target. The side is the one away from the obstacle's offset from the path, kept
+-- (ctx.avoid_side) until the way is clear, so that the robot does not swing between the two.
+-- Inside the circle: straight away from it, sideways.
 function M.avoid(ctx, tx, ty)
-  local obs = ctx.world.obstacles
+  local obs = M.robots(ctx)
   local d = sqrt(tx * tx + ty * ty)
   local av = ctx.cfg.body.nav.avoid
   if not obs or #obs == 0 or d < av.min_distance then ctx.avoid_side = nil return tx, ty end

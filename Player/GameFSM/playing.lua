@@ -40,7 +40,7 @@ function M.update(ctx)
   ctx.setplay = mode
   local x, y
   if mode == 'play' then
-    x, y = position.target(ctx.role or 'striker', ctx.team_ball, ctx.rules.roles, ctx.world.cfg.field)
+    x, y = position.target(ctx.role or 'striker', ctx.team_ball, ctx.rules.roles, ctx.world.cfg.field, ctx.clearing)
   end
   if mode == 'play' and not x then
     if ctx.body:state() == 'idle' then ctx.body:event('start', ctx) end

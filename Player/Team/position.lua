@@ -1,7 +1,8 @@
 -- Where each role stands while it does not play the ball (Player/Team/roles.lua), on the field
--- (own goal at x = -length/2); nil: play the ball (the striker; a goalkeeper clearing a ball near
--- its goal). Numbers: Config/common/game.lua roles.
---   local x, y = position.target(role, ball, cfg, field)   -- ball: {x, y} on the field or nil
+-- (own goal at x = -length/2); nil: play the ball (the striker, unless the goalkeeper is clearing;
+-- the goalkeeper while it clears). Numbers: Config/common/game.lua roles.
+--   local x, y = position.target(role, ball, cfg, field, clearing)   -- ball: {x, y} on the field or nil
+--   clearing: the goalkeeper plays the ball (roles.assign's third result)
 --   local pose = position.ready(role, player, cfg, striker_pose) -- the kick-off position in READY
 local M = {}
 
@@ -9,18 +10,23 @@ local sqrt = math.sqrt
 
 local function clamp(x, lo, hi) if x < lo then return lo elseif x > hi then return hi end return x end
 
-function M.target(role, ball, cfg, field)
+function M.target(role, ball, cfg, field, clearing)
   local gx = -field.length / 2
+  local margin = cfg.field_margin
+  if role == 'striker' and clearing and ball then
+    -- upfield of the ball, towards the centre: where the clearance goes, out of the goalkeeper's way
+    return clamp(ball[1] + cfg.receive_ahead, gx + margin, field.length / 2 - margin),
+      clamp(ball[2] * cfg.receive_inside, -field.width / 2 + margin, field.width / 2 - margin)
+  end
   if role == 'striker' then return nil end
   if role == 'goalkeeper' then
+    if clearing then return nil end
     if not ball then return gx + cfg.keeper_depth, 0 end
     local dx, dy = ball[1] - gx, ball[2]
     local d = sqrt(dx * dx + dy * dy)
-    if d < cfg.keeper_clear then return nil end -- near the goal: clear it
     -- on the line from the goal's centre to the ball, keeper_depth out, within the goal's width
     return gx + cfg.keeper_depth * dx / d, clamp(cfg.keeper_depth * dy / d, -field.goal_width / 2, field.goal_width / 2)
   end
-  local margin = cfg.field_margin
   if role == 'defender' then
     if not ball then return gx + cfg.defender_home, 0 end
     local x = gx + cfg.defender_fraction * (ball[1] - gx)

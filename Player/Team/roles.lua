@@ -8,9 +8,13 @@
 --   defender    the one nearest the own goal among the rest
 --   supporter   everyone else
 -- A robot alone is the striker (or the goalkeeper, if it is the designated one and others play).
+-- A ball within keeper_clear of the own goal's centre is the goalkeeper's to clear when it reaches
+-- it first (the striker's margin kept while it clears); the striker then waits upfield for the
+-- clearance (Team/position.lua) instead of both going for the ball and blocking each other.
 --
---   local role, assignment = roles.assign(me, mates, cfg, ball, own_goal_x, previous)
+--   local role, assignment, clearing = roles.assign(me, mates, cfg, ball, own_goal_x, previous, was_clearing)
 --   me / mates: { player, pose = {x, y, a} }; ball: {x, y} on the field or nil; cfg: game.lua roles
+--   clearing: the goalkeeper plays the ball now (was_clearing: it did at the last assignment)
 local M = {}
 
 local sqrt, atan2, abs = math.sqrt, math.atan2, math.abs
@@ -48,7 +52,7 @@ end
 
 -- The assignment { [player] = role } and this robot's role. `previous` is this robot's last role
 -- (the striker's hysteresis).
-function M.assign(me, mates, cfg, ball, own_goal_x, previous)
+function M.assign(me, mates, cfg, ball, own_goal_x, previous, was_clearing)
   local team = { me }
   for _, m in ipairs(mates) do if not m.penalised then team[#team + 1] = m end end
   local out = {}
@@ -69,11 +73,16 @@ function M.assign(me, mates, cfg, ball, own_goal_x, previous)
     return tb
   end
   local striker = pick(team, t_ball)
+  local clearing = false
+  if keeper and out[keeper.player] and ball and goal_distance({ pose = ball }, own_goal_x) < cfg.keeper_clear then
+    local tk = M.time_to_ball(keeper, ball, cfg) - (was_clearing and cfg.striker_margin or 0)
+    clearing = not striker or tk < M.time_to_ball(striker, ball, cfg)
+  end
   if striker then out[striker.player] = 'striker' remove(team, striker) end
   local defender = pick(team, function(r) return goal_distance(r, own_goal_x) end)
   if defender then out[defender.player] = 'defender' remove(team, defender) end
   for _, r in ipairs(team) do out[r.player] = 'supporter' end
-  return out[me.player], out
+  return out[me.player], out, clearing
 end
 
 return M

@@ -1,7 +1,9 @@
 -- luacheck: std +busted
 -- Stepping around another robot (Player/BodyFSM/nav.lua avoid): the way clear, a robot in the way
--- (passed on the side away from it, the side kept), one beside the path, behind, or past the target.
+-- (passed on the side away from it, the side kept), one beside the path, behind, or past the target;
+-- teammates from their messages; the dribble's detour round a robot ahead of the ball.
 local nav = require('BodyFSM.nav')
+local dribble = require('BodyFSM.dribble')
 local Config = require('Config')
 
 local body = Config.load('behavior', nil, { robot = 'op3', platform = 'Sim' }).body
@@ -47,5 +49,48 @@ describe('nav avoid', function()
     assert.are.equal(3.0, d)
     assert.is_true(va ~= 0 or vy ~= 0, 'turns or side-steps away')
     assert.is_true(vx >= 0)
+  end)
+
+  -- a world at the field's origin facing +x (robot frame = field frame), with teammates heard
+  local function with_mates(mates, localised)
+    local ctx = ctx_with({})
+    ctx.world.mates = mates
+    ctx.world.localised = function() return localised end
+    ctx.world.to_robot = function(_, fx, fy) return fx, fy end
+    return ctx
+  end
+  local function mate(x, y, age) return { pose = { x, y, 0 }, age = age or 0.2, penalised = false } end
+
+  it('steps around a teammate in the way that it knows from its messages, once its own pose is trusted', function()
+    local ctx = with_mates({ mate(1.0, 0.1) }, true)
+    local wx, wy = nav.avoid(ctx, 3.0, 0)
+    assert.is_true(wy < 0 and wx > 0, 'waypoint ' .. wx .. ', ' .. wy)
+    -- an old message, a penalised teammate, or our pose not trusted: not an obstacle
+    for _, c in ipairs({ with_mates({ mate(1.0, 0.1, body.nav.avoid.mate_age + 0.1) }, true),
+      with_mates({ mate(1.0, 0.1) }, false) }) do
+      wx, wy = nav.avoid(c, 3.0, 0)
+      assert.are.equal(3.0, wx)
+      assert.are.equal(0, wy)
+    end
+    local pen = mate(1.0, 0.1)
+    pen.penalised = true
+    assert.are.equal(0, select(2, nav.avoid(with_mates({ pen }, true), 3.0, 0)))
+  end)
+
+  it('dribbling: the aim turns away from a robot in the lane ahead of the ball, enough to clear it', function()
+    local d = body.dribble
+    local ctx = ctx_with({ { x = 0.9, y = 0.2 } }) -- ahead, a little left of the ball's line
+    local turn = dribble.detour(ctx, 0.2, 0, 1, 0)
+    assert.is_true(turn < 0 and turn >= -d.avoid_angle, 'turn ' .. turn)
+    assert.is_true(math.abs(turn - -math.atan2(d.avoid_lane - 0.2, 0.7)) < 1e-9)
+    -- the side is kept while the robot is in the lane
+    ctx.world.obstacles[1].y = -0.05
+    assert.is_true(dribble.detour(ctx, 0.2, 0, 1, 0) < 0)
+    -- out of the lane, behind the ball, or beyond the look-ahead: straight on, and the side forgotten
+    for _, o in ipairs({ { x = 0.9, y = 0.6 }, { x = 0.1, y = 0 }, { x = 0.2 + d.avoid_ahead + 0.1, y = 0 } }) do
+      ctx.world.obstacles[1] = o
+      assert.are.equal(0, dribble.detour(ctx, 0.2, 0, 1, 0))
+      assert.is_nil(ctx.dribble_side)
+    end
   end)
 end)

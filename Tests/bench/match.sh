@@ -10,7 +10,8 @@
 # ALONE="2" (team numbers, space-separated): those teams' robots play without team play (no team
 # messages, no roles: each robot alone; game.lua's team.enabled, roles.enabled), for Run/league.py.
 # The robots see each other (jerseys in the sim camera, the vision block's robots, the world's obstacles) and walk
-# around them on the way to a point (BodyFSM/nav.lua); dribbling does not avoid them yet.
+# around them on the way to a point (BodyFSM/nav.lua; teammates also from their messages); dribbling turns its
+# aim round a robot in the lane ahead of the ball (BodyFSM/dribble.lua).
 set -u
 cd "$(dirname "$0")/../.." || exit 1
 source Run/env.sh

@@ -61,12 +61,42 @@ describe('roles', function()
     assert.are.equal('defender', (roles.assign(me, { much }, cfg(0), ball, GOAL_X, 'striker')))
   end)
 
+  it('the goalkeeper clears a ball near its goal only when first to it; the striker then waits upfield', function()
+    local rc = rules.roles
+    local near = { GOAL_X + 1.0, 0.4 }
+    local keeper, chaser = r(1, GOAL_X + 0.5, 0, 0), r(2, GOAL_X + 2.5, 0.4, math.pi)
+    local role, all, clearing = roles.assign(keeper, { chaser }, cfg(1), near, GOAL_X)
+    assert.are.equal('goalkeeper', role)
+    assert.are.same({ [1] = 'goalkeeper', [2] = 'striker' }, all)
+    assert.is_true(clearing)
+    -- the teammate computes the same
+    assert.is_true(select(3, roles.assign(chaser, { keeper }, cfg(1), near, GOAL_X, 'striker')))
+    assert.is_nil(position.target('goalkeeper', near, rc, field, true))
+    local x, y = position.target('striker', near, rc, field, true)
+    assert.are.equal(near[1] + rc.receive_ahead, x)
+    assert.is_true(math.abs(y) < near[2])
+    -- the striker at the ball, the goalkeeper further: the goalkeeper keeps its place
+    local at_ball = r(2, GOAL_X + 1.1, 0.4, math.pi)
+    clearing = select(3, roles.assign(keeper, { at_ball }, cfg(1), near, GOAL_X))
+    assert.is_false(clearing)
+    assert.is_not_nil(position.target('goalkeeper', near, rc, field, false))
+    assert.is_nil(position.target('striker', near, rc, field, false))
+    -- a little faster than the clearing goalkeeper is not enough to take the ball from it
+    local a_bit = r(2, GOAL_X + 1.0 + 0.5 * rc.striker_margin * rc.walk_speed + 0.5, 0.4, math.pi)
+    local tk = roles.time_to_ball(keeper, near, rc)
+    assert.is_true(roles.time_to_ball(a_bit, near, rc) < tk, 'the teammate is faster')
+    assert.is_true(select(3, roles.assign(keeper, { a_bit }, cfg(1), near, GOAL_X, 'goalkeeper', true)))
+    -- a ball far from the goal is never the goalkeeper's
+    clearing = select(3, roles.assign(keeper, { chaser }, cfg(1), { 0, 0 }, GOAL_X))
+    assert.is_false(clearing)
+  end)
+
   it('positions: goalkeeper on the goal-ball line, defender between, supporter behind and inside', function()
     local rc = rules.roles
     local x, y = position.target('goalkeeper', { -2.0, 2.0 }, rc, field)
     assert.is_true(x > GOAL_X and x < GOAL_X + rc.keeper_depth + 1e-9)
     assert.is_true(y > 0 and y <= field.goal_width / 2)
-    assert.is_nil(position.target('goalkeeper', { GOAL_X + 0.5, 0.2 }, rc, field)) -- clears a near ball
+    assert.is_nil(position.target('goalkeeper', { GOAL_X + 0.5, 0.2 }, rc, field, true)) -- clears a near ball
     assert.is_nil(position.target('striker', ball, rc, field))
     x, y = position.target('defender', { 2.0, 1.0 }, rc, field)
     assert.is_true(x <= rc.defender_max_x and x > GOAL_X and y > 0 and y < 1.0)
