@@ -160,6 +160,8 @@ return {
       max_side = 0.16,           -- m: the ball this far to the side: align again
       max_ahead = 0.6,           -- m: the ball this far ahead: approach again
       min_ahead = 0.02,          -- m: the ball nearer (under the feet, behind): align again
+      fresh_age = 0.3,           -- s: a ball seen longer ago (the head looking at the goal) is taken
+                                 -- to roll on ahead: the three tests above wait for a new sighting
       slow_min = 0.3,            -- the least fraction of speed kept for a ball off to the side
       side_gain = 1.0,           -- 1/s: side-step per m of the ball's sideways offset
       side_per_turn = 0.1,       -- m/s of side-step per rad of attack direction error
@@ -189,7 +191,9 @@ return {
     },
     attack_depth = 0.5,        -- m behind the goal line: the point aimed at
     dribble_distance = 1.2,    -- m: nearer than this to the goal line, walk the ball in
-    follow_time = 3.0,         -- s walking after the ball following a kick
+    follow_time = 3.0,         -- s walking after the ball following a kick ...
+    follow_speed = 0.15,       -- m/s ... at most this fast (out of a kick step out of the walk a
+                               -- start at the approach speed threw the OP3 over in the scoring runs)
     reposition = { -1.5, 0.0 }, -- field point to walk to when the ball is lost
     reposition_timeout = 10.0, -- s walking back towards the ball's last estimate before searching
   },

@@ -38,8 +38,12 @@ function M.update(ctx)
   if foot then ctx.kick_side = foot return 'shoot' end
   local bx, by, ux, uy = nav.attack(ctx)
   local ea = nav.wrap(math.atan2(uy, ux) + M.detour(ctx, bx, by, ux, uy))
+  -- while the head looks at the goal the ball's estimate stays where it was last seen and the
+  -- robot walks up to it (the ball it pushes rolls on): only a fresh sighting says it got away
+  local fresh = ctx.world:ball_age() < d.fresh_age
+  if not fresh then by = 0 end
   -- the ball got away (ahead, behind or to the side) or the goal is no longer ahead: align again
-  if bx > d.max_ahead or bx < d.min_ahead or math.abs(by) > d.max_side or math.abs(ea) > d.max_angle then
+  if (fresh and (bx > d.max_ahead or bx < d.min_ahead or math.abs(by) > d.max_side)) or math.abs(ea) > d.max_angle then
     return 'realign'
   end
   local slow = math.max(0, 1 - math.abs(ea) / d.max_angle) * math.max(d.slow_min, 1 - math.abs(by) / d.max_side)

@@ -9,7 +9,8 @@ function M.update(ctx)
   if ctx.t - t0 > 0.5 and ctx.world:ball_age() < 0.3 then return 'ball' end
   local b = ctx.world.ball
   local bearing = math.atan2(b.y, b.x)
-  ctx.act.walk(cfg.approach_speed * math.max(0, math.cos(bearing)), 0, cfg.follow_turn_gain * bearing)
+  local speed = math.min(cfg.approach_speed, cfg.follow_speed)
+  ctx.act.walk(speed * math.max(0, math.cos(bearing)), 0, cfg.follow_turn_gain * bearing)
   if ctx.t - t0 > cfg.follow_time then return 'timeout' end
 end
 

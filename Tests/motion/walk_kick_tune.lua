@@ -19,20 +19,23 @@ local along = kind == 'forward' and 'x' or 'y'  -- the strike's direction
 local P = {
   { 'phases.2.duration', 0.1, 0.25 },
   { 'phases.2.z', 0.03, 0.09 },
-  { 'phases.2.hip', -0.2, 0.6 },
-  { 'phases.2.knee', 0.0, 1.2 },
+  { 'phases.2.hip', -0.2, 0.8 },
+  { 'phases.2.knee', 0.0, 1.5 },
   { 'phases.2.ankle', -0.6, 0.4 },
-  { 'phases.3.' .. along, -0.05, 0.15 },
+  { 'phases.3.' .. along, -0.05, 0.2 },
   { 'phases.3.z', 0.03, 0.1 },
-  { 'phases.3.hip', -1.5, 0.0 },
-  { 'phases.3.knee', -0.3, 0.3 },
+  { 'phases.3.hip', -2.0, 0.0 },
+  { 'phases.3.knee', -0.4, 0.3 },
   { 'phases.3.ankle', -0.3, 1.2 },
-  { 'phases.3.tilt', -0.3, 0.0 },
+  { 'phases.3.tilt', -0.5, 0.0 },
   { 'phases.3.arms', 0.0, 0.5 },
-  { 'phases.4.duration', 0.01, 0.1 },
+  { 'phases.4.duration', 0.01, 0.15 },
   { 'phases.5.duration', 0.06, 0.2 },
   { 'support.x', -0.02, 0.03 },
   { 'support.y', -0.01, 0.02 },
+  -- how far behind and ahead of the support ankle the kicking ankle may go (wind-up, strike target)
+  { 'reach.x.1', -0.14, -0.02 },
+  { 'reach.x.2', 0.10, 0.22 },
 }
 if kind == 'side' then
   P[4], P[9] = { 'phases.2.hipRoll', -0.4, 0.1 }, { 'phases.3.hipRoll', 0.0, 0.6 }
