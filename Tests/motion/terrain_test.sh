@@ -7,7 +7,9 @@
 # that lands half on the board's edge tilts toe-up and the robot tips backwards (with the gyro
 # feedback every time, without it now and then); run it by hand to work on it. `flat`: the same walk
 # without objects.
-#   [ROBOT=name] [TERRAIN_SPEED=m/s] [WALK_PARAMS=...] Tests/motion/terrain_test.sh [LAYOUT...]   (default: ramp)
+#   [ROBOT=name] [TERRAIN_SPEED=m/s] [WALK_PARAMS=...] [SIM_SEED=n] [TERRAIN_MODES="fb nofb"] \
+#     [TERRAIN_TRACE=f.csv] Tests/motion/terrain_test.sh [LAYOUT...]   (default: ramp)
+# (TERRAIN_TRACE: the last walk tick by tick; Tests/motion/plot_terrain.py plots it)
 set -u
 cd "$(dirname "$0")/../.."
 source Run/env.sh
@@ -27,10 +29,10 @@ for layout in "${LAYOUTS[@]}"; do
   luajit Tests/motion/terrain.lua sim "$layout" >"$site/sim.lua" || { echo "not ok $((k + 1)) - terrain $layout: no layout"; exit 1; }
   Run/shm --robot "$id" remove >/dev/null 2>&1   # stale segments of an earlier run
   HRP_SITE=$site ROBOT_ID=$id ./run_main --sim --quiet --no-restart --dcm-arg --lockstep-wait --dcm-arg 2 \
-    --dcm-arg --no-camera motion >"$LOGDIR/main_terrain_$layout.log" 2>&1 &
+    --dcm-arg --seed --dcm-arg "${SIM_SEED:-1}" --dcm-arg --no-camera motion >"$LOGDIR/main_terrain_$layout.log" 2>&1 &
   main_pid=$!
   for _ in $(seq 200); do grep -q 'motion started' "$LOGDIR/main_terrain_$layout.log" 2>/dev/null && break; sleep 0.1; done
-  HRP_SITE=$site ROBOT_ID=$id timeout 300 ./run_repl Tests/motion/terrain_scenario.lua "$layout" \
+  HRP_SITE=$site ROBOT_ID=$id timeout 300 ./run_repl Tests/motion/terrain_scenario.lua "$layout" ${TERRAIN_MODES:-} \
     >"$LOGDIR/terrain_$layout.log" 2>&1
   rc=$?
   kill -TERM "$main_pid" 2>/dev/null
