@@ -84,8 +84,8 @@ local function walk_over(mode)
       local wf, e, ang, g, ff = motion.walk_feet, motion.capture_error, Body.get_angle(), Body.get_gyro(),
         Body.get_foot_force()
       csv:write(string.format('%.3f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.2f,%.2f,%.4f,%.4f,%.4f\n',
-        Body.get_time() - t0, s.x - a.x, s.z - a.z, s.pitch, ang[2], g[2], wf[0], wf[3], ff[1], ff[2], e[0], motion.walk_com[0],
-        motion.odometry[0]))
+        Body.get_time() - t0, s.x - a.x, s.z - a.z, s.pitch, ang[2], g[2], wf[0], wf[3], ff[1], ff[2], e[0],
+        motion.walk_com[0], motion.odometry[0]))
     end
     return fell or s.x >= layout.finish
   end, 40, csv and dt or nil)
