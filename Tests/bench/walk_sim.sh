@@ -50,7 +50,7 @@ limits() {
     print(seq(p.velLimitX[2])) print(seq(p.velLimitY[2])) print(seq(p.velLimitA[2]))"
 }
 NOSTEP='stepAdjust.gain=0'
-NOFB="feedback.ankle=0,0;feedback.knee=0;feedback.hip=0,0;feedback.arm=0,0;$NOSTEP"
+NOFB="feedback.ankle=0,0;feedback.knee=0;feedback.hip=0,0;feedback.arm=0,0;feedback.tilt=0,0;$NOSTEP"
 declare -A FIG
 ROBOT_LIST=(${ROBOTS:-op3})
 ENGINE_LIST=(${ENGINES:-analytic preview})
