@@ -69,7 +69,7 @@ return {
     arm = { 0.0, 0.0 },         -- { roll, pitch }
     torso = { 0.0, 0.0 },       -- rad per rad of torso angle error (proprioception): { roll, pitch }
     torsoTimeConstant = 0.05,   -- s
-    tilt = { 0.0, 0.0 },        -- rad per rad of the IMU's torso tilt (roll, pitch - bodyTilt) on the ankles (off: not tried on this body)
+    tilt = { 0.0, 0.0 },        -- rad per rad of the IMU's tilt on the ankles (off: not tried on this body)
     tiltTimeConstant = 0.05,    -- s, low-pass on that tilt
     maxCorrection = 0.2,        -- rad, per joint
   },
