@@ -15,12 +15,12 @@ function M.new(wait, Body)
     return ok
   end
   function s.note(fmt, ...) print('# ' .. string.format(fmt, ...)) io.stdout:flush() end
-  -- waits in steps of 0.05 s of robot time until pred() is true; true, or pred()'s last answer
-  function s.wait_until(pred, timeout)
+  -- waits in steps of `step` (default 0.05 s) of robot time until pred() is true; true, or pred()'s last answer
+  function s.wait_until(pred, timeout, step)
     local t0 = Body.get_time()
     while Body.get_time() - t0 < timeout do
       if pred() then return true end
-      wait(0.05)
+      wait(step or 0.05)
     end
     return pred()
   end

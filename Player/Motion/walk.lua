@@ -644,7 +644,10 @@ function Walk:joint_angles(q, sensors, dt, support)
   local gx, gy = deadband(gf[1], fb.gyroDeadband[1]), deadband(gf[2], fb.gyroDeadband[2])
   self:estimate_capture_error(sensors, g)
   local lim = fb.maxCorrection
-  local ankx, anky = clamp(fb.ankle[1] * gx, -lim, lim), clamp(fb.ankle[2] * gy, -lim, lim)
+  -- (not under a kick that names its support leg: it tilts the torso on purpose, Motion.kick)
+  local tax, tay = 0, 0
+  if not support then tax, tay = self:tilt_feedback(sensors, dt) end
+  local ankx, anky = clamp(fb.ankle[1] * gx + tax, -lim, lim), clamp(fb.ankle[2] * gy + tay, -lim, lim)
   local kny = clamp(fb.knee * gy, -lim, lim)
   local hipx, hipy = clamp(fb.hip[1] * gx, -lim, lim), clamp(fb.hip[2] * gy, -lim, lim)
   -- torso angle from proprioception: the support foot is flat, so its measured pose in the torso
@@ -684,6 +687,24 @@ function Walk:joint_angles(q, sensors, dt, support)
     if arm.roll then add_rot(self, q, arm.roll, armx, 0) end
   end
   return flags
+end
+
+-- The torso's tilt (IMU angle against the planned posture, low-passed) on the ankles, rad about the
+-- torso's x and y axes: a foot that lands on an edge tips the stiff body with it; turning the ankle
+-- by the tilt rights the leg over the foot (the foot's own ground, not the plan's). Config
+-- feedback.tilt ({ roll, pitch }, rad per rad) and tiltTimeConstant (s); a body without them: none.
+function Walk:tilt_feedback(sensors, dt)
+  local fb, angle = self.p.feedback, sensors.angle
+  local k = rawget(fb, 'tilt')
+  if not k or not angle or (k[1] == 0 and k[2] == 0) then return 0, 0 end
+  local tf = self.tilt_f or { 0, 0 }
+  self.tilt_f = tf
+  local a = clamp(dt / (dt + fb.tiltTimeConstant), 0, 1)
+  tf[1] = tf[1] + a * (angle[1] - tf[1])
+  -- the torso's pitch as planned: a kick out of the walk leans it on purpose (Motion.walk_kick)
+  local pitch = self.p.bodyTilt + (self.step_hook and self.step_hook.tilt or 0)
+  tf[2] = tf[2] + a * (angle[2] - pitch - tf[2])
+  return k[1] * tf[1], k[2] * tf[2]
 end
 
 -- The capture point's error (heading frame, m) from the IMU's tilt and rate (see adjust_step).

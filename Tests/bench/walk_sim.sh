@@ -9,7 +9,9 @@
 #    without either
 #  - the motion tick's compute time (median, p99) in LuaJIT, robot-free
 # The engine is chosen through a site overlay (walk.lua: engine = ...) beside the venue's own files.
-# usage: [ROBOTS="op3 darwin hubo2plus"] [ENGINES="analytic preview"] Tests/bench/walk_sim.sh [speed|push|tick]...
+# usage: [ROBOTS="op3 darwin hubo2plus"] [ENGINES="analytic preview"] [WALK_SIM_PARAMS="key=v;..."] \
+#          Tests/bench/walk_sim.sh [speed|push|tick]...
+# (WALK_SIM_PARAMS: walk parameters set first in every run, e.g. to measure a change against the config)
 set -u
 cd "$(dirname "$0")/../.."
 source Run/env.sh
@@ -29,7 +31,7 @@ run() {
     >"$LOG/main_$label.log" 2>&1 &
   local pid=$!
   for _ in $(seq 200); do grep -q 'motion started' "$LOG/main_$label.log" 2>/dev/null && break; sleep 0.1; done
-  ROBOT_ID=$id WALK_PARAMS="$params" timeout 1800 ./run_repl Tests/motion/sim_scenarios.lua "$@" \
+  ROBOT_ID=$id WALK_PARAMS="${WALK_SIM_PARAMS:+$WALK_SIM_PARAMS;}$params" timeout 1800 ./run_repl Tests/motion/sim_scenarios.lua "$@" \
     >"$LOG/$label.log" 2>&1
   kill -TERM "$pid" 2>/dev/null; wait "$pid" 2>/dev/null
   Run/shm --robot "$id" remove >/dev/null 2>&1
@@ -48,7 +50,7 @@ limits() {
     print(seq(p.velLimitX[2])) print(seq(p.velLimitY[2])) print(seq(p.velLimitA[2]))"
 }
 NOSTEP='stepAdjust.gain=0'
-NOFB="feedback.ankle=0,0;feedback.knee=0;feedback.hip=0,0;feedback.arm=0,0;$NOSTEP"
+NOFB="feedback.ankle=0,0;feedback.knee=0;feedback.hip=0,0;feedback.arm=0,0;feedback.tilt=0,0;$NOSTEP"
 declare -A FIG
 ROBOT_LIST=(${ROBOTS:-op3})
 ENGINE_LIST=(${ENGINES:-analytic preview})

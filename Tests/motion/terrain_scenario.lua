@@ -35,7 +35,7 @@ ks.apply_walk_params(Walk, wait, note)
 
 -- the gyro feedback's gains as configured, and switched off
 local FB = {}
-for _, k in ipairs({ 'ankle', 'knee', 'hip', 'arm' }) do
+for _, k in ipairs({ 'ankle', 'knee', 'hip', 'arm', 'tilt' }) do
   local v = Walk.get('feedback.' .. k)
   FB[k] = type(v) == 'table' and { v[1], v[2] } or v
 end
@@ -62,6 +62,11 @@ local function walk_over(mode)
   Motion.request('walk')
   Walk.set_velocity(SPEED, 0, 0)
   local fell, zmax, zmin = false, a.z, a.z
+  -- TERRAIN_TRACE=file.csv: every tick of the walk (the last case run) for Tests/motion/plot_terrain.py
+  local trace = os.getenv('TERRAIN_TRACE')
+  local csv = trace and assert(io.open(trace, 'w'))
+  if csv then csv:write('t,x,z,pitch,imu_pitch,gyro_y,lx,rx,lz_force,rz_force,cp_ex,com_x,odo_x\n') end
+  local dt = require('Config').load('robot').period
   local arrived = wait_until(function()
     local s = Sim.truth()
     zmax, zmin = math.max(zmax, s.z), math.min(zmin, s.z)
@@ -75,8 +80,16 @@ local function walk_over(mode)
       note('down %.2f s into the walk at x = %.3f: roll %.2f, pitch %.2f (truth fallen: %s)', Body.get_time() - t0,
         s.x, s.roll, s.pitch, tostring(s.fallen))
     end
+    if csv then
+      local wf, e, ang, g, ff = motion.walk_feet, motion.capture_error, Body.get_angle(), Body.get_gyro(),
+        Body.get_foot_force()
+      csv:write(string.format('%.3f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.2f,%.2f,%.4f,%.4f,%.4f\n',
+        Body.get_time() - t0, s.x - a.x, s.z - a.z, s.pitch, ang[2], g[2], wf[0], wf[3], ff[1], ff[2], e[0],
+        motion.walk_com[0], motion.odometry[0]))
+    end
     return fell or s.x >= layout.finish
-  end, 40)
+  end, 40, csv and dt or nil)
+  if csv then csv:close() end
   local b = Sim.truth()
   Walk.set_velocity(0, 0, 0)
   Motion.request('stand')

@@ -1,13 +1,17 @@
 #!/usr/bin/env bash
-# The OP3 walks over a 5 degree ramp (up, a platform, down) in the sim (lockstep) with the walk's IMU
-# feedback on: no fall (off: reported as a figure). The boxes come into the world through a site
-# overlay (the sim reads `objects` from its config: Config/platforms/Sim/sim.lua), written from
-# Tests/motion/terrain.lua. Tests/motion/terrain_scenario.lua prints TAP.
-# The 1 cm step (`step`) is not in the default list: the OP3 does not walk over it yet. A front foot
-# that lands half on the board's edge tilts toe-up and the robot tips backwards (with the gyro
-# feedback every time, without it now and then); run it by hand to work on it. `flat`: the same walk
-# without objects.
-#   [ROBOT=name] [TERRAIN_SPEED=m/s] [WALK_PARAMS=...] Tests/motion/terrain_test.sh [LAYOUT...]   (default: ramp)
+# The OP3 walks over a 5 degree ramp (up, a platform, down) and a 1 cm step (a board: up, 0.8 m,
+# down) in the sim (lockstep) with the walk's IMU feedback on: no fall (off: reported as a figure).
+# The boxes come into the world through a site overlay (the sim reads `objects` from its config:
+# Config/platforms/Sim/sim.lua), written from Tests/motion/terrain.lua.
+# Tests/motion/terrain_scenario.lua prints TAP. On the step a front foot lands half on the board's
+# edge and tilts toe-up with the stiff body: the walk's tilt feedback (feedback.tilt, the IMU's
+# angle on the ankles) rights the leg over it; without it the OP3 tips backwards every time. It is
+# off in the OP3's config for now, so the step layout runs with TILT_PARAMS (feedback.tilt=0.5,1.0)
+# unless WALK_PARAMS is given.
+# `flat`: the same walk without objects.
+#   [ROBOT=name] [TERRAIN_SPEED=m/s] [WALK_PARAMS=...] [SIM_SEED=n] [TERRAIN_MODES="fb nofb"] \
+#     [TERRAIN_TRACE=f.csv] Tests/motion/terrain_test.sh [LAYOUT...]   (default: ramp step)
+# (TERRAIN_TRACE: the last walk tick by tick; Tests/motion/plot_terrain.py plots it)
 set -u
 cd "$(dirname "$0")/../.."
 source Run/env.sh
@@ -16,7 +20,7 @@ LOGDIR="$HRP_ROOT/build/test-logs/motion"
 mkdir -p "$LOGDIR"
 BASE_ID=$(( ${ROBOT_ID:-9200} + 70 ))
 LAYOUTS=("$@")
-[ ${#LAYOUTS[@]} -eq 0 ] && LAYOUTS=(ramp)
+[ ${#LAYOUTS[@]} -eq 0 ] && LAYOUTS=(ramp step)
 n=0; k=0; failed=0
 for layout in "${LAYOUTS[@]}"; do
   n=$((n + 1))
@@ -27,10 +31,12 @@ for layout in "${LAYOUTS[@]}"; do
   luajit Tests/motion/terrain.lua sim "$layout" >"$site/sim.lua" || { echo "not ok $((k + 1)) - terrain $layout: no layout"; exit 1; }
   Run/shm --robot "$id" remove >/dev/null 2>&1   # stale segments of an earlier run
   HRP_SITE=$site ROBOT_ID=$id ./run_main --sim --quiet --no-restart --dcm-arg --lockstep-wait --dcm-arg 2 \
-    --dcm-arg --no-camera motion >"$LOGDIR/main_terrain_$layout.log" 2>&1 &
+    --dcm-arg --seed --dcm-arg "${SIM_SEED:-1}" --dcm-arg --no-camera motion >"$LOGDIR/main_terrain_$layout.log" 2>&1 &
   main_pid=$!
   for _ in $(seq 200); do grep -q 'motion started' "$LOGDIR/main_terrain_$layout.log" 2>/dev/null && break; sleep 0.1; done
-  HRP_SITE=$site ROBOT_ID=$id timeout 300 ./run_repl Tests/motion/terrain_scenario.lua "$layout" \
+  params=${WALK_PARAMS-}
+  [ "$layout" = step ] && [ -z "${WALK_PARAMS+x}" ] && params=${TILT_PARAMS:-feedback.tilt=0.5,1.0}
+  WALK_PARAMS=$params HRP_SITE=$site ROBOT_ID=$id timeout 300 ./run_repl Tests/motion/terrain_scenario.lua "$layout" ${TERRAIN_MODES:-} \
     >"$LOGDIR/terrain_$layout.log" 2>&1
   rc=$?
   kill -TERM "$main_pid" 2>/dev/null

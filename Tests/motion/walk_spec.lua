@@ -213,3 +213,37 @@ describe('walk', function()
     assert.is_true(w.stats.steps - steps <= 5, 'steps ' .. (w.stats.steps - steps))
   end)
 end)
+
+describe('walk tilt feedback', function()
+  -- the joint angles at stance with the IMU reading `pitch` over the planned posture, `k` the gain
+  local function stance_angles(k, pitch, support)
+    local p = copy(params)
+    p.feedback.ankle, p.feedback.knee, p.feedback.hip, p.feedback.arm = { 0, 0 }, 0, { 0, 0 }, { 0, 0 }
+    p.feedback.torso = { 0, 0 }
+    p.feedback.tilt, p.feedback.tiltTimeConstant = { 0, k }, 0.05
+    local w = Walk.new(p, model):bind(robot)
+    w:advance(dt)
+    local q = {}
+    local sensors = { gyro = { 0, 0, 0 }, angle = { 0, p.bodyTilt + pitch, 0 } }
+    for _ = 1, 200 do w:joint_angles(q, sensors, dt, support) end -- 1.6 s: the low-pass has settled
+    return q, w
+  end
+
+  it('turns both ankles by gain x the torso pitch error at stance, nothing at gain 0', function()
+    local q0, w = stance_angles(0, -0.1)
+    local q1 = stance_angles(1.0, -0.1)
+    for side = Walk.LEFT, Walk.RIGHT do
+      local legi = w.legs[side]
+      local ap = legi[5]
+      -- a rotation of -0.1 rad about the torso's y axis through the joint's axis (restoring)
+      assert.is_near(-0.1 * w.ay[ap], q1[ap] - q0[ap], 1e-3)
+      for k = 1, 4 do assert.is_near(q0[legi[k]], q1[legi[k]], 1e-12) end
+    end
+  end)
+
+  it('stays off under a kick that names its support leg (the kick tilts the torso on purpose)', function()
+    local q0 = stance_angles(0, -0.2, Walk.LEFT)
+    local q1 = stance_angles(1.0, -0.2, Walk.LEFT)
+    for i, v in pairs(q0) do assert.is_near(v, q1[i], 1e-12) end
+  end)
+end)

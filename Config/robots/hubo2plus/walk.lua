@@ -69,6 +69,8 @@ return {
     arm = { 0.0, 0.0 },         -- { roll, pitch }
     torso = { 0.0, 0.0 },       -- rad per rad of torso angle error (proprioception): { roll, pitch }
     torsoTimeConstant = 0.05,   -- s
+    tilt = { 0.0, 0.0 },        -- rad per rad of the IMU's tilt on the ankles (off: not tried on this body)
+    tiltTimeConstant = 0.05,    -- s, low-pass on that tilt
     maxCorrection = 0.2,        -- rad, per joint
   },
   -- balance on the ankle F/T sensors (Player/Motion/balance.lua; the FFT boards of can.lua): the

@@ -79,6 +79,11 @@ return {
     arm = { 0.0, 0.0 },         -- { roll, pitch }
     torso = { 0.0, 0.0 },       -- rad per rad of torso angle error (proprioception): { roll, pitch }
     torsoTimeConstant = 0.05,   -- s
+    -- rad per rad of the IMU's torso tilt (roll, pitch - bodyTilt) on the ankles. { 0.5, 1.0 } walks the
+    -- OP3 over a 1 cm step (Tests/motion/terrain_test.sh step sets it); 0 until the obstacle scenario's
+    -- walk with it (the walker never reached the ball) is understood
+    tilt = { 0, 0 },
+    tiltTimeConstant = 0.05,    -- s, low-pass on that tilt
     maxCorrection = 0.3,        -- rad, per joint
   },
   -- balance on the ankle F/T sensors (Player/Motion/balance.lua): off (zmpGain = 0): the real OP3
