@@ -40,20 +40,34 @@ def play(root, robot_id, per_team, half, ready, seed, alone):
     cmd = ["nice", "bash", os.path.join(root, "Tests/bench/match.sh"), str(per_team), str(half), str(seed),
            str(ready)]
     t0 = time.time()
-    # its own process group: a cancelled task (the league interrupted) ends the whole match
-    p = subprocess.Popen(cmd, env=env, cwd=root, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
-                         start_new_session=True)
+    # its own process group (a cancelled task ends the whole match), and one shell in between: when the
+    # worker exits, Ray kills its direct children with SIGKILL (RAY_kill_child_processes_on_worker_exit),
+    # which would leave match.sh no time to clean up. With the shell in between, match.sh outlives the
+    # worker, sees its parent gone and ends the match itself (its processes, its shared memory).
+    p = subprocess.Popen(["bash", "-c", '"$@" & wait $!', "play"] + cmd, env=env, cwd=root,
+                         stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, start_new_session=True)
     try:
         out, _ = p.communicate()
     except BaseException:
-        os.killpg(p.pid, signal.SIGTERM)
-        try:
-            p.wait(timeout=10)
-        except subprocess.TimeoutExpired:
-            pass
-        os.killpg(p.pid, signal.SIGKILL)
+        end_group(p)
         raise
     return {"seed": seed, "robot_id": robot_id, "rc": p.returncode, "wall": time.time() - t0, "output": out}
+
+
+def end_group(proc, grace=15.0):
+    """SIGTERM to the process group that `proc` leads (a match), then time for match.sh's cleanup;
+    SIGKILL after `grace` s."""
+    pgid = proc.pid
+    try:
+        os.killpg(pgid, signal.SIGTERM)
+        deadline = time.time() + grace
+        while time.time() < deadline:
+            time.sleep(0.2)
+            proc.poll()  # reaps the leader: a zombie still counts as a member
+            os.killpg(pgid, 0)  # ProcessLookupError once the group is empty
+        os.killpg(pgid, signal.SIGKILL)
+    except ProcessLookupError:
+        pass
 
 
 def parse(out):
