@@ -1,7 +1,7 @@
 -- Step adjustment (capture point) for either walk engine (Player/Motion/walk.lua calls it).
 --
 -- The capture point's error e (heading frame, m: where the capture point is against where the walk
--- plans it) is estimated every tick from the IMU (Walk:estimate_capture_error). A push moves it;
+-- plans it) is estimated every tick from the IMU (Player/Motion/capture.lua). A push moves it;
 -- the walk then catches itself with the next footstep, and with the step's timing where placement
 -- alone comes too late:
 --  * landing: the swing foot lands gain x (e beyond the dead band) further (at most `max`, within

@@ -17,6 +17,7 @@
 -- Every parameter is read from the params table at each step/tick, so a change lands while walking.
 local lipm = require('Motion.lipm')
 local step_adjust = require('Motion.step_adjust')
+local capture = require('Motion.capture')
 
 local sin, cos, atan2, asin = math.sin, math.cos, math.atan2, math.asin
 local abs, pi = math.abs, math.pi
@@ -642,11 +643,15 @@ function Walk:joint_angles(q, sensors, dt, support)
   gf[1] = gf[1] + alpha * (g[1] - gf[1])
   gf[2] = gf[2] + alpha * (g[2] - gf[2])
   local gx, gy = deadband(gf[1], fb.gyroDeadband[1]), deadband(gf[2], fb.gyroDeadband[2])
-  self:estimate_capture_error(sensors, g)
+  capture.update(self, sensors, g, dt)
   local lim = fb.maxCorrection
   -- (not under a kick that names its support leg: it tilts the torso on purpose, Motion.kick)
   local tax, tay = 0, 0
   if not support then tax, tay = self:tilt_feedback(sensors, dt) end
+  -- the capture point's error on the ankles (the ankle strategy): a shove shows there before the
+  -- torso tips (feedback.capture, rad per m: { roll, pitch }; pushed left the ZMP goes left)
+  local kc, e = rawget(fb, 'capture'), self.cp_err
+  if kc and e and not support then tax, tay = tax - kc[1] * e[2], tay + kc[2] * e[1] end
   local ankx, anky = clamp(fb.ankle[1] * gx + tax, -lim, lim), clamp(fb.ankle[2] * gy + tay, -lim, lim)
   local kny = clamp(fb.knee * gy, -lim, lim)
   local hipx, hipy = clamp(fb.hip[1] * gx, -lim, lim), clamp(fb.hip[2] * gy, -lim, lim)
@@ -705,20 +710,6 @@ function Walk:tilt_feedback(sensors, dt)
   local pitch = self.p.bodyTilt + (self.step_hook and self.step_hook.tilt or 0)
   tf[2] = tf[2] + a * (angle[2] - pitch - tf[2])
   return k[1] * tf[1], k[2] * tf[2]
-end
-
--- The capture point's error (heading frame, m) from the IMU's tilt and rate (see adjust_step).
--- Positive pitch tips the top forward (+x), positive roll tips it to the right (-y).
-function Walk:estimate_capture_error(sensors, gyro)
-  local angle = sensors.angle
-  if not angle then return end
-  local p = self.p
-  local h = p.tZmp * p.tZmp * 9.81
-  local e = self.cp_err or { 0, 0 }
-  self.cp_err = e
-  local pitch, roll = angle[2] - p.bodyTilt, angle[1]
-  e[1] = h * (sin(pitch) + p.tZmp * gyro[2])
-  e[2] = -h * (sin(roll) + p.tZmp * gyro[1])
 end
 
 -- Updates the COM offset (whole-body COM minus torso origin, in the heading frame) from joint

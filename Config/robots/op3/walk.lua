@@ -19,7 +19,7 @@ return {
   -- tilt (IMU) by level (fraction: roll, pitch) so that it lands flat, faded over levelTime (s) once
   -- it carries. gain = 0: off
   stepAdjust = { gain = 1.0, deadband = { 0.03, 0.02 }, max = { 0.05, 0.08 }, switchError = 1,
-    touchdownError = 1, touchdownTime = 0.05, level = { 0, 0 }, levelTime = 0.15 },
+    touchdownError = 1, touchdownTime = 0.05, level = { 0, 0 }, levelTime = 0.15, velocityLeak = 0 },
   -- posture
   bodyHeight = 0.25,         -- m, torso origin (between the hip yaw joints: the URDF's body_link) above the ground
   bodyTilt = 0.08,           -- rad, torso pitch (forward positive)
@@ -84,6 +84,7 @@ return {
     -- walk with it (the walker never reached the ball) is understood
     tilt = { 0, 0 },
     tiltTimeConstant = 0.05,    -- s, low-pass on that tilt
+    capture = { 0, 0 },         -- rad per m of the capture point's error (Player/Motion/capture.lua) on the ankles
     maxCorrection = 0.3,        -- rad, per joint
   },
   -- balance on the ankle F/T sensors (Player/Motion/balance.lua): off (zmpGain = 0): the real OP3

@@ -1,0 +1,70 @@
+-- The capture point's error for the step adjustment (Player/Motion/step_adjust.lua): where the
+-- robot's capture point is against where the walk plans it, heading frame (m), from the IMU.
+--
+-- Two parts, the COM's position error and its velocity error times tZmp (the capture point of the
+-- linear inverted pendulum, c + tZmp c'):
+--  * position: the torso's tilt (roll, pitch - bodyTilt) times the COM's height (h = g tZmp^2);
+--  * velocity: the torso's tilt rate times h (a robot tipping about its foot), and, with
+--    `stepAdjust.velocityLeak` > 0, the accelerometer's: a push moves the body sideways before it
+--    tips it (the legs give at the hips and ankles), which the tilt does not see. The accelerometer
+--    (specific force, torso frame) turned into the world by the IMU's angles, gravity removed, in
+--    the heading frame, is integrated into the velocity's error against the walk's planned COM
+--    velocity (w.comd); the integral leaks with velocityLeak (s), so that an offset of the sensor
+--    or the plan's own error does not wind it up. The larger of the two velocity errors (by
+--    magnitude, per axis) counts: the tilt rate reacts first to a tip, the accelerometer to a shove.
+-- The integral rests while the walk stands (no plan to compare with).
+local sin, cos, abs = math.sin, math.cos, math.abs
+
+local M = {}
+
+local G = 9.81
+
+-- Updates w.cp_err (and w.cp_vel: the accelerometer's velocity error) from sensors (angle, acc)
+-- and the filtered gyro rates (rad/s) for one tick of dt s.
+function M.update(w, sensors, gyro, dt)
+  local angle = sensors.angle
+  if not angle then return end
+  local p = w.p
+  local h = p.tZmp * p.tZmp * G
+  local e = w.cp_err or { 0, 0 }
+  w.cp_err = e
+  local roll, pitch = angle[1], angle[2]
+  local tp, tr = pitch - p.bodyTilt, roll
+  -- positive pitch tips the top forward (+x), positive roll tips it to the right (-y)
+  local px, py = h * sin(tp), -h * sin(tr)
+  local vx, vy = h * gyro[2], -h * gyro[1]
+  local sa = rawget(p, 'stepAdjust')
+  local leak = sa and rawget(sa, 'velocityLeak') or 0
+  local acc = sensors.acc
+  local v = w.cp_vel or { 0, 0 }
+  w.cp_vel = v
+  if leak > 0 and acc and dt and dt > 0 and w.active then
+    -- specific force into the world (R = Rz Ry Rx), gravity off; horizontal part in the heading frame
+    local cr, sr, cp, sp = cos(roll), sin(roll), cos(pitch), sin(pitch)
+    local ax, ay, az = acc[1], acc[2], acc[3]
+    local y1, z1 = cr * ay - sr * az, sr * ay + cr * az
+    local hx = cp * ax + sp * z1
+    local hy = y1
+    -- the planned COM's velocity in the heading frame (the walk's ground frame turned by its heading)
+    local comd = w.comd
+    local pv = w.cp_plan_v or { 0, 0 }
+    w.cp_plan_v = pv
+    local c, s = cos(-w.uTorso[3]), sin(-w.uTorso[3])
+    local qx, qy = c * comd[1] - s * comd[2], s * comd[1] + c * comd[2]
+    -- the plan's acceleration from its velocity (the heading frame's turn over a tick is small)
+    local pax, pay = (qx - pv[1]) / dt, (qy - pv[2]) / dt
+    if not w.cp_plan_ok then pax, pay = 0, 0 end
+    pv[1], pv[2], w.cp_plan_ok = qx, qy, true
+    local k = dt / leak
+    v[1] = v[1] + (hx - pax) * dt - k * v[1]
+    v[2] = v[2] + (hy - pay) * dt - k * v[2]
+    if abs(v[1]) > abs(vx) then vx = v[1] end
+    if abs(v[2]) > abs(vy) then vy = v[2] end
+  else
+    v[1], v[2], w.cp_plan_ok = 0, 0, false
+  end
+  e[1] = px + p.tZmp * vx
+  e[2] = py + p.tZmp * vy
+end
+
+return M

@@ -1,0 +1,75 @@
+-- luacheck: std +busted
+-- The capture point's error from the IMU (Player/Motion/capture.lua) on the walk generator alone:
+-- the tilt and its rate, and the accelerometer's shove that the tilt does not see.
+local Walk = require('Motion.walk')
+local capture = require('Motion.capture')
+local fixture = require('Tests.motion.walk_fixture')
+
+local params, model, dt, copy = fixture.params, fixture.model, fixture.dt, fixture.copy
+
+local G = 9.81
+
+-- a walk standing upright at the origin (not stepping) with velocityLeak `leak`
+local function walk(leak)
+  local p = copy(params)
+  p.stepAdjust.velocityLeak = leak
+  local w = Walk.new(p, model)
+  return w, p
+end
+
+-- sensors of an upright torso with pitch bodyTilt, accelerating by (ax, ay) in the heading frame
+local function sensors(p, ax, ay, roll)
+  roll = roll or 0
+  local pitch = p.bodyTilt
+  -- the specific force (a + g up) in the torso frame: R^T (ax, ay, g), R = Ry(pitch) Rx(roll)
+  local cp, sp, cr, sr = math.cos(pitch), math.sin(pitch), math.cos(roll), math.sin(roll)
+  local x1 = cp * ax - sp * G
+  local z1 = sp * ax + cp * G
+  return { angle = { roll, pitch, 0 }, acc = { x1, cr * ay + sr * z1, -sr * ay + cr * z1 } }
+end
+
+describe('capture point error', function()
+  it('is the tilt times the COM height plus its rate times tZmp, without the accelerometer', function()
+    local w, p = walk(0)
+    local h = p.tZmp * p.tZmp * G
+    capture.update(w, sensors(p, 0, 0, -0.1), { -0.5, 0.2, 0 }, dt)
+    assert.is_near(h * math.sin(0.1) + p.tZmp * h * 0.5, w.cp_err[2], 1e-9) -- rolled left: +y
+    assert.is_near(p.tZmp * h * 0.2, w.cp_err[1], 1e-9)
+  end)
+
+  it('sees a shove sideways (the accelerometer integrated against the plan) while walking', function()
+    local w, p = walk(0.6)
+    w:set_velocity(0.2, 0, 0)
+    w:start()
+    w:advance(dt)
+    -- the plan's own motion: the accelerometer reads it, the error stays small
+    for _ = 1, 20 do
+      local v0 = { w.comd[1], w.comd[2] }
+      w:advance(dt)
+      local a = sensors(p, (w.comd[1] - v0[1]) / dt, (w.comd[2] - v0[2]) / dt)
+      capture.update(w, a, { 0, 0, 0 }, dt)
+    end
+    assert.is_true(math.abs(w.cp_err[2]) < 1e-3)
+    -- 0.1 s of 5 m/s^2 to the left on top of the plan: 0.5 m/s less the leak
+    for _ = 1, math.floor(0.1 / dt + 0.5) do
+      local v0 = { w.comd[1], w.comd[2] }
+      w:advance(dt)
+      capture.update(w, sensors(p, (w.comd[1] - v0[1]) / dt, (w.comd[2] - v0[2]) / dt + 5), { 0, 0, 0 }, dt)
+    end
+    assert.is_near(0.5 * p.tZmp, w.cp_err[2], 0.1 * 0.5 * p.tZmp)
+    assert.is_true(math.abs(w.cp_err[1]) < 0.01)
+    -- and forgets it with the leak (an offset of the sensor winds nothing up)
+    for _ = 1, math.floor(3 / dt) do
+      local v0 = { w.comd[1], w.comd[2] }
+      w:advance(dt)
+      capture.update(w, sensors(p, (w.comd[1] - v0[1]) / dt, (w.comd[2] - v0[2]) / dt), { 0, 0, 0 }, dt)
+    end
+    assert.is_true(math.abs(w.cp_err[2]) < 0.01 * 0.5 * p.tZmp)
+  end)
+
+  it('rests while the walk stands', function()
+    local w, p = walk(0.6)
+    for _ = 1, 50 do capture.update(w, sensors(p, 0, 3), { 0, 0, 0 }, dt) end
+    assert.are.equal(0, w.cp_err[2])
+  end)
+end)
