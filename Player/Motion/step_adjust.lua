@@ -102,8 +102,9 @@ function M.tick(w, t, s)
     w.stats.touchdowns = (w.stats.touchdowns or 0) + 1
     return
   end
-  -- the foot still travels: its landing point follows the error (from the nominal one)
-  if s < 0.85 and w.nominal2 then
+  -- the foot still travels: its landing point follows the error (from the nominal one), until
+  -- `retarget` of its way (beyond it the foot would have to jump)
+  if s < (rawget(sa, 'retarget') or 0.85) and w.nominal2 then
     local sup = left and w.uRight1 or w.uLeft1
     local target = landing(w, sa, sup, w.nominal2, left) or w.nominal2
     local cur2 = left and w.uLeft2 or w.uRight2

@@ -648,13 +648,18 @@ function Walk:joint_angles(q, sensors, dt, support)
   -- (not under a kick that names its support leg: it tilts the torso on purpose, Motion.kick)
   local tax, tay = 0, 0
   if not support then tax, tay = self:tilt_feedback(sensors, dt) end
-  -- the capture point's error on the ankles (the ankle strategy): a shove shows there before the
-  -- torso tips (feedback.capture, rad per m: { roll, pitch }; pushed left the ZMP goes left)
-  local kc, e = rawget(fb, 'capture'), self.cp_err
-  if kc and e and not support then tax, tay = tax - kc[1] * e[2], tay + kc[2] * e[1] end
+  -- the capture point's error on the ankles and hips (the ankle and hip strategies): a shove shows
+  -- there before the torso tips (feedback.capture and captureHip, rad per m: { roll, pitch };
+  -- pushed left, the ZMP goes left)
+  local kc, kh, e = rawget(fb, 'capture'), rawget(fb, 'captureHip'), self.cp_err
+  local thx, thy = 0, 0
+  if e and not support then
+    if kc then tax, tay = tax - kc[1] * e[2], tay + kc[2] * e[1] end
+    if kh then thx, thy = -kh[1] * e[2], kh[2] * e[1] end
+  end
   local ankx, anky = clamp(fb.ankle[1] * gx + tax, -lim, lim), clamp(fb.ankle[2] * gy + tay, -lim, lim)
   local kny = clamp(fb.knee * gy, -lim, lim)
-  local hipx, hipy = clamp(fb.hip[1] * gx, -lim, lim), clamp(fb.hip[2] * gy, -lim, lim)
+  local hipx, hipy = clamp(fb.hip[1] * gx + thx, -lim, lim), clamp(fb.hip[2] * gy + thy, -lim, lim)
   -- torso angle from proprioception: the support foot is flat, so its measured pose in the torso
   -- frame gives the torso's real tilt; the difference from the commanded tilt goes to the hips
   local tx, ty = 0, 0

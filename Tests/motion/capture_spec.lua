@@ -67,6 +67,38 @@ describe('capture point error', function()
     assert.is_true(math.abs(w.cp_err[2]) < 0.01 * 0.5 * p.tZmp)
   end)
 
+  it('turns the ankles and hips against it (feedback.capture, captureHip)', function()
+    local robot = fixture.robot
+    local ji = {}
+    for i, n in ipairs(robot.joints) do ji[n] = i end
+    -- standing, tipped left by 0.05 rad: the capture point's error is +y; the same sensors with and
+    -- without the gains
+    local function angles(kc, kh)
+      local w, p = walk(0)
+      p.feedback.capture, p.feedback.captureHip = { kc, 0 }, { kh, 0 }
+      p.feedback.ankle, p.feedback.hip, p.feedback.tilt = { 0, 0 }, { 0, 0 }, { 0, 0 }
+      w:bind(robot)
+      w:advance(dt)
+      local q = {}
+      for i = 1, #robot.joints do q[i] = 0 end
+      local s = sensors(p, 0, 0, -0.05)
+      s.gyro, s.position = { 0, 0, 0 }, nil
+      w:joint_angles(q, s, dt)
+      return q, w.cp_err[2]
+    end
+    local q0, e = angles(0, 0)
+    local q1 = angles(2, 3)
+    assert.is_true(e > 0.01)
+    for _, side in ipairs({ 'l_', 'r_' }) do
+      local ank, hip = ji[side .. 'ank_roll'], ji[side .. 'hip_roll']
+      -- rotations about the torso's x axis through each joint's axis (the OP3's roll axes are +-x)
+      local ax = model:axis(robot.joints[ank])[1]
+      assert.is_near(-2 * e * ax, q1[ank] - q0[ank], 1e-9)
+      ax = model:axis(robot.joints[hip])[1]
+      assert.is_near(-3 * e * ax, q1[hip] - q0[hip], 1e-9)
+    end
+  end)
+
   it('rests while the walk stands', function()
     local w, p = walk(0.6)
     for _ = 1, 50 do capture.update(w, sensors(p, 0, 3), { 0, 0, 0 }, dt) end

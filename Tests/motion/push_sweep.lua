@@ -7,7 +7,9 @@
 -- spread across moments is the figure, not one bisection). LABEL=PARAMS: walk parameters as
 -- WALK_PARAMS ("key=v,v;key=v"), set before that configuration's sweep and put back after it
 -- (none: the config as it is). Prints per configuration "sweep LABEL k F" (the largest force
--- survived at moment k, 0 if none) and "pushsweep LABEL min median max mean" in N s.
+-- survived at moment k before the first fall, 0 if none) and "pushsweep LABEL min median max mean"
+-- in N s. PUSH_SWEEP_ALL=1: every force at every moment (a fall at a small push does not end the
+-- climb), and "pushrate LABEL" the count of moments survived per force.
 -- luacheck: globals Sim Motion Walk wait Body
 package.path = os.getenv('HRP_ROOT') .. '/Tests/motion/?.lua;' .. package.path
 if not Sim then Sim = require('sim_shim') end -- luacheck: ignore Sim
@@ -18,6 +20,7 @@ local motion = ks.wait_for_motion(wait)
 if not motion then print('not ok 1 - the motion process is not running') os.exit(1) end
 
 local dir, phases = arg[1] or 'side', tonumber(arg[2]) or 8
+local all = os.getenv('PUSH_SWEEP_ALL') == '1'
 local forces = {}
 for x in (arg[3] or '8,10,12,14,16,18,20,22,24'):gmatch('[^,]+') do forces[#forces + 1] = tonumber(x) end
 local configs = {}
@@ -56,7 +59,11 @@ local function survives(f, k)
   wait(0.2)
   Walk.set_velocity(0, 0, 0)
   Motion.request('stand')
-  wait(2.5)
+  -- after a fall the motion process stands up first: each push starts from a settled stance
+  if not wait_until(function() return Motion.state() == 'stance' end, 15) then
+    error('push_sweep: the robot is not back in stance 15 s after a reset (state ' .. Motion.state() .. ')')
+  end
+  wait(1.5)
   Motion.request('walk')
   Walk.set_velocity(0.2, 0, 0)
   wait(3 + k * 2 * T / phases)
@@ -77,16 +84,23 @@ for _, c in ipairs(configs) do
     old[i] = copy(Walk.get(e[1]))
     set(e[1], e[2])
   end
-  local best = {}
+  local best, alive = {}, {}
   for k = 0, phases - 1 do
-    local b = 0
-    for _, f in ipairs(forces) do
-      if not survives(f, k) then break end
-      b = f
+    local b, down = 0, false
+    for i, f in ipairs(forces) do
+      if down and not all then break end
+      local ok = survives(f, k)
+      if ok then alive[i] = (alive[i] or 0) + 1 end
+      if not ok then down = true elseif not down then b = f end
     end
     best[#best + 1] = b * 0.1
     print(string.format('sweep %s %d %.1f', c.label, k, b))
     io.stdout:flush()
+  end
+  if all then
+    local r = {}
+    for i, f in ipairs(forces) do r[#r + 1] = string.format('%.1f:%d/%d', f * 0.1, alive[i] or 0, phases) end
+    print(string.format('pushrate %s %s survived per push (N s: moments) %s', c.label, dir, table.concat(r, ' ')))
   end
   for i = #kv, 1, -1 do set(kv[i][1], old[i]) end
   local s = { unpack(best) }

@@ -17,9 +17,13 @@ return {
   -- foot on the push's side; beyond touchdownError (m) a swing foot on the far side is put down
   -- within touchdownTime (s) and the step ends; the swing foot's ankle turns against the torso's
   -- tilt (IMU) by level (fraction: roll, pitch) so that it lands flat, faded over levelTime (s) once
-  -- it carries. gain = 0: off
+  -- it carries. gain = 0: off. The capture point's error from the IMU (Player/Motion/capture.lua):
+  -- velocityLeak (s) > 0 adds the accelerometer's velocity (a shove moves the body before it tips
+  -- it; 0: the tilt and its rate alone, which lag: 0.02 m against the truth's 0.055 m at the end of
+  -- a 1.2 N s push); retarget: the fraction of the swing's way up to which the landing still moves
   stepAdjust = { gain = 1.0, deadband = { 0.03, 0.02 }, max = { 0.05, 0.08 }, switchError = 1,
-    touchdownError = 1, touchdownTime = 0.05, level = { 0, 0 }, levelTime = 0.15, velocityLeak = 0 },
+    touchdownError = 1, touchdownTime = 0.05, level = { 0, 0 }, levelTime = 0.15, velocityLeak = 0,
+    retarget = 0.85 },
   -- posture
   bodyHeight = 0.25,         -- m, torso origin (between the hip yaw joints: the URDF's body_link) above the ground
   bodyTilt = 0.08,           -- rad, torso pitch (forward positive)
@@ -85,6 +89,7 @@ return {
     tilt = { 0, 0 },
     tiltTimeConstant = 0.05,    -- s, low-pass on that tilt
     capture = { 0, 0 },         -- rad per m of the capture point's error (Player/Motion/capture.lua) on the ankles
+    captureHip = { 0, 0 },      -- and on the hips
     maxCorrection = 0.3,        -- rad, per joint
   },
   -- balance on the ankle F/T sensors (Player/Motion/balance.lua): off (zmpGain = 0): the real OP3
