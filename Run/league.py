@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """A league of seeded matches in the sim, each a Ray task (Tests/bench/match.sh, refereed), and a table.
 
-    Run/league.py [--matches 20] [--per-team 2] [--half 60] [--ready 15] [--seed 1]
+    Run/league.py [--matches 20] [--per-team 2] [--half 60] [--ready 45] [--seed 1]
                   [--alone alternate|none|1|2] [--address ADDR] [--cpus-per-match 2]
                   [--id-base 133000] [--json FILE]
 
@@ -138,7 +138,8 @@ def main():
     ap.add_argument("--matches", type=int, default=20)
     ap.add_argument("--per-team", type=int, default=2)
     ap.add_argument("--half", type=float, default=60, help="s of PLAYING per half (simulated)")
-    ap.add_argument("--ready", type=float, default=15, help="s of READY (simulated; the rules' 45)")
+    ap.add_argument("--ready", type=float, default=45,
+                    help="s of READY (simulated): the rules' 45, in which a goalkeeper walks from the touch line to its goal")
     ap.add_argument("--seed", type=int, default=1, help="the first match's seed (then seed + 1, ...)")
     ap.add_argument("--alone", default="alternate", choices=("alternate", "none", "1", "2"))
     ap.add_argument("--address", default=None, help="a Ray cluster's address (default: Ray on this machine)")
