@@ -20,9 +20,13 @@ return {
   -- it carries. gain = 0: off. The capture point's error from the IMU (Player/Motion/capture.lua):
   -- velocityLeak (s) > 0 adds the accelerometer's velocity (a shove moves the body before it tips
   -- it; 0: the tilt and its rate alone, which lag: 0.02 m against the truth's 0.055 m at the end of
-  -- a 1.2 N s push); retarget: the fraction of the swing's way up to which the landing still moves
+  -- a 1.2 N s push; leak 1.0 fell at small pushes); retarget: the fraction of the swing's way up to
+  -- which the landing still moves (0.95, 0.99 measured no better). With the accelerometer and
+  -- feedback.capture/captureHip below, the largest sideways push survived at 8 moments of the gait
+  -- cycle: median 1.4 -> 2.1 N s (Tests/motion/push_sweep.sh; README). Measured worse with it:
+  -- switchError 0.03 (the loaded foot cannot lift), touchdownError 0.04-0.06, level 0.5, max 0.12
   stepAdjust = { gain = 1.0, deadband = { 0.03, 0.02 }, max = { 0.05, 0.08 }, switchError = 1,
-    touchdownError = 1, touchdownTime = 0.05, level = { 0, 0 }, levelTime = 0.15, velocityLeak = 0,
+    touchdownError = 1, touchdownTime = 0.05, level = { 0, 0 }, levelTime = 0.15, velocityLeak = 0.6,
     retarget = 0.85 },
   -- posture
   bodyHeight = 0.25,         -- m, torso origin (between the hip yaw joints: the URDF's body_link) above the ground
@@ -88,8 +92,11 @@ return {
     -- walk with it (the walker never reached the ball) is understood
     tilt = { 0, 0 },
     tiltTimeConstant = 0.05,    -- s, low-pass on that tilt
-    capture = { 0, 0 },         -- rad per m of the capture point's error (Player/Motion/capture.lua) on the ankles
-    captureHip = { 0, 0 },      -- and on the hips
+    -- rad per m of the capture point's error (Player/Motion/capture.lua) on the ankles and the hips
+    -- ({ roll, pitch }): sideways pushes measured best with 2 and 2 (ankle 4 or 1, hip 4: less);
+    -- pitch not tried on the forward pushes yet
+    capture = { 2, 0 },
+    captureHip = { 2, 0 },
     maxCorrection = 0.3,        -- rad, per joint
   },
   -- balance on the ankle F/T sensors (Player/Motion/balance.lua): off (zmpGain = 0): the real OP3
