@@ -651,12 +651,15 @@ function Walk:joint_angles(q, sensors, dt, support)
   -- the capture point's error on the ankles and hips (the ankle and hip strategies): a shove shows
   -- there before the torso tips (feedback.capture and captureHip, rad per m: { roll, pitch };
   -- pushed left, the ZMP goes left); only while stepping (at stance the tilt's share of the error
-  -- on the ankles rocked the standing OP3 until it crept away, 1.6 m in 60 s)
+  -- on the ankles rocked the standing OP3 until it crept away, 1.6 m in 60 s) and beyond the step
+  -- adjustment's dead band (the walk's own sway, on them, slowed the OP3's sideways walk by a third)
   local kc, kh, e = rawget(fb, 'capture'), rawget(fb, 'captureHip'), self.cp_err
   local thx, thy = 0, 0
-  if e and not support and self.active then
-    if kc then tax, tay = tax - kc[1] * e[2], tay + kc[2] * e[1] end
-    if kh then thx, thy = -kh[1] * e[2], kh[2] * e[1] end
+  local sa = rawget(p, 'stepAdjust')
+  if e and sa and not support and self.active then
+    local ex, ey = deadband(e[1], sa.deadband[1]), deadband(e[2], sa.deadband[2])
+    if kc then tax, tay = tax - kc[1] * ey, tay + kc[2] * ex end
+    if kh then thx, thy = -kh[1] * ey, kh[2] * ex end
   end
   local ankx, anky = clamp(fb.ankle[1] * gx + tax, -lim, lim), clamp(fb.ankle[2] * gy + tay, -lim, lim)
   local kny = clamp(fb.knee * gy, -lim, lim)

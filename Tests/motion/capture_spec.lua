@@ -71,8 +71,8 @@ describe('capture point error', function()
     local robot = fixture.robot
     local ji = {}
     for i, n in ipairs(robot.joints) do ji[n] = i end
-    -- walking, tipped left by 0.05 rad: the capture point's error is +y; the same sensors with and
-    -- without the gains (standing: none)
+    -- walking, tipped left by 0.2 rad: the capture point's error is +y, beyond the dead band; the
+    -- same sensors with and without the gains (standing: none)
     local function angles(kc, kh, stand)
       local w, p = walk(0)
       p.feedback.capture, p.feedback.captureHip = { kc, 0 }, { kh, 0 }
@@ -82,23 +82,24 @@ describe('capture point error', function()
       w:advance(dt)
       local q = {}
       for i = 1, #robot.joints do q[i] = 0 end
-      local s = sensors(p, 0, 0, -0.05)
+      local s = sensors(p, 0, 0, -0.2)
       s.gyro, s.position = { 0, 0, 0 }, nil
       w:joint_angles(q, s, dt)
       return q, w.cp_err[2], w.support == Walk.LEFT and 'l_' or 'r_'
     end
     local q0, e, sup = angles(0, 0)
     local q1 = angles(2, 3)
-    assert.is_true(e > 0.01)
+    assert.is_true(e > params.stepAdjust.deadband[2] + 0.01)
     assert.are.same(angles(0, 0, true), angles(2, 3, true))
     for _, side in ipairs({ 'l_', 'r_' }) do
       local ank, hip = ji[side .. 'ank_roll'], ji[side .. 'hip_roll']
       -- the support leg's: rotations about the torso's x axis through each joint's axis
       local k = side == sup and 1 or 0
       local ax = model:axis(robot.joints[ank])[1]
-      assert.is_near(-2 * e * ax * k, q1[ank] - q0[ank], 1e-9)
+      local db = params.stepAdjust.deadband[2]
+      assert.is_near(-2 * (e - db) * ax * k, q1[ank] - q0[ank], 1e-9)
       ax = model:axis(robot.joints[hip])[1]
-      assert.is_near(-3 * e * ax * k, q1[hip] - q0[hip], 1e-9)
+      assert.is_near(-3 * (e - db) * ax * k, q1[hip] - q0[hip], 1e-9)
     end
   end)
 
