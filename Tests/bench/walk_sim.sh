@@ -75,8 +75,12 @@ for robot in "${ROBOT_LIST[@]}"; do
           FIG[$k psn]=$(run "${robot}_${engine}_push_side_nostep" "$NOSTEP" pushmax nostep side | awk '{print $4}')
           FIG[$k pf]=$(run "${robot}_${engine}_push_fwd" "" pushmax gyro forward | awk '{print $4}')
           FIG[$k pfn]=$(run "${robot}_${engine}_push_fwd_nostep" "$NOSTEP" pushmax nostep forward | awk '{print $4}')
-          FIG[$k ps0]=$(run "${robot}_${engine}_push_side_nofb" "$NOFB" pushmax nofb side | awk '{print $4}')
-          FIG[$k pf0]=$(run "${robot}_${engine}_push_fwd_nofb" "$NOFB" pushmax nofb forward | awk '{print $4}') ;;
+          # the capture point's feedback (Player/Motion/capture.lua) off too, where the body has it
+          nofb=$NOFB
+          luajit -e "os.exit(rawget(require('Config').load('walk').feedback, 'capture') and 0 or 1)" &&
+            nofb="$nofb;feedback.capture=0,0;feedback.captureHip=0,0"
+          FIG[$k ps0]=$(run "${robot}_${engine}_push_side_nofb" "$nofb" pushmax nofb side | awk '{print $4}')
+          FIG[$k pf0]=$(run "${robot}_${engine}_push_fwd_nofb" "$nofb" pushmax nofb forward | awk '{print $4}') ;;
         tick)
           read -r med p99 < <(luajit Tests/bench/motion_tick.lua 20000 | sed -nE 's/.*median ([0-9.]+) us, p99 ([0-9.]+) us.*/\1 \2/p')
           FIG[$k tick]="$med / $p99" ;;

@@ -35,9 +35,9 @@ ks.apply_walk_params(Walk, wait, note)
 
 -- the gyro feedback's gains as configured, and switched off
 local FB = {}
-for _, k in ipairs({ 'ankle', 'knee', 'hip', 'arm', 'tilt' }) do
+for _, k in ipairs({ 'ankle', 'knee', 'hip', 'arm', 'tilt', 'capture', 'captureHip' }) do
   local v = Walk.get('feedback.' .. k)
-  FB[k] = type(v) == 'table' and { v[1], v[2] } or v
+  FB[k] = type(v) == 'table' and { v[1], v[2] } or v -- (nil: a body without that key)
 end
 local function feedback(on)
   for k, v in pairs(FB) do
