@@ -20,7 +20,7 @@ local M = {}
 local G = 9.81
 
 -- Updates w.cp_err (and w.cp_vel: the accelerometer's velocity error) from sensors (angle, acc)
--- and the filtered gyro rates (rad/s) for one tick of dt s.
+-- and the gyro's rates (rad/s, torso frame) for one tick of dt s.
 function M.update(w, sensors, gyro, dt)
   local angle = sensors.angle
   if not angle then return end
