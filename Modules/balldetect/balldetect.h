@@ -86,6 +86,7 @@ typedef struct bd_obstacle {
   int32_t top, foot;         /* highest row of the runs, the foot row (the 95th percentile of the columns' lowest rows) */
   int32_t foot_visible;      /* 0 when the runs go down to the image's bottom (the foot is below it) */
   int32_t red, blue;         /* labels of the team colours in the band */
+  int32_t fx0, fx1;          /* columns of the non-field labels on the foot's rows (the feet), inclusive */
 } bd_obstacle;
 
 /* Obstacles in a label image with its field boundary (bd_field_boundary). min_run: rows a run

@@ -48,6 +48,7 @@ function M.find(bd, p, cm, pose, cfg, ball, out)
       bands[nb] = b
       b.x0, b.x1, b.top, b.foot, b.vis, b.red, b.blue, b.dh = o.x0, o.x1, o.top, o.foot, o.foot_visible, o.red,
         o.blue, dh
+      b.fx0, b.fx1 = o.fx0, o.fx1
     end
   end
   for i = nb + 1, #bands do bands[i] = nil end
@@ -62,6 +63,7 @@ function M.find(bd, p, cm, pose, cfg, ball, out)
     if last and gap_m <= cfg.merge_gap and (arm or agree) then
       last.x1, last.top = b.x1, math.min(last.top, b.top)
       if b.foot > last.foot then last.foot, last.dh, last.vis = b.foot, b.dh, b.vis end
+      last.fx0, last.fx1 = math.min(last.fx0, b.fx0), math.max(last.fx1, b.fx1)
       last.red, last.blue = last.red + b.red, last.blue + b.blue
     else
       merged[#merged + 1] = b
@@ -74,7 +76,13 @@ function M.find(bd, p, cm, pose, cfg, ball, out)
     if gx and gx <= cfg.self_x and math.abs(gy) <= cfg.self_y then gx = nil end
     if gx then
       local hx, hy = gx - pose[1], gy - pose[2]
-      local width = (o.x1 - o.x0 + 1) * s * dh / cm.f      -- m, at the foot's range
+      -- m, at the foot's range: the band's, or its feet's when the field goes on beyond the image's
+      -- top edge above it (a robot cut by that edge shows one leg rising to it, its feet below)
+      local x0, x1 = o.x0, o.x1
+      if o.top == 0 and bd.top[math.floor((o.x0 + o.x1) / 2)] <= 0 then
+        x0, x1 = math.min(x0, o.fx0), math.max(x1, o.fx1)
+      end
+      local width = (x1 - x0 + 1) * s * dh / cm.f
       -- the foot point is the front of the feet: the robot's middle is further along the ray
       local k = (dh + cfg.depth_offset) / dh
       local x, y = pose[1] + hx * k, pose[2] + hy * k
