@@ -18,8 +18,10 @@ static int by_width(const void *a, const void *b) {
  * (nothing goes on down: not another robot's legs), reached from the band's columns that stand on
  * that foot, up to max_gap columns bridged. A robot cut by the image's top edge shows one leg's
  * columns rising to it, and its feet, wider, below. */
-static int foot_column(const uint8_t *labels, int wl, int hl, uint8_t field_mask, int foot, int x) {
+static int foot_column(const uint8_t *labels, int wl, int hl, const int16_t *top, uint8_t field_mask, int foot,
+                       int x) {
   int on = 0;
+  if (foot < top[x] + 2) return 0;
   for (int y = foot; y >= 0 && y > foot - 3; y--) on |= !(labels[(size_t)y * wl + x] & field_mask);
   if (!on) return 0;
   for (int y = foot + 3; y < hl && y <= foot + 5; y++)
@@ -27,14 +29,16 @@ static int foot_column(const uint8_t *labels, int wl, int hl, uint8_t field_mask
   return 1;
 }
 
-static void foot_extent(const uint8_t *labels, int wl, int hl, uint8_t field_mask, int max_gap, bd_obstacle *o,
-                        const col *cols) {
+static void foot_extent(const uint8_t *labels, int wl, int hl, const int16_t *top, uint8_t field_mask, int max_gap,
+                        bd_obstacle *o, const col *cols) {
   o->fx0 = o->x0;
   o->fx1 = o->x1;
+  o->flat = 0;
   for (int c = o->x0; c <= o->x1; c++) {
-    if (!cols[c].ok || cols[c].foot < o->foot - 2) continue;
+    if (!cols[c].ok || cols[c].foot < o->foot - 2 || cols[c].foot > o->foot + 2) continue;
+    o->flat++;
     for (int x = c - 1, gap = 0; x >= 0 && gap <= max_gap; x--) {
-      if (!foot_column(labels, wl, hl, field_mask, o->foot, x)) {
+      if (!foot_column(labels, wl, hl, top, field_mask, o->foot, x)) {
         gap++;
       } else {
         gap = 0;
@@ -42,7 +46,7 @@ static void foot_extent(const uint8_t *labels, int wl, int hl, uint8_t field_mas
       }
     }
     for (int x = c + 1, gap = 0; x < wl && gap <= max_gap; x++) {
-      if (!foot_column(labels, wl, hl, field_mask, o->foot, x)) {
+      if (!foot_column(labels, wl, hl, top, field_mask, o->foot, x)) {
         gap++;
       } else {
         gap = 0;
@@ -152,7 +156,7 @@ int bd_obstacles(bd *w, const uint8_t *labels, int wl, int hl, const int16_t *to
         }
       o->foot = feet[(k - 1) * 19 / 20];
       if (o->foot >= hl - 1) o->foot_visible = 0;
-      foot_extent(labels, wl, hl, field_mask, max_gap, o, cols);
+      foot_extent(labels, wl, hl, top, field_mask, max_gap, o, cols);
     }
     x = x1 + 1;
   }

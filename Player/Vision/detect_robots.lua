@@ -21,6 +21,13 @@ local function ground(cm, pose, s, x0, x1, foot)
 end
 
 local bands, merged = {}, {}   -- reused from frame to frame: no garbage per frame
+
+-- the team of a band's colour labels: 1 red, 0 blue, -1 unknown
+local function team(cfg, red, blue)
+  if red >= cfg.min_team and red > 2 * blue then return 1 end
+  if blue >= cfg.min_team and blue > 2 * red then return 0 end
+  return -1
+end
 local function leftmost(a, b) return a.x0 < b.x0 end
 
 -- the band (label columns x0..x1, foot row) is the ball detected: within its width, its foot at its bottom
@@ -37,7 +44,8 @@ function M.find(bd, p, cm, pose, cfg, ball, out)
   local s = p.scale
   -- bands left to right; neighbours merge when the gap between them is narrower than
   -- cfg.merge_gap m at the nearer one's range and their feet agree (two legs), or one of them is
-  -- no wider than an arm (cfg.arm_width m): a hand reaching below the boundary has a far foot
+  -- no wider than an arm (cfg.arm_width m): a hand reaching below the boundary has a far foot;
+  -- never when their colours name different teams (a robot further away seen beside a nearer one)
   local nb = 0
   for i = 0, n - 1 do
     local o = bd.obst[i]
@@ -48,7 +56,7 @@ function M.find(bd, p, cm, pose, cfg, ball, out)
       bands[nb] = b
       b.x0, b.x1, b.top, b.foot, b.vis, b.red, b.blue, b.dh = o.x0, o.x1, o.top, o.foot, o.foot_visible, o.red,
         o.blue, dh
-      b.fx0, b.fx1 = o.fx0, o.fx1
+      b.fx0, b.fx1, b.flat = o.fx0, o.fx1, o.flat
     end
   end
   for i = nb + 1, #bands do bands[i] = nil end
@@ -60,7 +68,10 @@ function M.find(bd, p, cm, pose, cfg, ball, out)
     local gap_m = last and (b.x0 - last.x1) * s * near / cm.f
     local arm = last and math.min(last.x1 - last.x0 + 1, b.x1 - b.x0 + 1) * s * near / cm.f <= cfg.arm_width
     local agree = last and math.abs(last.dh - b.dh) <= 0.25 * math.max(last.dh, b.dh) + 0.1
-    if last and gap_m <= cfg.merge_gap and (arm or agree) then
+    local t1 = last and team(cfg, last.red, last.blue)
+    local t2 = last and team(cfg, b.red, b.blue)
+    local teams = last and t1 >= 0 and t2 >= 0 and t1 ~= t2
+    if last and gap_m <= cfg.merge_gap and (arm or agree) and not teams then
       last.x1, last.top = b.x1, math.min(last.top, b.top)
       if b.foot > last.foot then last.foot, last.dh, last.vis = b.foot, b.dh, b.vis end
       last.fx0, last.fx1 = math.min(last.fx0, b.fx0), math.max(last.fx1, b.fx1)
@@ -97,9 +108,7 @@ function M.find(bd, p, cm, pose, cfg, ball, out)
         r.u0, r.u1, r.v1 = o.x0 * s, (o.x1 + 1) * s, (o.foot + 1) * s
         r.v0 = math.max(o.top * s, r.v1 - cm.f * cfg.height / dh)
         r.foot_visible = o.vis ~= 0
-        r.team = -1
-        if o.red >= cfg.min_team and o.red > 2 * o.blue then r.team = 1
-        elseif o.blue >= cfg.min_team and o.blue > 2 * o.red then r.team = 0 end
+        r.team = team(cfg, o.red, o.blue)
       end
     end
   end
