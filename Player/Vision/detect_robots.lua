@@ -8,6 +8,7 @@
 --   --   0 blue, 1 red), u0, v0, u1, v1 (px box), foot_visible }; nearest first, at most 4
 -- ball: the ball detected in this frame (Vision.detect's result): a band that is the ball (the white
 -- one's dark patches against what is beyond the field) is not a robot.
+local bit = require('bit')
 local project = require('Vision.project')
 
 local M = {}
@@ -30,12 +31,24 @@ local function team(cfg, red, blue)
 end
 local function leftmost(a, b) return a.x0 < b.x0 end
 
--- the band (label columns x0..x1, foot row) is the ball detected: within its width, its foot at its bottom
-local function is_ball(ball, s, x0, x1, foot)
+-- the band (label columns x0..x1, foot row) is the ball detected: within its width, its foot at its
+-- bottom, and not a robot standing behind the ball, whose feet it hides: a ball further below the field
+-- boundary than 1.5 radii is joined to it in the band's middle column by mostly (70%) non-field
+-- labels only when something stands there (the far lines blurred into strips bridge it sparsely)
+local function is_ball(ball, bd, p, cfg, x0, x1, foot)
   if not ball.detected then return false end
-  local r = ball.radius
-  return x0 * s >= ball.u - 1.2 * r and (x1 + 1) * s <= ball.u + 1.2 * r and
-    math.abs((foot + 1) * s - (ball.v + r)) <= r
+  local r, s = ball.radius, p.scale
+  if x0 * s < ball.u - 1.2 * r or (x1 + 1) * s > ball.u + 1.2 * r or math.abs((foot + 1) * s - (ball.v + r)) > r then
+    return false
+  end
+  local col = math.floor((x0 + x1) / 2)
+  local y0, y1 = math.max(0, bd.top[col] + 1), math.floor((ball.v - r) / s)
+  if y1 - y0 + 1 <= math.max(1.5 * r / s, cfg.max_gap + 2) then return true end
+  local n = 0
+  for y = y0, y1 do
+    if bit.band(p.labels[y * p.wa + col], cfg.field) == 0 then n = n + 1 end
+  end
+  return n < 0.7 * (y1 - y0 + 1)
 end
 
 function M.find(bd, p, cm, pose, cfg, ball, out)
@@ -50,7 +63,7 @@ function M.find(bd, p, cm, pose, cfg, ball, out)
   for i = 0, n - 1 do
     local o = bd.obst[i]
     local _, _, dh = ground(cm, pose, s, o.x0, o.x1, o.foot)
-    if dh and not is_ball(ball, s, o.x0, o.x1, o.foot) then
+    if dh and not is_ball(ball, bd, p, cfg, o.x0, o.x1, o.foot) then
       nb = nb + 1
       local b = bands[nb] or {}
       bands[nb] = b
