@@ -18,7 +18,7 @@ typedef struct bd bd;
 typedef struct bd_candidate { double u, v, radius; double inner, ring; double score; double prob; } bd_candidate;
 typedef struct bd_mlp bd_mlp;
 typedef struct bd_obstacle {
-  int32_t x0, x1; int32_t top, foot; int32_t foot_visible; int32_t red, blue; int32_t fx0, fx1; int32_t flat;
+  int32_t x0, x1; int32_t top, foot; int32_t foot_visible; int32_t red, blue; int32_t fx0, fx1;
 } bd_obstacle;
 int bd_obstacles(bd *w, const uint8_t *labels, int wl, int hl, const int16_t *top, uint8_t field_mask,
                  uint8_t red, uint8_t blue, int min_run, int min_below, int max_gap, int leg_gap,

@@ -87,7 +87,6 @@ typedef struct bd_obstacle {
   int32_t foot_visible;      /* 0 when the runs go down to the image's bottom (the foot is below it) */
   int32_t red, blue;         /* labels of the team colours in the band */
   int32_t fx0, fx1;          /* columns of the non-field labels on the foot's rows (the feet), inclusive */
-  int32_t flat;              /* the band's columns whose foot is within 2 rows of the band's (a flat sole) */
 } bd_obstacle;
 
 /* Obstacles in a label image with its field boundary (bd_field_boundary). min_run: rows a run

@@ -31,27 +31,30 @@ static int foot_column(const uint8_t *labels, int wl, int hl, const int16_t *top
 
 static void foot_extent(const uint8_t *labels, int wl, int hl, const int16_t *top, uint8_t field_mask, int max_gap,
                         bd_obstacle *o, const col *cols) {
-  o->fx0 = o->x0;
-  o->fx1 = o->x1;
-  o->flat = 0;
+  /* the band's first and last columns standing on its foot: the scans start there */
+  int c0 = -1, c1 = -1;
   for (int c = o->x0; c <= o->x1; c++) {
     if (!cols[c].ok || cols[c].foot < o->foot - 2 || cols[c].foot > o->foot + 2) continue;
-    o->flat++;
-    for (int x = c - 1, gap = 0; x >= 0 && gap <= max_gap; x--) {
-      if (!foot_column(labels, wl, hl, top, field_mask, o->foot, x)) {
-        gap++;
-      } else {
-        gap = 0;
-        if (x < o->fx0) o->fx0 = x;
-      }
+    if (c0 < 0) c0 = c;
+    c1 = c;
+  }
+  o->fx0 = o->x0;
+  o->fx1 = o->x1;
+  if (c0 < 0) return;
+  for (int x = c0 - 1, gap = 0; x >= 0 && gap <= max_gap; x--) {
+    if (!foot_column(labels, wl, hl, top, field_mask, o->foot, x)) {
+      gap++;
+    } else {
+      gap = 0;
+      if (x < o->fx0) o->fx0 = x;
     }
-    for (int x = c + 1, gap = 0; x < wl && gap <= max_gap; x++) {
-      if (!foot_column(labels, wl, hl, top, field_mask, o->foot, x)) {
-        gap++;
-      } else {
-        gap = 0;
-        if (x > o->fx1) o->fx1 = x;
-      }
+  }
+  for (int x = c1 + 1, gap = 0; x < wl && gap <= max_gap; x++) {
+    if (!foot_column(labels, wl, hl, top, field_mask, o->foot, x)) {
+      gap++;
+    } else {
+      gap = 0;
+      if (x > o->fx1) o->fx1 = x;
     }
   }
 }

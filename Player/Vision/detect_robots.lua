@@ -69,7 +69,7 @@ function M.find(bd, p, cm, pose, cfg, ball, out)
       bands[nb] = b
       b.x0, b.x1, b.top, b.foot, b.vis, b.red, b.blue, b.dh = o.x0, o.x1, o.top, o.foot, o.foot_visible, o.red,
         o.blue, dh
-      b.fx0, b.fx1, b.flat = o.fx0, o.fx1, o.flat
+      b.fx0, b.fx1 = o.fx0, o.fx1
     end
   end
   for i = nb + 1, #bands do bands[i] = nil end
