@@ -2,7 +2,7 @@
 -- ball_frames_test.sh with seeds no training run uses), through the vision pipeline with the camera
 -- pose the renderer used. Prints the figures of issue 18 and TAP lines for the goals named in GATE.
 --   luajit Tests/vision/ball_frames.lua FRAMES KIND [GATE]     KIND: white | orange
--- GATE: comma-separated goals to fail on (recall, false, range, bearing); the others only print.
+-- GATE: comma-separated goals to fail on (recall, false, range, bearing, robots); the others only print.
 -- DRAW=DIR writes a PNG per frame listed in DRAW_FRAMES (or each miss and false detection) with the
 -- field boundary, the candidates and the detection drawn; with ROBOT_MISSES=1 also each frame where a
 -- robot in view up to 3 m was missed or a robot detected with its feet in view near none (each printed).
