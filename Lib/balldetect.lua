@@ -23,6 +23,7 @@ typedef struct bd_obstacle {
 int bd_obstacles(bd *w, const uint8_t *labels, int wl, int hl, const int16_t *top, uint8_t field_mask,
                  uint8_t red, uint8_t blue, int min_run, int min_below, int max_gap, int leg_gap,
                  int min_width, bd_obstacle *out, int maxn);
+int bd_column_count(const uint8_t *labels, int wl, int hl, int x, int y0, int y1, uint8_t mask);
 double bd_ball_radius_px(const bd_view *view, double u, double v, double r);
 bd *bd_new(int max_w, int max_h);
 void bd_free(bd *w);

@@ -99,6 +99,10 @@ int bd_obstacles(bd *w, const uint8_t *labels, int wl, int hl, const int16_t *to
                  uint8_t red, uint8_t blue, int min_run, int min_below, int max_gap, int leg_gap,
                  int min_width, bd_obstacle *out, int maxn);
 
+/* Labels in column x, rows y0..y1 (clipped to the image), with none of mask's bits; BD_EARG for a bad
+ * column. */
+int bd_column_count(const uint8_t *labels, int wl, int hl, int x, int y0, int y1, uint8_t mask);
+
 /* A small classifier: nin inputs -> nhid ReLU units -> one sigmoid output. */
 typedef struct bd_mlp bd_mlp;
 /* Reads a model file: a line "hrp-ball-mlp 1 NIN NHID MARGIN", then W1 (NHID rows of NIN), b1

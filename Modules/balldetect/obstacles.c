@@ -167,3 +167,12 @@ int bd_obstacles(bd *w, const uint8_t *labels, int wl, int hl, const int16_t *to
   for (int i = 0; i < nall && n < maxn; i++) out[n++] = tmp[i];
   return n;
 }
+
+int bd_column_count(const uint8_t *labels, int wl, int hl, int x, int y0, int y1, uint8_t mask) {
+  if (!labels || x < 0 || x >= wl) return BD_EARG;
+  if (y0 < 0) y0 = 0;
+  if (y1 > hl - 1) y1 = hl - 1;
+  int n = 0;
+  for (int y = y0; y <= y1; y++) n += !(labels[(size_t)y * wl + x] & mask);
+  return n;
+}

@@ -8,7 +8,7 @@
 --   --   0 blue, 1 red), u0, v0, u1, v1 (px box), foot_visible }; nearest first, at most 4
 -- ball: the ball detected in this frame (Vision.detect's result): a band that is the ball (the white
 -- one's dark patches against what is beyond the field) is not a robot.
-local bit = require('bit')
+local balldetect = require('balldetect')
 local project = require('Vision.project')
 
 local M = {}
@@ -44,11 +44,7 @@ local function is_ball(ball, bd, p, cfg, x0, x1, foot)
   local col = math.floor((x0 + x1) / 2)
   local y0, y1 = math.max(0, bd.top[col] + 1), math.floor((ball.v - r) / s)
   if y1 - y0 + 1 <= math.max(1.5 * r / s, cfg.max_gap + 2) then return true end
-  local n = 0
-  for y = y0, y1 do
-    if bit.band(p.labels[y * p.wa + col], cfg.field) == 0 then n = n + 1 end
-  end
-  return n < 0.7 * (y1 - y0 + 1)
+  return balldetect.C.bd_column_count(p.labels, p.wa, p.ha, col, y0, y1, cfg.field) < 0.7 * (y1 - y0 + 1)
 end
 
 function M.find(bd, p, cm, pose, cfg, ball, out)
