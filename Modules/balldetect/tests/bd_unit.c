@@ -92,6 +92,8 @@ int main(void) {
   n = bd_obstacles(w, L, W, H, top, GREEN | WHITE, RED, 4, 6, 2, 3, 0, 3, ob, 8);
   check(n == 1 && ob[0].x0 == 150 && ob[0].x1 == 153 && ob[0].foot == 60, "the leg rising to the top edge");
   check(n == 1 && ob[0].fx0 == 140 && ob[0].fx1 == 165, "its foot's columns, not the other robot's legs");
+  check(bd_column_count(L, W, H, 150, -5, 70, GREEN | WHITE) == 61 &&
+        bd_column_count(L, W, H, W, 0, 10, GREEN) == BD_EARG, "non-field labels counted in a column");
 
   char err[256];
   check(bd_mlp_load("/nonexistent/model.txt", err, sizeof err) == NULL && strstr(err, "/nonexistent/model.txt"),
