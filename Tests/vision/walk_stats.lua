@@ -8,6 +8,7 @@
 --   local ok, note = st:ball(range, tx, ty, detected, est)   a frame with the ball fully in view;
 --       est[name] = { x, y } (robot frame) per estimate; the first name's decides found / wrong
 --   st:report(); st:tap(gate, { min_inview = N })
+--   st:save(path); local all = M.merge({ path1, path2 })   -- the runs of several seeds as one
 local M = {}
 local S = {}
 S.__index = S
@@ -82,8 +83,8 @@ local function summary(list)
 end
 
 function S:report()
-  print(string.format('white ball, walking: recall %d/%d = %.1f%% (fully in view, 0.3-4 m; %d detected at a wrong place), '
-    .. 'false detections %d/%d frames without the ball = %.2f%%', self.found, self.inview,
+  print(string.format('white ball, walking: recall %d/%d = %.1f%% (fully in view, 0.3-4 m; '
+    .. '%d detected at a wrong place), false detections %d/%d frames without the ball = %.2f%%', self.found, self.inview,
     100 * self.found / math.max(1, self.inview), self.wrong, self.false_pos, self.nempty,
     100 * self.false_pos / math.max(1, self.nempty)))
   local bands = {}
@@ -120,6 +121,54 @@ function S:tap(gate, opts)
   goal('range', r.n > 0 and r.max <= 0.10, string.format('range error max %.1f%% <= 10%% up to 3 m', 100 * r.max))
   goal('bearing', b.n > 0 and b.max <= 3, string.format('bearing error max %.2f deg <= 3', b.max))
   print('1..' .. n)
+end
+
+-- Writes the figures gathered as a Lua table (for merge).
+function S:save(path)
+  local f = assert(io.open(path, 'w'))
+  local function put(v, indent)
+    if type(v) == 'table' then
+      f:write('{\n')
+      for k, x in pairs(v) do
+        f:write(indent, '  [', type(k) == 'string' and string.format('%q', k) or tostring(k), '] = ')
+        put(x, indent .. '  ')
+        f:write(',\n')
+      end
+      f:write(indent, '}')
+    elseif type(v) == 'number' then f:write(string.format('%.17g', v))
+    else f:write(string.format('%q', tostring(v))) end
+  end
+  f:write('return ')
+  put({ names = self.names, why = self.why, inview = self.inview, found = self.found, wrong = self.wrong,
+        nempty = self.nempty, false_pos = self.false_pos, range = self.range, bearing = self.bearing,
+        by_dist = self.by_dist }, '')
+  f:write('\n')
+  f:close()
+end
+
+-- The figures of several saved runs together.
+function M.merge(paths)
+  local all
+  for _, path in ipairs(paths) do
+    local d = assert(loadfile(path))()
+    if not all then
+      all = M.new(d.names)
+    end
+    for k, n in pairs(d.why) do all.why[k] = (all.why[k] or 0) + n end
+    for _, k in ipairs({ 'inview', 'found', 'wrong', 'nempty', 'false_pos' }) do all[k] = all[k] + d[k] end
+    for _, k in ipairs({ 'range', 'bearing' }) do
+      for name, list in pairs(d[k]) do
+        all[k][name] = all[k][name] or {}
+        for _, v in ipairs(list) do table.insert(all[k][name], v) end
+      end
+    end
+    for b, bd in pairs(d.by_dist) do
+      local a = all.by_dist[b] or { n = 0, found = 0 }
+      a.n, a.found = a.n + bd.n, a.found + bd.found
+      all.by_dist[b] = a
+    end
+  end
+  return all
 end
 
 return M
