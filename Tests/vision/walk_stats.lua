@@ -84,8 +84,8 @@ end
 
 function S:report()
   print(string.format('white ball, walking: recall %d/%d = %.1f%% (fully in view, 0.3-4 m; '
-    .. '%d detected at a wrong place), false detections %d/%d frames without the ball = %.2f%%', self.found, self.inview,
-    100 * self.found / math.max(1, self.inview), self.wrong, self.false_pos, self.nempty,
+    .. '%d detected at a wrong place), false detections %d/%d frames without the ball = %.2f%%',
+    self.found, self.inview, 100 * self.found / math.max(1, self.inview), self.wrong, self.false_pos, self.nempty,
     100 * self.false_pos / math.max(1, self.nempty)))
   local bands = {}
   for b = 1, 4 do
