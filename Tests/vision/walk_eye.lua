@@ -16,7 +16,9 @@
 -- other camera poses, to tell where the range error comes from: 'upright' (the joint angles only,
 -- the torso taken as upright), 'late' (joints and IMU angles when the vision got the frame: the
 -- vision before this test), 'exposure' (joints and IMU angles at the exposure), 'true' (the true
--- camera pose: what the detector's pixel alone costs).
+-- camera pose: what the detector's pixel alone costs); 'exp_angle' (the torso angles at the exposure,
+-- the legs' angles at the delivery: what the frame carries), 'tick_early' (joints and angles one tick
+-- before the exposure's end: the middle of the 10 ms exposure is 5 ms before it).
 -- Prints one line per missed or wrong frame (WALK_EYE_VERBOSE=1: every scored frame), the figures
 -- and TAP lines; WALK_EYE_GATE names the goals to fail on (recall,false,range,bearing; default all).
 -- WALK_EYE_SAVE=file: the figures into a file instead of TAP lines (walk_merge.lua: several runs).
@@ -139,7 +141,7 @@ local function head_command(now, e)
 end
 
 -- ---- scoring
-local st = stats.new({ 'vision', 'upright', 'late', 'exposure', 'exp_angle', 'true' })
+local st = stats.new({ 'vision', 'upright', 'late', 'exposure', 'exp_angle', 'tick_early', 'true' })
 local pose = { R = {} }
 local qq = {}
 
@@ -201,6 +203,8 @@ local function score(frame_tick, got_tick, det)
     est.late = { through(g.q, e.q, { g.roll, g.pitch }, u, v) }
     est.exposure = { through(e.q, e.q, { e.roll, e.pitch }, u, v) }
     est.exp_angle = { through(g.q, e.q, { e.roll, e.pitch }, u, v) }
+    local e1 = at(frame_tick - 1)
+    if e1 then est.tick_early = { through(e1.q, e1.q, { e1.roll, e1.pitch }, u, v) } end
     est['true'] = { project.to_ground(cm, walk_truth.level_pose(t, cam), u, v, R_SEEN) }
   end
   local ok, note = st:ball(range, tx, ty, det.detected, est)
