@@ -3,7 +3,7 @@
 # with 5 seeds of 120 s each: ~7000 frames with the ball fully in view): recall, false detections,
 # range and bearing errors of the vision and of its pixel through other camera poses. Figures only
 # (the goals print; the benchmark never fails on them).
-#   Tests/bench/walk_eye.sh [SECONDS] [SEEDS...]
+#   [WALK_EYE_BALL=orange] Tests/bench/walk_eye.sh [SECONDS] [SEEDS...]
 set -u
 cd "$(dirname "$0")/../.."
 SECONDS_RUN=${1:-120}

@@ -142,6 +142,7 @@ end
 
 -- ---- scoring
 local st = stats.new({ 'vision', 'upright', 'late', 'exposure', 'exp_angle', 'tick_early', 'true' })
+st.kind = rawget(vcfg.ball, 'kind') or 'orange'
 local pose = { R = {} }
 local qq = {}
 

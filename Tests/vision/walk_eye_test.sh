@@ -12,7 +12,8 @@ set -u
 cd "$(dirname "$0")/../.."
 source Run/env.sh
 [ -x build/bin/dcm_sim ] || { echo "not ok 1 - build/bin/dcm_sim not built"; exit 1; }
-export HRP_SITE="$PWD/Tests/scenarios/site_white"
+# WALK_EYE_BALL=orange: the colour table's orange ball (the config's default) instead of the white one
+[ "${WALK_EYE_BALL:-white}" = white ] && export HRP_SITE="$PWD/Tests/scenarios/site_white"
 GATE="${WALK_EYE_GATE-recall,false,bearing}"
 SECONDS_RUN="${WALK_EYE_SECONDS:-60}"
 SEEDS=(${WALK_EYE_SEEDS:-1 2})

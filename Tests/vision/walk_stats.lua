@@ -83,9 +83,10 @@ local function summary(list)
 end
 
 function S:report()
-  print(string.format('white ball, walking: recall %d/%d = %.1f%% (fully in view, 0.3-4 m; '
+  print(string.format('%s ball, walking: recall %d/%d = %.1f%% (fully in view, 0.3-4 m; '
     .. '%d detected at a wrong place), false detections %d/%d frames without the ball = %.2f%%',
-    self.found, self.inview, 100 * self.found / math.max(1, self.inview), self.wrong, self.false_pos, self.nempty,
+    self.kind or 'the', self.found, self.inview, 100 * self.found / math.max(1, self.inview), self.wrong,
+    self.false_pos, self.nempty,
     100 * self.false_pos / math.max(1, self.nempty)))
   local bands = {}
   for b = 1, 4 do
@@ -139,7 +140,8 @@ function S:save(path)
     else f:write(string.format('%q', tostring(v))) end
   end
   f:write('return ')
-  put({ names = self.names, why = self.why, inview = self.inview, found = self.found, wrong = self.wrong,
+  put({ kind = self.kind, names = self.names, why = self.why, inview = self.inview, found = self.found,
+        wrong = self.wrong,
         nempty = self.nempty, false_pos = self.false_pos, range = self.range, bearing = self.bearing,
         by_dist = self.by_dist }, '')
   f:write('\n')
@@ -153,6 +155,7 @@ function M.merge(paths)
     local d = assert(loadfile(path))()
     if not all then
       all = M.new(d.names)
+      all.kind = d.kind
     end
     for k, n in pairs(d.why) do all.why[k] = (all.why[k] or 0) + n end
     for _, k in ipairs({ 'inview', 'found', 'wrong', 'nempty', 'false_pos' }) do all[k] = all[k] + d[k] end
