@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The white ball seen by the OP3 walking in the sim, the long run (Tests/vision/walk_eye_test.sh
-# with 5 seeds of 120 s each: ~7000 frames with the ball fully in view): recall, false detections,
+# with 5 seeds of 120 s each: ~8700 frames with the ball fully in view): recall, false detections,
 # range and bearing errors of the vision and of its pixel through other camera poses. Figures only
 # (the goals print; the benchmark never fails on them).
 #   [WALK_EYE_BALL=orange] Tests/bench/walk_eye.sh [SECONDS] [SEEDS...]
