@@ -44,7 +44,7 @@ if [ "$k" -ge 3 ]; then
   tgrow=$((trs[k - 1] - trs[1]))
   [ "$tgrow" -lt 0 ] && tgrow=0   # the JIT flushed
   # the resident set holds the new traces too: their IR in the heap (4 kB each, below) and their
-  # machine code (up to 4 kB more each); 1 MB besides (a leak of 20 bytes a frame passes it)
+  # machine code (up to 4 kB more each); 1 MB besides (a leak of 20 bytes a frame exceeds that in 50 s)
   grow=$((rss[k - 1] - rss[1]))
   rallow=$((1024 + 8 * tgrow))
   [ "$grow" -le "$rallow" ] \
