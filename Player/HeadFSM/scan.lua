@@ -30,7 +30,9 @@ function M.update(ctx)
     local phase = s - sweep
     -- triangle wave from -1 to 1 and back, direction alternating per sweep
     local u = phase < 0.5 and (4 * phase - 1) or (3 - 4 * phase)
-    local rows = cfg.scan_distances
+    -- the body turning on the spot to search sweeps the view round itself: the far row only (the
+    -- near one, its turn at the head, would let a ball the body turns past go by unseen)
+    local rows = ctx.body_turning and cfg.scan_distances_turning or cfg.scan_distances
     local dist = rows[(sweep % #rows) + 1]
     local bearing = u * cfg.scan_pan
     pan, tilt = point.ground(dist * math.cos(bearing), dist * math.sin(bearing), cfg)
