@@ -82,7 +82,8 @@ return {
   -- looks, where it stands to kick, how fast it goes) in Config/robots/<ROBOT>/behavior.lua
   head = {
     scan_distances = { 2.5, 0.45 }, -- m: the scan's far and near rows (ground distance looked at)
-    scan_distances_turning = { 2.5, 0.45 }, -- m: ... while the body turns on the spot to search
+    turning_row_time = 0.0,    -- s on each row while the body turns on the spot to search, the
+                               -- head looking ahead (0: the scan's sweeps)
     scan_near_first = 1.0,     -- m: a ball lost nearer than this is looked for where it was first
     scan_swing = 0.4,          -- rad, the head's swing around a ball lost near the feet
     goal_look_distance = 3.0,  -- m: a goal out of the head's reach is looked for this far on its side

@@ -30,11 +30,16 @@ function M.update(ctx)
     local phase = s - sweep
     -- triangle wave from -1 to 1 and back, direction alternating per sweep
     local u = phase < 0.5 and (4 * phase - 1) or (3 - 4 * phase)
-    -- the body turning on the spot to search sweeps the view round itself: the far row only (the
-    -- near one, its turn at the head, would let a ball the body turns past go by unseen)
-    local rows = ctx.body_turning and cfg.scan_distances_turning or cfg.scan_distances
+    local rows = cfg.scan_distances
     local dist = rows[(sweep % #rows) + 1]
     local bearing = u * cfg.scan_pan
+    if ctx.body_turning and cfg.turning_row_time > 0 then
+      -- the body turning on the spot to search sweeps the view round itself: the head looks ahead
+      -- and switches rows often (sweeping, a ball the body turned past while the other row was on
+      -- went by unseen)
+      dist = rows[math.floor((ctx.t - t_rows) / cfg.turning_row_time) % #rows + 1]
+      bearing = 0
+    end
     pan, tilt = point.ground(dist * math.cos(bearing), dist * math.sin(bearing), cfg)
   end
   ctx.act.head(pan, tilt)

@@ -5,8 +5,8 @@ return {
   head = {
     scan_pan = 1.4,            -- rad, half-range of the scan (the head pan's reach; the camera's 43 deg
                                -- view covers 0.2-1.0 m and 0.7 m-horizon on the scan's two rows)
-    scan_distances_turning = { 2.5 }, -- m: the far row only (its view reaches from 0.7 m to the
-                               -- horizon; on the near row a turn of the body passed a ball 1.5 m away)
+    turning_row_time = 0.5,    -- s (the view, ~1 rad wide, turning ~0.8 rad/s with the body: each
+                               -- direction seen on both rows)
     ground_z = -0.23,          -- m: the ground below the torso origin (torso frame), for look-at
     camera_z = 0.2,            -- m, the camera above the torso origin (look-at without a kinematic model)
   },
@@ -33,7 +33,6 @@ return {
       slow_angle = 0.15,       -- the push's sway kept the walk at ~0.75 of its speed)
     },
     max_va = 0.8,              -- rad/s
-    max_vy = 0.14,             -- m/s (was 0.1)
     -- shooting with a kick out of the walk (walk.lua's walkKick.forward: the ball ~0.19 m ahead of
     -- the support ankle, in line with the kicking foot) to finish: the ball within max_range of the
     -- point aimed at (0.5 m behind the goal line), i.e. within ~0.9 m of the line. Scoring
