@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """A league of seeded matches in the sim, each a Ray task (Tests/bench/match.sh, refereed), and a table.
 
-    Run/league.py [--matches 20] [--per-team 2] [--half 60] [--ready 15] [--seed 1]
+    Run/league.py [--matches 20] [--per-team 2] [--half 60] [--ready 45] [--seed 1]
                   [--alone alternate|none|1|2] [--address ADDR] [--cpus-per-match 2]
                   [--id-base 133000] [--json FILE]
 
@@ -40,20 +40,34 @@ def play(root, robot_id, per_team, half, ready, seed, alone):
     cmd = ["nice", "bash", os.path.join(root, "Tests/bench/match.sh"), str(per_team), str(half), str(seed),
            str(ready)]
     t0 = time.time()
-    # its own process group: a cancelled task (the league interrupted) ends the whole match
-    p = subprocess.Popen(cmd, env=env, cwd=root, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
-                         start_new_session=True)
+    # its own process group (a cancelled task ends the whole match), and one shell in between: when the
+    # worker exits, Ray kills its direct children with SIGKILL (RAY_kill_child_processes_on_worker_exit),
+    # which would leave match.sh no time to clean up. With the shell in between, match.sh outlives the
+    # worker, sees its parent gone and ends the match itself (its processes, its shared memory).
+    p = subprocess.Popen(["bash", "-c", '"$@" & wait $!', "play"] + cmd, env=env, cwd=root,
+                         stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, start_new_session=True)
     try:
         out, _ = p.communicate()
     except BaseException:
-        os.killpg(p.pid, signal.SIGTERM)
-        try:
-            p.wait(timeout=10)
-        except subprocess.TimeoutExpired:
-            pass
-        os.killpg(p.pid, signal.SIGKILL)
+        end_group(p)
         raise
     return {"seed": seed, "robot_id": robot_id, "rc": p.returncode, "wall": time.time() - t0, "output": out}
+
+
+def end_group(proc, grace=15.0):
+    """SIGTERM to the process group that `proc` leads (a match), then time for match.sh's cleanup;
+    SIGKILL after `grace` s."""
+    pgid = proc.pid
+    try:
+        os.killpg(pgid, signal.SIGTERM)
+        deadline = time.time() + grace
+        while time.time() < deadline:
+            time.sleep(0.2)
+            proc.poll()  # reaps the leader: a zombie still counts as a member
+            os.killpg(pgid, 0)  # ProcessLookupError once the group is empty
+        os.killpg(pgid, signal.SIGKILL)
+    except ProcessLookupError:
+        pass
 
 
 def parse(out):
@@ -124,7 +138,8 @@ def main():
     ap.add_argument("--matches", type=int, default=20)
     ap.add_argument("--per-team", type=int, default=2)
     ap.add_argument("--half", type=float, default=60, help="s of PLAYING per half (simulated)")
-    ap.add_argument("--ready", type=float, default=15, help="s of READY (simulated; the rules' 45)")
+    ap.add_argument("--ready", type=float, default=45,
+                    help="s of READY (simulated): the rules' 45, in which a goalkeeper walks from the touch line to its goal")
     ap.add_argument("--seed", type=int, default=1, help="the first match's seed (then seed + 1, ...)")
     ap.add_argument("--alone", default="alternate", choices=("alternate", "none", "1", "2"))
     ap.add_argument("--address", default=None, help="a Ray cluster's address (default: Ray on this machine)")

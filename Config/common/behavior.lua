@@ -68,7 +68,10 @@ return {
     imu_yaw = true,             -- turn between steps from the IMU's yaw changes, not the walk's plan
     -- other robots seen (Player/Vision/robots.lua) as obstacles, robot frame, moved by odometry
     obstacles = {
-      memory = 4.0,             -- s an obstacle not seen again is kept (a head scan looks away ~2 s)
+      memory = 4.0,             -- s in the camera's view without a sighting: forgotten (a scan looks away ~2 s)
+      -- s without a sighting at all: forgotten, also out of the camera's view (a robot walked past,
+      -- beside or behind: a walking robot moves ~1 m in this time, a standing one stays)
+      memory_out_of_view = 10.0,
       merge = 0.5,              -- m: a sighting this near an obstacle is that obstacle
       blend = 0.5,              -- share of a new sighting in the obstacle's position
       field_margin = 0.5,       -- m: sightings the pose puts further off the field are not robots

@@ -86,6 +86,9 @@ function M.new(opts)
   else
     io.stderr:write('behavior: received packets are not logged: ', perr, '\n')
   end
+  -- the camera's half horizontal field of view: obstacles outside it are kept (World:update's view)
+  local cam = Config.load('camera', { width = 'number', intrinsics = { fx = 'number' } })
+  local view = { pan = 0, half_fov = math.atan(cam.width / 2 / cam.intrinsics.fx) }
   local wcfg = setmetatable({}, { __index = cfg.world })
   wcfg.seed = tonumber(os.getenv('HRP_SEED') or '') or cfg.world.seed
   local blocks = { world = shm.open('world'), game = shm.open('game'), vision = shm.open('vision'),
@@ -95,7 +98,8 @@ function M.new(opts)
     cfg = cfg, rules = rules, gc = gc, team = team, world = World.new(wcfg),
     body = machine('BodyFSM'), head = machine('HeadFSM'),
     game = machine('GameFSM', prev and (prev.penalized and 'penalized' or prev.state)),
-    blocks = blocks, packets = packets, vision_time = -1, vision_time_changed = nil, steps = 0, resumed = prev,
+    blocks = blocks, packets = packets, view = view, vision_time = -1, vision_time_changed = nil, steps = 0,
+    resumed = prev,
   }, Behavior)
   if prev then
     gc:resume(prev.state, prev.penalized)
@@ -144,7 +148,9 @@ function Behavior:step()
   end
   self.vision_changed = self.vision_changed or t
   ctx.vision_stale = (t - self.vision_changed) > self.cfg.vision_stale_after
-  self.world:update(t, odom, vis, self.cfg.world.imu_yaw and Body.get_angle()[3] or nil)
+  local view = self.view
+  view.pan = Body.get_head_position()[1]
+  self.world:update(t, odom, vis, self.cfg.world.imu_yaw and Body.get_angle()[3] or nil, view)
   self.world:publish(self.blocks.world)
   self:talk(t, m)
 

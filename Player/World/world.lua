@@ -87,7 +87,10 @@ M.odom_delta = odom_delta
 -- imu_yaw (optional): the IMU's yaw (rad); only its changes are used, as the turn between steps
 -- in place of the walk's (the walk reports the turn it planned, not how the body actually turned
 -- when a foot slips or pushes the ball).
-function World:update(t, odometry, vision, imu_yaw)
+-- view (optional): { pan = the head's pan (rad), half_fov = the camera's half horizontal field of
+-- view (rad) }: what the camera can see now, so that an obstacle outside it is not forgotten for
+-- not being seen (forget_obstacles).
+function World:update(t, odometry, vision, imu_yaw, view)
   local dt = self.t and (t - self.t) or 0
   self.t = t
   local imu_da
@@ -119,7 +122,7 @@ function World:update(t, odometry, vision, imu_yaw)
     if vision.robots then self:observe_robots(vision.robots, t) end
   end
   self.pose:estimate()
-  self:forget_obstacles(t)
+  self:forget_obstacles(t, dt, view)
 end
 
 -- The obstacles (robot frame) after the robot moved (dx, dy) and turned da: as the ball.
@@ -160,20 +163,32 @@ function World:observe_robots(list, t)
           if ro < rr and rr > 0 then sx, sy = sx * ro / rr, sy * ro / rr end
         end
         best.x, best.y = best.x + oc.blend * (sx - best.x), best.y + oc.blend * (sy - best.y)
-        best.t = t
+        best.t, best.missed = t, 0
         if r.team >= 0 then best.team = r.team end
       elseif #obs < oc.max then
-        obs[#obs + 1] = { x = r.x, y = r.y, team = r.team, t = t }
+        obs[#obs + 1] = { x = r.x, y = r.y, team = r.team, t = t, missed = 0 }
       end
     end
   end
 end
 
--- Obstacles not seen for obstacle memory s are forgotten (they walk away).
-function World:forget_obstacles(t)
+-- Obstacles are forgotten (they walk away) after `memory` s in the camera's view without a
+-- sighting, or `memory_out_of_view` s without one at all: a robot walked past stays known while it
+-- is beside or behind us, where the camera cannot see it. Without a view (no head angle given),
+-- every obstacle counts as in view.
+function World:forget_obstacles(t, dt, view)
+  local oc = self.cfg.obstacles
   local obs, k = self.obstacles, 1
   for i = 1, #obs do
-    if t - obs[i].t <= self.cfg.obstacles.memory then obs[k] = obs[i] k = k + 1 end
+    local o = obs[i]
+    if o.t < t and (not view or math.abs(wrap(atan2(o.y, o.x) - view.pan)) < view.half_fov) then
+      o.missed = o.missed + dt
+    end
+    local in_view_for = view and o.missed or (t - o.t)
+    if in_view_for <= oc.memory and t - o.t <= oc.memory_out_of_view then
+      obs[k] = o
+      k = k + 1
+    end
   end
   for i = #obs, k, -1 do obs[i] = nil end
 end

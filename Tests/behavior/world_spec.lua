@@ -213,8 +213,8 @@ describe('world', function()
   end)
 
   it('takes only the bearing of a robot whose feet are below the image when it is nearer', function()
-    local cfg = setmetatable({ obstacles = { memory = 4, merge = 0.5, blend = 0.5, field_margin = 0.5,
-      min_range = 0.3, max = 8 } }, { __index = wcfg })
+    local cfg = setmetatable({ obstacles = { memory = 4, memory_out_of_view = 10, merge = 0.5, blend = 0.5,
+      field_margin = 0.5, min_range = 0.3, max = 8 } }, { __index = wcfg })
     local w = World.new(cfg)
     w:observe_robots({ { x = 0.6, y = 0.0, team = -1, foot_visible = true } }, 0)
     -- then its feet are out of the image: the sighting's range (0.67 m) is an upper bound
@@ -228,5 +228,44 @@ describe('world', function()
     local before = math.sqrt(o.x ^ 2 + o.y ^ 2)
     w:observe_robots({ { x = 0.5, y = 0.45, team = -1, foot_visible = true } }, 0.2)
     assert.is_true(math.sqrt(o.x ^ 2 + o.y ^ 2) > before + 0.03)
+  end)
+  it('forgets an obstacle unseen in the camera\'s view, keeps one beside it until memory_out_of_view', function()
+    local cfg = setmetatable({ obstacles = { memory = 4, memory_out_of_view = 10, merge = 0.5, blend = 0.5,
+      field_margin = 0.5, min_range = 0.3, max = 8 } }, { __index = wcfg })
+    local w = World.new(cfg)
+    local view = { pan = 0, half_fov = math.rad(28) }
+    w:update(0, { 0, 0, 0 }, nil, nil, view)
+    -- one ahead (in view), one beside (bearing 90 degrees: out of view)
+    w:observe_robots({ { x = 1.0, y = 0.0, team = -1 }, { x = 0.0, y = 0.8, team = -1 } }, 0)
+    assert.are.equal(2, #w.obstacles)
+    local t = 0
+    local function run_to(t_end)
+      while t < t_end - 1e-9 do
+        t = t + 0.1
+        w:update(t, { 0, 0, 0 }, nil, nil, view)
+      end
+    end
+    run_to(4.5)
+    assert.are.equal(1, #w.obstacles)   -- the one ahead: 4 s in view without a sighting
+    assert.is_near(0.8, w.obstacles[1].y, 1e-9)
+    -- the head turns to it: now in view, forgotten after 4 s more of not seeing it
+    view.pan = math.rad(90)
+    run_to(8.0)
+    assert.are.equal(1, #w.obstacles)
+    run_to(8.7)
+    assert.are.equal(0, #w.obstacles)
+    -- never looked at: forgotten after memory_out_of_view
+    view.pan = 0
+    w:observe_robots({ { x = 0.0, y = -0.8, team = -1 } }, t)
+    local seen = t
+    run_to(seen + 9.5)
+    assert.are.equal(1, #w.obstacles)
+    run_to(seen + 10.5)
+    assert.are.equal(0, #w.obstacles)
+    -- without a view (no head angle), the plain memory
+    w:observe_robots({ { x = 0.0, y = -0.8, team = -1 } }, t)
+    seen = t
+    while t < seen + 4.5 do t = t + 0.1 w:update(t, { 0, 0, 0 }, nil, nil, nil) end
+    assert.are.equal(0, #w.obstacles)
   end)
 end)

@@ -29,12 +29,21 @@ RET_PORT=$((GC_PORT + 1))
 TEAM_PORT=$((20000 + (ID % 5000) * 2))
 PIDS=()
 cleanup() {
+  [ -n "${WATCH:-}" ] && kill "$WATCH" 2>/dev/null
+  [ -n "${REF:-}" ] && kill -TERM "$REF" 2>/dev/null
   for p in "${PIDS[@]}"; do kill -TERM "$p" 2>/dev/null; done
-  sleep 1
+  # run_main stops its processes (SIGKILL after 3 s): wait for it, or a process still running could
+  # write into a block after it is removed
+  for p in "${PIDS[@]}"; do wait "$p" 2>/dev/null; done
   [ -n "${DCM:-}" ] && kill -TERM "$DCM" 2>/dev/null && wait "$DCM" 2>/dev/null
   for i in $(seq 0 $((R - 1))); do Run/shm --robot $((ID + i)) remove >/dev/null 2>&1; done
 }
 trap cleanup EXIT
+# A parent that dies without a word (Run/league.py's Ray worker, killed when the league is stopped)
+# ends the match the same way, so no process or block is left behind
+PARENT=$PPID
+( while kill -0 "$PARENT" 2>/dev/null; do sleep 1; done; kill -TERM $$ ) &
+WATCH=$!
 # every robot's three processes and the referee join before the first tick: the same start every run
 ROBOT_ID=$ID ./run_dcm --lockstep-wait $((3 * R + 1)) --robots "$R" --seed "$SEED" --quiet \
   >"$DIR/dcm.log" 2>&1 &
@@ -62,9 +71,13 @@ mkdir -p "$DIR/site_referee"
 printf 'return { referee = { half_time = %s%s } }\n' "$HALF" "${READY:+, ready_time = $READY}" \
   >"$DIR/site_referee/game.lua"
 START=$(date +%s.%N)
-ROBOT_ID=$ID HRP_SITE="$DIR/site_referee" ./run_repl Run/referee.lua "$N" "$GC_PORT" "$RET_PORT" 2>&1 \
-  | tee "$DIR/referee.log"
-STATUS=${PIPESTATUS[0]}
+# in the background with its pid kept, so that the cleanup can stop it (a signal ends `wait` at once)
+ROBOT_ID=$ID HRP_SITE="$DIR/site_referee" ./run_repl Run/referee.lua "$N" "$GC_PORT" "$RET_PORT" \
+  > >(tee "$DIR/referee.log") 2>&1 &
+REF=$!
+wait "$REF"
+STATUS=$?
+REF=
 END=$(date +%s.%N)
 # where the time went: CPU seconds of each kind of process (the robots' processes are run_main's children)
 kids=$(for p in "${PIDS[@]}"; do pgrep -P "$p"; done | tr '\n' ',')
