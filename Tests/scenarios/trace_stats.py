@@ -56,16 +56,17 @@ def summarise(folder):
         n += 1
         spent, entered, falls = collections.defaultdict(float), collections.Counter(), []
         prev_state, prev_fallen = None, 0
-        for a, b in zip(rows, rows[1:]):
-            dt = b[0] - a[0]
-            spent[a[4]] += dt
-            if a[4] != prev_state:
-                entered[a[4]] += 1
-            if a[4] == 'dribble':
-                drib_t += dt
-                drib_m += math.hypot(b[1] - a[1], b[2] - a[2])
+        for a, b in zip(rows, rows[1:] + [None]):
             if a[3] and not prev_fallen:
                 falls.append('%s@%.0f' % (prev_state, a[0]))
+            if b is not None:
+                dt = b[0] - a[0]
+                spent[a[4]] += dt
+                if a[4] != prev_state:
+                    entered[a[4]] += 1
+                if a[4] == 'dribble':
+                    drib_t += dt
+                    drib_m += math.hypot(b[1] - a[1], b[2] - a[2])
             prev_state, prev_fallen = a[4], a[3]
         for k, v in spent.items():
             total[k] += v

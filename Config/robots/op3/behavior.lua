@@ -23,7 +23,7 @@ return {
     -- (scoring, Tests/scenarios/score_test.sh, 10 seeds, lockstep, the same loaded machine, two
     -- runs each: with the speeds, dribbling and search as they were 10/10 and 10/10, medians 54.9
     -- and 57.4 s, 0 and 1 falls, walking 0.23 m/s while dribbling; these: 10/10 and 9/10, 45.6
-    -- and 46.1 s, 0 and 3 falls (2 in the miss: the ball on the goal line by a post, the pose
+    -- and 46.1 s, 1 and 3 falls (2 in the miss: the ball on the goal line by a post, the pose
     -- lost there), 0.27 m/s; Tests/scenarios/trace_stats.py for the time per state)
     dribble = {
       speed = 0.36,            -- m/s forward (was 0.3; at 0.32 one run of 10 once fell dribbling;
