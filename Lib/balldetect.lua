@@ -7,7 +7,7 @@
 --   local n = bd:candidates(labels, wl, hl, 2, 8, 0.07, cfg)   -- bd.cand[0 .. n-1]: u, v, radius, score
 --   local mlp = assert(balldetect.load_model('Config/common/ball_white.mlp'))
 --   local p = bd:classify(mlp, yuyv, 640, 480, bd.cand[0])      -- probability 0..1 (also in cand.prob)
---   local n = bd:obstacles(labels, wl, hl, cfg)          -- bd.obst[0 .. n-1]: x0, x1, top, foot, red, blue
+--   local n = bd:obstacles(labels, wl, hl, cfg)          -- bd.obst[0 .. n-1]: x0, x1, top, foot, red, blue, fx0, fx1
 -- Nothing on the per-frame path allocates.
 local ffi = require('ffi')
 local native = require('native')
@@ -17,10 +17,13 @@ typedef struct bd_view { double f, cx, cy; double R[9]; double height; } bd_view
 typedef struct bd bd;
 typedef struct bd_candidate { double u, v, radius; double inner, ring; double score; double prob; } bd_candidate;
 typedef struct bd_mlp bd_mlp;
-typedef struct bd_obstacle { int32_t x0, x1; int32_t top, foot; int32_t foot_visible; int32_t red, blue; } bd_obstacle;
+typedef struct bd_obstacle {
+  int32_t x0, x1; int32_t top, foot; int32_t foot_visible; int32_t red, blue; int32_t fx0, fx1;
+} bd_obstacle;
 int bd_obstacles(bd *w, const uint8_t *labels, int wl, int hl, const int16_t *top, uint8_t field_mask,
                  uint8_t red, uint8_t blue, int min_run, int min_below, int max_gap, int leg_gap,
                  int min_width, bd_obstacle *out, int maxn);
+int bd_column_count(const uint8_t *labels, int wl, int hl, int x, int y0, int y1, uint8_t mask);
 double bd_ball_radius_px(const bd_view *view, double u, double v, double r);
 bd *bd_new(int max_w, int max_h);
 void bd_free(bd *w);

@@ -3,7 +3,8 @@
 --   local camera = require('camera')
 --   local cam = assert(camera.open(Config.load('camera')))
 --   local frame, err, code = cam:grab(0.5)   -- frame.yuyv, frame.width, frame.height, frame.seq, frame.time,
---                                             -- frame.head[0..1]; nil, message, code on timeout/loss
+--                                             -- frame.head[0..1], frame.angle[0..1] (torso roll, pitch);
+--                                             -- nil, message, code on timeout/loss
 --   cam:stats()   --> { frames, captured, short_frames, lost, opens, open_failures, control_errors,
 --                 --     connected, last_error }
 --   cam:close()
@@ -19,7 +20,7 @@ typedef struct cam_config {
   uint32_t seed; int robot_id; int head_joint[2];
 } cam_config;
 typedef struct cam_frame {
-  const uint8_t *yuyv; int32_t width, height; uint32_t seq; double time; double head[2];
+  const uint8_t *yuyv; int32_t width, height; uint32_t seq; double time; double head[2]; double angle[2];
 } cam_frame;
 typedef struct cam_stats {
   uint32_t frames, captured, short_frames, lost, opens, open_failures, control_errors;

@@ -22,6 +22,7 @@ bench hubo_bus Tests/bench/hubo_bus.sh 5
 bench vision_lua luajit Tests/bench/vision_lua.lua 2
 bench vision_detect Tests/bench/vision_detect.sh 2
 bench white_score Tests/bench/white_score.sh
+bench walk_eye Tests/bench/walk_eye.sh
 bench sim_lockstep bash Tests/bench/sim_lockstep.sh 30
 bench camera_realism bash Tests/bench/camera_realism.sh 40
 bench walk_sim Tests/bench/walk_sim.sh

@@ -85,6 +85,8 @@ return {
   -- looks, where it stands to kick, how fast it goes) in Config/robots/<ROBOT>/behavior.lua
   head = {
     scan_distances = { 2.5, 0.45 }, -- m: the scan's far and near rows (ground distance looked at)
+    turning_row_time = 0.0,    -- s on each row while the body turns on the spot to search, the
+                               -- head looking ahead (0: the scan's sweeps)
     scan_near_first = 1.0,     -- m: a ball lost nearer than this is looked for where it was first
     scan_swing = 0.4,          -- rad, the head's swing around a ball lost near the feet
     goal_look_distance = 3.0,  -- m: a goal out of the head's reach is looked for this far on its side
@@ -159,16 +161,23 @@ return {
       start_angle = 0.3,         -- rad: attack direction this near to straight ahead to start
       max_angle = 0.8,           -- rad: attack direction this far off: align again
       start_side = 0.06,         -- m: ball this near the centre line ahead of the feet to start ...
-      start_ahead = 0.1,         -- m: ... and this near the kicking spot along x
+      start_ahead = 0.1,         -- m: ... and this near the kicking spot along x (behind it) ...
+      start_far = 0.1,           -- m: ... or this far ahead of it (further: walk into the dribble at speed)
       max_side = 0.16,           -- m: the ball this far to the side: align again
       max_ahead = 0.6,           -- m: the ball this far ahead: approach again
       min_ahead = 0.02,          -- m: the ball nearer (under the feet, behind): align again
       fresh_age = 0.3,           -- s: a ball seen longer ago (the head looking at the goal) is taken
                                  -- to roll on ahead: the three tests above wait for a new sighting
+      stale_age = 2.0,           -- s: a ball not seen for this long (a look at the goal takes 1.2 s): align again
+      hint_ahead = 0.25,         -- m: ... and the head looks for it this far ahead of the torso (where
+                                 -- the pushed ball rolls; the stale estimate falls behind the feet)
       slow_min = 0.3,            -- the least fraction of speed kept for a ball off to the side
+      slow_side = 0.0,           -- m: the ball further off the centre line than this slows the walk ...
+      slow_angle = 0.0,          -- rad: ... and so does the goal further off the heading than this
       side_gain = 1.0,           -- 1/s: side-step per m of the ball's sideways offset
       side_per_turn = 0.1,       -- m/s of side-step per rad of attack direction error
       turn_gain = 0.8,           -- 1/s
+      ball_turn_gain = 0.0,      -- 1/s: turning per rad of the ball's bearing (towards a ball off centre)
       max_va = 0.4,              -- rad/s
       -- another robot in the lane ahead of the ball (within `avoid_ahead` m, nearer its line to the
       -- goal than `avoid_lane` m: both half widths and the ball's) is passed: the aim turned to its

@@ -11,6 +11,12 @@ return {
                                 -- (a venue's trained table: set it in the site folder's vision.lua)
   scale = 2,                    -- label image = frame subsampled by 2 (320x240)
   block = 4,                    -- block image = 4x4 bit-OR of the label image (80x60)
+  -- The camera's pose tilts with the torso's roll and pitch from the IMU as they were at the frame's
+  -- capture (the frame's angle: dcm.sensor's angle at the exposure, as its head angles); false: the
+  -- torso taken as upright (the seed's way, for a body without an IMU). Walking, the OP3's torso
+  -- pitches by up to 5 deg: upright, its ball range was off by 30% on average (Tests/bench/walk_eye.sh);
+  -- with the angles 32 ms late (at the frame's delivery) by 1.8%, at the exposure by 1.0%.
+  imu_tilt = true,
   -- bit: the colour's label bit; y/u/v: {min, max}; display: RGB for label renderings
   colors = {
     { name = 'orange', bit = 1, y = { 40, 235 }, u = { 0, 92 }, v = { 168, 255 },

@@ -86,6 +86,7 @@ typedef struct bd_obstacle {
   int32_t top, foot;         /* highest row of the runs, the foot row (the 95th percentile of the columns' lowest rows) */
   int32_t foot_visible;      /* 0 when the runs go down to the image's bottom (the foot is below it) */
   int32_t red, blue;         /* labels of the team colours in the band */
+  int32_t fx0, fx1;          /* columns of the non-field labels on the foot's rows (the feet), inclusive */
 } bd_obstacle;
 
 /* Obstacles in a label image with its field boundary (bd_field_boundary). min_run: rows a run
@@ -97,6 +98,10 @@ typedef struct bd_obstacle {
 int bd_obstacles(bd *w, const uint8_t *labels, int wl, int hl, const int16_t *top, uint8_t field_mask,
                  uint8_t red, uint8_t blue, int min_run, int min_below, int max_gap, int leg_gap,
                  int min_width, bd_obstacle *out, int maxn);
+
+/* Labels in column x, rows y0..y1 (clipped to the image), with none of mask's bits; BD_EARG for a bad
+ * column. */
+int bd_column_count(const uint8_t *labels, int wl, int hl, int x, int y0, int y1, uint8_t mask);
 
 /* A small classifier: nin inputs -> nhid ReLU units -> one sigmoid output. */
 typedef struct bd_mlp bd_mlp;

@@ -14,6 +14,51 @@ static int by_width(const void *a, const void *b) {
   return (y->x1 - y->x0) - (x->x1 - x->x0);
 }
 
+/* The columns of the feet: the non-field labels on the foot's 3 lowest rows with field below them
+ * (nothing goes on down: not another robot's legs), reached from the band's columns that stand on
+ * that foot, up to max_gap columns bridged. A robot cut by the image's top edge shows one leg's
+ * columns rising to it, and its feet, wider, below. */
+static int foot_column(const uint8_t *labels, int wl, int hl, const int16_t *top, uint8_t field_mask, int foot,
+                       int x) {
+  int on = 0;
+  if (foot < top[x] + 2) return 0;
+  for (int y = foot; y >= 0 && y > foot - 3; y--) on |= !(labels[(size_t)y * wl + x] & field_mask);
+  if (!on) return 0;
+  for (int y = foot + 3; y < hl && y <= foot + 5; y++)
+    if (!(labels[(size_t)y * wl + x] & field_mask)) return 0;
+  return 1;
+}
+
+static void foot_extent(const uint8_t *labels, int wl, int hl, const int16_t *top, uint8_t field_mask, int max_gap,
+                        bd_obstacle *o, const col *cols) {
+  /* the band's first and last columns standing on its foot: the scans start there */
+  int c0 = -1, c1 = -1;
+  for (int c = o->x0; c <= o->x1; c++) {
+    if (!cols[c].ok || cols[c].foot < o->foot - 2 || cols[c].foot > o->foot + 2) continue;
+    if (c0 < 0) c0 = c;
+    c1 = c;
+  }
+  o->fx0 = o->x0;
+  o->fx1 = o->x1;
+  if (c0 < 0) return;
+  for (int x = c0 - 1, gap = 0; x >= 0 && gap <= max_gap; x--) {
+    if (!foot_column(labels, wl, hl, top, field_mask, o->foot, x)) {
+      gap++;
+    } else {
+      gap = 0;
+      if (x < o->fx0) o->fx0 = x;
+    }
+  }
+  for (int x = c1 + 1, gap = 0; x < wl && gap <= max_gap; x++) {
+    if (!foot_column(labels, wl, hl, top, field_mask, o->foot, x)) {
+      gap++;
+    } else {
+      gap = 0;
+      if (x > o->fx1) o->fx1 = x;
+    }
+  }
+}
+
 int bd_obstacles(bd *w, const uint8_t *labels, int wl, int hl, const int16_t *top, uint8_t field_mask,
                  uint8_t red, uint8_t blue, int min_run, int min_below, int max_gap, int leg_gap,
                  int min_width, bd_obstacle *out, int maxn) {
@@ -91,6 +136,7 @@ int bd_obstacles(bd *w, const uint8_t *labels, int wl, int hl, const int16_t *to
       bd_obstacle *o = &tmp[nall++];
       int16_t feet[4096];
       int k = 0;
+      feet[0] = (int16_t)x;   /* set: the band's first column is ok, but the compiler cannot see it */
       o->x0 = x;
       o->x1 = x1;
       o->top = hl;
@@ -113,10 +159,20 @@ int bd_obstacles(bd *w, const uint8_t *labels, int wl, int hl, const int16_t *to
         }
       o->foot = feet[(k - 1) * 19 / 20];
       if (o->foot >= hl - 1) o->foot_visible = 0;
+      foot_extent(labels, wl, hl, top, field_mask, max_gap, o, cols);
     }
     x = x1 + 1;
   }
   qsort(tmp, (size_t)nall, sizeof(bd_obstacle), by_width);
   for (int i = 0; i < nall && n < maxn; i++) out[n++] = tmp[i];
+  return n;
+}
+
+int bd_column_count(const uint8_t *labels, int wl, int hl, int x, int y0, int y1, uint8_t mask) {
+  if (!labels || x < 0 || x >= wl) return BD_EARG;
+  if (y0 < 0) y0 = 0;
+  if (y1 > hl - 1) y1 = hl - 1;
+  int n = 0;
+  for (int y = y0; y <= y1; y++) n += !(labels[(size_t)y * wl + x] & mask);
   return n;
 }

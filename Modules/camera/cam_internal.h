@@ -30,11 +30,11 @@ struct cam_camera {
   shm_block *image;           /* camera.image */
   int32_t *img_width, *img_height;
   uint32_t *img_frame;
-  double *img_time, *img_head;
+  double *img_time, *img_head, *img_angle;
   uint8_t *img_yuyv;
   int img_capacity;           /* bytes of img_yuyv */
   shm_block *sensor;          /* dcm.sensor: robot clock and head angles */
-  double *sensor_time, *sensor_position;
+  double *sensor_time, *sensor_position, *sensor_angle;
   int32_t *sensor_pid;
   int sensor_njoint;
 };
@@ -46,8 +46,9 @@ void cam_note(cam_camera *cam, const char *fmt, ...) __attribute__((format(print
 /* Runs fn under the stats lock: use the macro below for counter updates. */
 #define CAM_STATS(cam, stmt) do { pthread_mutex_lock(&(cam)->stats_lock); stmt; \
                                   pthread_mutex_unlock(&(cam)->stats_lock); } while (0)
-/* Robot clock and head angles now (dcm.sensor if a DCM is alive, else monotonic time). */
-void cam_clock(cam_camera *cam, double *time, double head[2]);
+/* Robot clock, head angles and torso roll and pitch now (dcm.sensor if a DCM is alive, else
+ * monotonic time and zeros). */
+void cam_clock(cam_camera *cam, double *time, double head[2], double angle[2]);
 /* Copies a delivered frame into camera.image (no-op without shm). */
 void cam_publish(cam_camera *cam, const cam_frame *frame);
 /* printf into err. */

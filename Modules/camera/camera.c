@@ -76,7 +76,8 @@ static int shm_attach(cam_camera *cam, char *err, size_t errlen) {
   cam->img_frame = cam->img_height ? shm_field_require(b, "frame", SHM_U32, 1, e, sizeof e) : NULL;
   cam->img_time = cam->img_frame ? shm_field_require(b, "time", SHM_F64, 1, e, sizeof e) : NULL;
   cam->img_head = cam->img_time ? shm_field_require(b, "head", SHM_F64, 2, e, sizeof e) : NULL;
-  cam->img_yuyv = cam->img_head ? shm_field_require(b, "yuyv", SHM_U8, 2, e, sizeof e) : NULL;
+  cam->img_angle = cam->img_head ? shm_field_require(b, "angle", SHM_F64, 2, e, sizeof e) : NULL;
+  cam->img_yuyv = cam->img_angle ? shm_field_require(b, "yuyv", SHM_U8, 2, e, sizeof e) : NULL;
   if (!cam->img_yuyv) {
     cam_err(err, errlen, "camera: %s", e);
     shm_release(cam);
@@ -90,6 +91,9 @@ static int shm_attach(cam_camera *cam, char *err, size_t errlen) {
     cam->sensor_time = shm_field_ptr(cam->sensor, "time", NULL, NULL);
     cam->sensor_position = shm_field_ptr(cam->sensor, "position", NULL, &n);
     cam->sensor_pid = shm_field_ptr(cam->sensor, "dcm_pid", NULL, NULL);
+    int na = 0;
+    cam->sensor_angle = shm_field_ptr(cam->sensor, "angle", NULL, &na);
+    if (na < 2) cam->sensor_angle = NULL;
     cam->sensor_njoint = n;
   }
   return 0;
@@ -174,8 +178,9 @@ void cam_close(cam_camera *cam) {
   free(cam);
 }
 
-void cam_clock(cam_camera *cam, double *time, double head[2]) {
+void cam_clock(cam_camera *cam, double *time, double head[2], double angle[2]) {
   head[0] = head[1] = 0;
+  angle[0] = angle[1] = 0;
   if (cam->sensor && cam->sensor_time && cam->sensor_pid && *cam->sensor_pid > 0 &&
       shm_pid_alive(*cam->sensor_pid)) {
     uint32_t seq;
@@ -186,6 +191,7 @@ void cam_clock(cam_camera *cam, double *time, double head[2]) {
       seq = shm_read_begin(cam->sensor);
       *time = *cam->sensor_time;
       if (ok) { head[0] = cam->sensor_position[i0]; head[1] = cam->sensor_position[i1]; }
+      if (cam->sensor_angle) { angle[0] = cam->sensor_angle[0]; angle[1] = cam->sensor_angle[1]; }
     } while (shm_read_retry(cam->sensor, seq));
     return;
   }
@@ -202,6 +208,8 @@ void cam_publish(cam_camera *cam, const cam_frame *f) {
   *cam->img_time = f->time;
   cam->img_head[0] = f->head[0];
   cam->img_head[1] = f->head[1];
+  cam->img_angle[0] = f->angle[0];
+  cam->img_angle[1] = f->angle[1];
   memcpy(cam->img_yuyv, f->yuyv, bytes);
   *cam->img_frame = f->seq;
   shm_write_end(cam->image);

@@ -63,6 +63,7 @@ typedef struct cam_frame {
   uint32_t seq;                /* frames delivered by this camera since open (sim: DCM's count) */
   double time;                 /* s, robot clock at capture (monotonic wall time without a DCM) */
   double head[2];              /* rad, head pan and tilt at capture */
+  double angle[2];             /* rad, torso roll and pitch at capture (dcm.sensor angle; 0 without a DCM) */
 } cam_frame;
 
 typedef struct cam_stats {

@@ -92,7 +92,7 @@ static int dummy_grab(cam_camera *cam, cam_frame *f, double timeout_s, char *err
   f->width = cam->cfg.width;
   f->height = cam->cfg.height;
   f->seq = ++d->seq;
-  cam_clock(cam, &f->time, f->head);
+  cam_clock(cam, &f->time, f->head, f->angle);
   cam_publish(cam, f);
   return 0;
 }

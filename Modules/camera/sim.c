@@ -38,6 +38,8 @@ static int sim_grab(cam_camera *cam, cam_frame *f, double timeout_s, char *err, 
         f->time = *cam->img_time;
         f->head[0] = cam->img_head[0];
         f->head[1] = cam->img_head[1];
+        f->angle[0] = cam->img_angle[0];
+        f->angle[1] = cam->img_angle[1];
         long bytes = (long)w * hh * 2;
         int valid = w > 0 && hh > 0 && !(w & 1) && bytes <= cam->img_capacity;
         if (valid) memcpy(s->buf, cam->img_yuyv, (size_t)bytes);

@@ -44,7 +44,7 @@ typedef struct v4l2cam {
   char reason[300];
   uint8_t *ready;               /* width*height*2 */
   uint32_t ready_seq;
-  double ready_time, ready_head[2];
+  double ready_time, ready_head[2], ready_angle[2];
 
   /* consumer only */
   uint8_t *out;
@@ -269,8 +269,8 @@ static void deliver(v4l2cam *v, struct v4l2_buffer *buf) {
     cam_note(cam, "camera %s: short frame dropped (%u of %zu bytes%s)", cam->device, buf->bytesused,
              v->sizeimage, (buf->flags & V4L2_BUF_FLAG_ERROR) ? ", error flag" : "");
   } else {
-    double t, head[2];
-    cam_clock(cam, &t, head);
+    double t, head[2], angle[2];
+    cam_clock(cam, &t, head, angle);
     const uint8_t *src = v->bufs[buf->index].start;
     pthread_mutex_lock(&v->lock);
     if (v->bytesperline == (size_t)w * 2) {
@@ -283,6 +283,8 @@ static void deliver(v4l2cam *v, struct v4l2_buffer *buf) {
     v->ready_time = t;
     v->ready_head[0] = head[0];
     v->ready_head[1] = head[1];
+    v->ready_angle[0] = angle[0];
+    v->ready_angle[1] = angle[1];
     pthread_cond_broadcast(&v->cond);
     pthread_mutex_unlock(&v->lock);
     CAM_STATS(cam, cam->stats.captured++);
@@ -408,6 +410,8 @@ static int v4l2_grab(cam_camera *cam, cam_frame *f, double timeout_s, char *err,
   f->time = v->ready_time;
   f->head[0] = v->ready_head[0];
   f->head[1] = v->ready_head[1];
+  f->angle[0] = v->ready_angle[0];
+  f->angle[1] = v->ready_angle[1];
   pthread_mutex_unlock(&v->lock);
   f->yuyv = v->out;
   f->width = cam->cfg.width;

@@ -309,7 +309,10 @@ void sim_read(void *hw, dcm *d) {
       const std::vector<double> q = w.joint_positions(r);
       const SimRobot &x = s.rob[r];
       const double head[2] = {x.head[0] >= 0 ? q[x.head[0]] : 0, x.head[1] >= 0 ? q[x.head[1]] : 0};
-      s.rob[r].frames.expose(w, r, tick, tick * d->period, head, s.params[r], &x.hide, &scene, &have_scene);
+      const sim::Truth t = w.truth(r);   // the torso's roll and pitch, as dcm.sensor's angle has them
+      const double angle[2] = {t.roll, t.pitch};
+      s.rob[r].frames.expose(w, r, tick, tick * d->period, head, angle, s.params[r], &x.hide, &scene,
+                             &have_scene);
     }
     s.prof.lap(Profile::kExpose);
     for (SimRobot &x : s.rob) x.frames.deliver(*s.worker, tick);

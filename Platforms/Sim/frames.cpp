@@ -42,7 +42,8 @@ bool FrameQueue::pose_at(double t, Vec3 *pos, Mat3 *rot) const {
   return true;
 }
 
-void FrameQueue::expose(const World &w, int r, uint32_t tick, double time, const double head[2], const Params &p,
+void FrameQueue::expose(const World &w, int r, uint32_t tick, double time, const double head[2],
+                        const double angle[2], const Params &p,
                         const std::vector<int> *hide, Scene *scene, bool *have_scene) {
   const bool blur = p.realism.on && p.realism.exposure > 0;
   if (blur) {
@@ -66,6 +67,8 @@ void FrameQueue::expose(const World &w, int r, uint32_t tick, double time, const
   f.time = time;
   f.head[0] = head[0];
   f.head[1] = head[1];
+  f.angle[0] = angle[0];
+  f.angle[1] = angle[1];
   if (!spare_.empty()) {
     // a buffer that is already mapped: no page faults and zeroing on the physics thread
     f.img = std::move(spare_.back());
@@ -98,12 +101,15 @@ void FrameQueue::hand_over(CameraWorker &wk, uint32_t tick, bool copy_early) {
     if (!f.render) f.render = wk.submit(std::move(f.job));
     if (!f.copy && f.deliver_tick <= tick + (copy_early ? 1 : 0)) {
       // camera.image is written by this worker job only (the physics thread never touches it)
-      f.copy = wk.post([this, src = f.img.data(), n = f.number, t = f.time, h0 = f.head[0], h1 = f.head[1]] {
+      f.copy = wk.post([this, src = f.img.data(), n = f.number, t = f.time, h0 = f.head[0], h1 = f.head[1],
+                         a0 = f.angle[0], a1 = f.angle[1]] {
         shm_write_begin(cam_.blk);
         memcpy(cam_.yuyv, src, bytes_);
         *cam_.time = t;
         cam_.head[0] = h0;
         cam_.head[1] = h1;
+        cam_.angle[0] = a0;
+        cam_.angle[1] = a1;
         *cam_.frame = n;
         shm_write_end(cam_.blk);
       });

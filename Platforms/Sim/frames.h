@@ -23,8 +23,10 @@ class FrameQueue {
   void close();
   // Camera of robot r after the step to `tick`: if a frame is due, its snapshot (`scene` is taken
   // once per tick for all robots) and its place in the queue. time: robot clock at exposure;
-  // head: head pan / tilt at exposure; p: the robot's camera; hide: its links the camera does not see.
-  void expose(const World &w, int r, uint32_t tick, double time, const double head[2], const Params &p,
+  // head: head pan / tilt at exposure; angle: the torso's roll / pitch then (the IMU's, as dcm.sensor's
+  // angle); p: the robot's camera; hide: its links the camera does not see.
+  void expose(const World &w, int r, uint32_t tick, double time, const double head[2], const double angle[2],
+              const Params &p,
               const std::vector<int> *hide, Scene *scene, bool *have_scene);
   // Once tick `tick` is published: hands the new frames to the worker, and (copy_early) the copies
   // into camera.image of the frames due at the next tick, made while the physics steps. In lockstep
@@ -42,6 +44,7 @@ class FrameQueue {
     uint32_t deliver_tick;
     double time;                  // exposure
     double head[2];
+    double angle[2];
     CameraWorker::Job job;
     std::vector<uint8_t> img;
     uint64_t render = 0, copy = 0;   // the worker's tickets (0: not queued yet)

@@ -38,7 +38,9 @@ function M.update(ctx)
   ctx.kick_side = side > 0 and 'left' or 'right'
   if dribble then
     local d = cfg.dribble
-    if math.abs(ey) < d.start_side and math.abs(ea) < d.start_angle and ex > -d.start_ahead and ex < d.start_ahead then
+    -- (the ball just seen; lined up further out: dribble on at speed instead of creeping up to it)
+    if ctx.world:ball_age() < d.fresh_age and math.abs(ey) < d.start_side and math.abs(ea) < d.start_angle
+      and ex > -d.start_ahead and ex < d.start_far then
       return 'dribble'
     end
   end

@@ -29,6 +29,8 @@ function M.detour(ctx, bx, by, ux, uy)
   return side * math.min(math.max(need, 0), d.avoid_angle)
 end
 
+function M.exit(ctx) ctx.ball_hint = nil end
+
 function M.update(ctx)
   local cfg = ctx.cfg.body
   local d = cfg.dribble
@@ -40,16 +42,29 @@ function M.update(ctx)
   local ea = nav.wrap(math.atan2(uy, ux) + M.detour(ctx, bx, by, ux, uy))
   -- while the head looks at the goal the ball's estimate stays where it was last seen and the
   -- robot walks up to it (the ball it pushes rolls on): only a fresh sighting says it got away
-  local fresh = ctx.world:ball_age() < d.fresh_age
+  local age = ctx.world:ball_age()
+  local fresh = age < d.fresh_age
   if not fresh then by = 0 end
+  -- ... and the head, back from the goal, looks for it there (HeadFSM/track.lua), not where the
+  -- stale estimate has fallen behind to as the robot walked on
+  ctx.ball_hint = (not fresh) and { d.hint_ahead, 0 } or nil
+  -- not seen there either for a while: it got away, and walking on blind would pass it
+  if age > d.stale_age then return 'realign' end
   -- the ball got away (ahead, behind or to the side) or the goal is no longer ahead: align again
   if (fresh and (bx > d.max_ahead or bx < d.min_ahead or math.abs(by) > d.max_side)) or math.abs(ea) > d.max_angle then
     return 'realign'
   end
-  local slow = math.max(0, 1 - math.abs(ea) / d.max_angle) * math.max(d.slow_min, 1 - math.abs(by) / d.max_side)
+  -- slower for a ball off to the side or the goal off to the side, beyond the dead bands (the
+  -- estimate's jitter and the push's sway alone would keep the walk slow)
+  local off_a = math.max(0, math.abs(ea) - d.slow_angle) / (d.max_angle - d.slow_angle)
+  local off_y = math.max(0, math.abs(by) - d.slow_side) / (d.max_side - d.slow_side)
+  local slow = math.max(0, 1 - off_a) * math.max(d.slow_min, 1 - off_y)
   local vx = d.speed * slow
   local vy = nav.clamp(d.side_gain * by - d.side_per_turn * ea, -cfg.max_vy, cfg.max_vy)
-  local va = nav.clamp(d.turn_gain * ea, -d.max_va, d.max_va)
+  -- turning a little towards a ball off to the side walks it back in front of the feet (side-stepping
+  -- alone is slow)
+  local va = nav.clamp(d.turn_gain * ea + d.ball_turn_gain * math.atan2(by, math.max(bx, 0.1)),
+    -d.max_va, d.max_va)
   ctx.act.walk(vx, vy, va)
 end
 

@@ -13,6 +13,8 @@ function M.entry(ctx)
   back_until = near and t0 + cfg.search_back_time or t0
 end
 
+function M.exit(ctx) ctx.body_turning = nil end
+
 function M.update(ctx)
   local cfg = ctx.cfg.body
   if ctx.world:ball_age() < 0.3 then return 'ball' end
@@ -20,6 +22,7 @@ function M.update(ctx)
     ctx.act.walk(-cfg.search_back_speed, 0, 0)
   else
     ctx.act.walk(0, 0, dir * cfg.search_turn_speed)
+    ctx.body_turning = true
   end
   if ctx.t - back_until > cfg.search_turn_time then return 'timeout' end
 end

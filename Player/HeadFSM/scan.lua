@@ -33,6 +33,13 @@ function M.update(ctx)
     local rows = cfg.scan_distances
     local dist = rows[(sweep % #rows) + 1]
     local bearing = u * cfg.scan_pan
+    if ctx.body_turning and cfg.turning_row_time > 0 then
+      -- the body turning on the spot to search sweeps the view round itself: the head looks ahead
+      -- and switches rows often (sweeping, a ball the body turned past while the other row was on
+      -- went by unseen)
+      dist = rows[math.floor((ctx.t - t_rows) / cfg.turning_row_time) % #rows + 1]
+      bearing = 0
+    end
     pan, tilt = point.ground(dist * math.cos(bearing), dist * math.sin(bearing), cfg)
   end
   ctx.act.head(pan, tilt)

@@ -13,8 +13,11 @@ function M.update(ctx)
   local w = ctx.world
   -- (back from a look at the goal, the head needs a moment to find the ball again)
   if w:ball_age() > 1.5 and ctx.t - t0 > 0.8 and not ctx.look_around then return 'lost' end
-  local b = w.ball
-  local pan, tilt = point.ground(b.x, b.y, cfg)
+  -- a body state that knows better where an unseen ball is (dribbling: ahead of the feet) says so
+  local hint = ctx.ball_hint
+  local bx, by = w.ball.x, w.ball.y
+  if hint then bx, by = hint[1], hint[2] end
+  local pan, tilt = point.ground(bx, by, cfg)
   ctx.act.head(pan, tilt)
   local every = cfg.look_goal_every
   if ctx.look_around or not w:localised() then

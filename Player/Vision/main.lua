@@ -42,7 +42,7 @@ local function log(fmt, ...)
   if not opts.quiet then io.stdout:write('[vision] ', string.format(fmt, ...), '\n'); io.stdout:flush() end
 end
 
-local vcfg = Config.load('vision', { scale = 'number', block = 'number', colors = 'table',
+local vcfg = Config.load('vision', { scale = 'number', block = 'number', colors = 'table', imu_tilt = 'boolean',
   ball = { color = 'number', diameter = 'number', min_area = 'number', min_fill = 'number',
            max_aspect = 'number', green_below = 'number', max_range = 'number' },
   goal = { color = 'number', diameter = 'number', min_rise = 'number' } })
@@ -111,7 +111,6 @@ local function read_body()
   repeat
     seq = shm.C.shm_read_begin(sensor._handle)
     for i = 1, njoint do q[i] = sensor.position[i - 1] end
-    rpy[1], rpy[2] = sensor.angle[0], sensor.angle[1]
   until shm.C.shm_read_retry(sensor._handle, seq) == 0
 end
 
@@ -146,8 +145,11 @@ local function publish(frame, det)
   b:end_write()
 end
 
+-- the joint angles now (the legs: the camera's height, which changes little within a frame's
+-- latency); the head's and the torso's tilt as at the capture, which the frame carries
 local function process(frame)
   read_body()
+  if vcfg.imu_tilt then rpy[1], rpy[2] = frame.angle[0], frame.angle[1] else rpy[1], rpy[2] = 0, 0 end
   local det, perr = vp:process(frame, q, rpy)
   if not det then
     counts.bad_frames = counts.bad_frames + 1

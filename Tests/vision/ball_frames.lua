@@ -2,9 +2,10 @@
 -- ball_frames_test.sh with seeds no training run uses), through the vision pipeline with the camera
 -- pose the renderer used. Prints the figures of issue 18 and TAP lines for the goals named in GATE.
 --   luajit Tests/vision/ball_frames.lua FRAMES KIND [GATE]     KIND: white | orange
--- GATE: comma-separated goals to fail on (recall, false, range, bearing); the others only print.
+-- GATE: comma-separated goals to fail on (recall, false, range, bearing, robots); the others only print.
 -- DRAW=DIR writes a PNG per frame listed in DRAW_FRAMES (or each miss and false detection) with the
--- field boundary, the candidates and the detection drawn.
+-- field boundary, the candidates and the detection drawn; with ROBOT_MISSES=1 also each frame where a
+-- robot in view up to 3 m was missed or a robot detected with its feet in view near none (each printed).
 local Config = require('Config')
 local pipeline = require('Vision.pipeline')
 local frames = require('Run.ball_train.frames')
@@ -22,6 +23,7 @@ local draw_dir = os.getenv('DRAW')
 
 local st = { inview = 0, found = 0, wrong = 0, empty = 0, false_pos = 0, ranges = {}, bearings = {} }
 local misses = {}
+local robot_misses = os.getenv('ROBOT_MISSES') == '1'
 local rs = { seen = 0, found = 0, errs = {}, dets = 0, false_pos = 0, team_ok = 0, team_named = 0,
              seen_all = 0, found_all = 0, errs_all = {}, cut = 0, cut_false = 0, behind = 0 }
 local function bearing_gap(a, b)
@@ -48,7 +50,7 @@ for fr in file:each() do
   local det = vp:detect(fr, fr.pose)
   local b, ball = fr.ball, det.ball
   local inview = b.visible >= 0.95 and b.distance >= 0.3 and b.distance <= 4
-  local note
+  local note, rmiss
   if inview then
     st.inview = st.inview + 1
     local tx, ty = b.distance * math.cos(b.bearing), b.distance * math.sin(b.bearing)
@@ -98,6 +100,11 @@ for fr in file:each() do
         rs.found_all = rs.found_all + 1
         rs.errs_all[#rs.errs_all + 1] = best
       end
+      if not best and near3 and robot_misses then
+        print(string.format('robot missed: frame %d, %.2f m %+.1f deg, u %.0f v %.0f, hidden %.2f', fr.index, range,
+                            math.deg(math.atan2(r.y, r.x)), r.u, r.v, hidden(r, fr.robots)))
+        rmiss = true
+      end
       if best and near3 then
         rs.found = rs.found + 1
         rs.errs[#rs.errs + 1] = best
@@ -117,7 +124,14 @@ for fr in file:each() do
       for _, r in ipairs(fr.robots) do
         if math.sqrt((d.x - r.x) ^ 2 + (d.y - r.y) ^ 2) <= 0.7 then near = true end
       end
-      if not near then rs.false_pos = rs.false_pos + 1 end
+      if not near then
+        rs.false_pos = rs.false_pos + 1
+        if robot_misses then
+          print(string.format('robot false: frame %d, %.2f m %+.1f deg, box u %d-%d v %d-%d', fr.index, d.range,
+                              math.deg(math.atan2(d.y, d.x)), d.u0, d.u1, d.v0, d.v1))
+          rmiss = true
+        end
+      end
     else
       rs.cut = rs.cut + 1
       -- the box's half width as an angle, and 0.1 rad
@@ -131,7 +145,7 @@ for fr in file:each() do
   end
   if note then misses[#misses + 1] = string.format('frame %d: ball %.2f m %+.1f deg visible %.2f: %s', fr.index,
                                                    b.distance, math.deg(b.bearing), b.visible, note) end
-  if draw_dir and (note or (os.getenv('DRAW_FRAMES') or ''):find(',' .. fr.index .. ',', 1, true)) then
+  if draw_dir and (note or rmiss or (os.getenv('DRAW_FRAMES') or ''):find(',' .. fr.index .. ',', 1, true)) then
     draw.frame(string.format('%s/%s_%04d.png', draw_dir, kind, fr.index), fr, vp, det, b)
   end
 end

@@ -1,7 +1,8 @@
 -- Draws a frame with what the vision found into a PNG (RGB; zlib through the FFI), for looking at:
 -- the field boundary (yellow), the ball candidates (blue, with the classifier's probability as the
 -- circle's brightness), the ball detected (red circle), the truth (green cross), robots seen (boxes in
--- their team's colour: red, blue, magenta when unknown).
+-- their team's colour: red, blue, magenta when unknown), the robots' truth (a green tick up from their middle
+-- on the ground).
 --   require('Tests.vision.draw').frame('out.png', frame, vp, det, truth_ball)
 local ffi = require('ffi')
 
@@ -92,6 +93,12 @@ function M.frame(path, fr, vp, det, truth)
   if det.ball.detected then
     circle(det.ball.u, det.ball.v, det.ball.radius, 255, 0, 0)
     circle(det.ball.u, det.ball.v, det.ball.radius + 1, 255, 0, 0)
+  end
+  -- the robots' truth: a green tick up from the middle of their feet
+  for _, r in ipairs(fr.robots or {}) do
+    if r.visible > 0 then
+      for d = 0, 20 do px(r.u, r.v - d, 0, 255, 0); px(r.u + 1, r.v - d, 0, 255, 0) end
+    end
   end
   for i = 1, (det.robots and det.robots.n or 0) do
     local r = det.robots[i]

@@ -28,8 +28,11 @@ local function pose_for(pan, tilt)
   return (model:camera_pose(q, { 0, 0 }))
 end
 
--- a frame with a robot of `team` at (rx, ry) on the ground (nil: none) and a ball at (bx, by) or none
-local function render(pose, rx, ry, team, bx, by)
+-- a frame with a robot of `team` at (rx, ry) on the ground (nil: none), a ball at (bx, by) or none, and
+-- more robots ({ x, y, team } each)
+local function render(pose, rx, ry, team, bx, by, more)
+  local robots = { rx and { rx, ry, team } or nil }
+  for _, r in ipairs(more or {}) do robots[#robots + 1] = r end
   local buf = ffi.new('uint8_t[?]', W * H * 2)
   local cx, cy, cz = pose[1], pose[2], pose[3]
   local ground = cz - pose.height
@@ -39,15 +42,16 @@ local function render(pose, rx, ry, team, bx, by)
       local Y, U, V = 150, 128, 128          -- grey wall
       local t_hit = math.huge
       if dz < 0 then Y, U, V = 99, 95, 86 t_hit = (ground - cz) / dz end -- green ground
-      if rx then -- the cylinder's side: |(c + t d - r)_xy| = RADIUS
-        local ox, oy = cx - rx, cy - ry
+      for _, r in ipairs(robots) do -- the cylinder's side: |(c + t d - r)_xy| = RADIUS; the nearest hit
+        local ox, oy = cx - r[1], cy - r[2]
         local a, b, c = dx * dx + dy * dy, 2 * (ox * dx + oy * dy), ox * ox + oy * oy - RADIUS * RADIUS
         local disc = b * b - 4 * a * c
         if disc >= 0 then
           local t = (-b - math.sqrt(disc)) / (2 * a)
           local z = cz + t * dz - ground
           if t > 0 and t < t_hit and z >= 0 and z <= HEIGHT then
-            if z > 0.25 and z < 0.38 then Y, U, V = JERSEY[team][1], JERSEY[team][2], JERSEY[team][3]
+            t_hit = t
+            if z > 0.25 and z < 0.38 then Y, U, V = JERSEY[r[3]][1], JERSEY[r[3]][2], JERSEY[r[3]][3]
             else Y, U, V = 120, 128, 128 end
           end
         end
@@ -89,6 +93,19 @@ describe('robot detection', function()
         rx, ry))
       assert.are.equal(team, r.team, 'case ' .. k)
     end
+  end)
+
+  it('sees a robot of the other team beside a nearer one apart, however narrow the part it shows', function()
+    -- the far one shows 0.08 m at the near one's range: an arm's width, merged before the colours counted
+    local pose = pose_for(0, -0.3)
+    local robots = detect(render(pose, 1.0, 0.0, 1, nil, nil, { { 2.6, -0.43, 0 } }), 0, -0.3)
+    assert.are.equal(2, robots.n)
+    local near, far = robots[1], robots[2]
+    assert.is_true(math.sqrt((near.x - 1.0) ^ 2 + near.y ^ 2) < RADIUS + 0.1,
+      string.format('near one at (%.2f, %.2f)', near.x, near.y))
+    assert.is_true(math.sqrt((far.x - 2.6) ^ 2 + (far.y + 0.43) ^ 2) < RADIUS + 0.15,
+      string.format('far one at (%.2f, %.2f)', far.x, far.y))
+    assert.are.same({ 1, 0 }, { near.team, far.team })
   end)
 
   it('takes nothing inside its own footprint for a robot (its own feet and arms), what stands beyond it yes', function()

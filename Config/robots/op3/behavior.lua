@@ -5,19 +5,34 @@ return {
   head = {
     scan_pan = 1.4,            -- rad, half-range of the scan (the head pan's reach; the camera's 43 deg
                                -- view covers 0.2-1.0 m and 0.7 m-horizon on the scan's two rows)
+    turning_row_time = 0.5,    -- s (the view, ~1 rad wide, turning ~0.8 rad/s with the body: each
+                               -- direction seen on both rows)
     ground_z = -0.23,          -- m: the ground below the torso origin (torso frame), for look-at
     camera_z = 0.2,            -- m, the camera above the torso origin (look-at without a kinematic model)
   },
 
   body = {
-    approach_speed = 0.32,     -- m/s (was 0.25: the walk holds 0.38 m/s for 30 s)
-    max_vx = 0.34,             -- m/s
+    -- speeds: under the walk's limits (walk.lua velLimit: 0.40, 0.15 m/s) and what it holds 30 s
+    -- (0.38 m/s forward, 0.22 m/s sideways); the feet slip: 0.38 commanded walks ~0.30 m/s
+    approach_speed = 0.38,     -- m/s (was 0.32)
+    max_vx = 0.38,             -- m/s (was 0.34)
     search_turn_speed = 0.8,   -- rad/s (the walk turns ~0.4 rad/s of it now: Player/Motion/walk.lua)
     kick_x = 0.17,             -- m: ball this far ahead of the torso when kicking
     kick_y = 0.06,             -- m: ball this far to the side (towards the kicking foot)
     -- walking the ball to the goal instead of kicking (the standing kick stops the walk)
+    -- (scoring, Tests/scenarios/score_test.sh, 10 seeds, lockstep, the same loaded machine, two
+    -- runs each: with the speeds, dribbling and search as they were 10/10 and 10/10, medians 54.9
+    -- and 57.4 s, 0 and 1 falls, walking 0.23 m/s while dribbling; these: 10/10 and 9/10, 45.6
+    -- and 46.1 s, 1 and 3 falls (2 in the miss: the ball on the goal line by a post, the pose
+    -- lost there), 0.27 m/s; Tests/scenarios/trace_stats.py for the time per state)
     dribble = {
-      speed = 0.3,             -- m/s forward (at 0.32 one run of 10 fell while dribbling)
+      speed = 0.36,            -- m/s forward (was 0.3; at 0.32 one run of 10 once fell dribbling;
+                               -- at 0.36, in 13 runs of 10: 2 falls while dribbling)
+      start_far = 0.3,         -- m: lined up, walk into the ball from this far past the spot
+      max_side = 0.2,          -- m (was 0.16: the ball's sway alone made the robot align again)
+      ball_turn_gain = 0.5,    -- 1/s
+      slow_side = 0.05,        -- m and rad of dead band before slowing (the estimate's jitter and
+      slow_angle = 0.15,       -- the push's sway kept the walk at ~0.75 of its speed)
     },
     max_va = 0.8,              -- rad/s
     -- shooting with a kick out of the walk (walk.lua's walkKick.forward: the ball ~0.19 m ahead of

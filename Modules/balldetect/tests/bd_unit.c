@@ -75,6 +75,25 @@ int main(void) {
   check(n >= 1 && ob[0].x0 == 100 && ob[0].x1 == 120 && ob[0].foot == 100 && ob[0].foot_visible,
         "its columns and its foot");
   check(n >= 1 && ob[0].red == 21 * 10 && ob[0].blue == 0, "its team colour counted");
+  check(n >= 1 && ob[0].fx0 == 100 && ob[0].fx1 == 120, "its feet as wide as its columns");
+
+  /* a robot cut by the image's top edge, the field beyond it: one leg (columns 150..153) rises to
+   * the edge, its foot (columns 140..165, rows 52..60) wider; another robot's legs (columns 167..172)
+   * go on below the foot's rows: not the foot */
+  for (int y = 0; y < H; y++)
+    for (int x = 0; x < W; x++) {
+      uint8_t l = GREEN;
+      if (x >= 150 && x <= 153 && y <= 60) l = 0;
+      if (x >= 140 && x <= 165 && y >= 52 && y <= 60) l = 0;
+      if (x >= 167 && x <= 172 && y >= 40 && y <= 90) l = 0;
+      L[y * W + x] = l;
+    }
+  bd_field_boundary(w, L, W, H, GREEN, 4, top);
+  n = bd_obstacles(w, L, W, H, top, GREEN | WHITE, RED, 4, 6, 2, 3, 0, 3, ob, 8);
+  check(n == 1 && ob[0].x0 == 150 && ob[0].x1 == 153 && ob[0].foot == 60, "the leg rising to the top edge");
+  check(n == 1 && ob[0].fx0 == 140 && ob[0].fx1 == 165, "its foot's columns, not the other robot's legs");
+  check(bd_column_count(L, W, H, 150, -5, 70, GREEN | WHITE) == 61 &&
+        bd_column_count(L, W, H, W, 0, 10, GREEN) == BD_EARG, "non-field labels counted in a column");
 
   char err[256];
   check(bd_mlp_load("/nonexistent/model.txt", err, sizeof err) == NULL && strstr(err, "/nonexistent/model.txt"),
