@@ -23,7 +23,7 @@ return {
   -- a 1.2 N s push; leak 1.0 fell at small pushes); retarget: the fraction of the swing's way up to
   -- which the landing still moves (0.95, 0.99 measured no better). With the accelerometer and
   -- feedback.capture/captureHip below, the largest sideways push survived at 8 moments of the gait
-  -- cycle: median 1.4 -> 2.1 N s (Tests/motion/push_sweep.sh; README). Measured worse with it:
+  -- cycle: median 1.5 -> 1.7 N s, 2.1 with captureHip (Tests/motion/push_sweep.sh; README). Worse:
   -- switchError 0.03 (the loaded foot cannot lift), touchdownError 0.04-0.06, level 0.5, max 0.12
   stepAdjust = { gain = 1.0, deadband = { 0.03, 0.02 }, max = { 0.05, 0.08 }, switchError = 1,
     touchdownError = 1, touchdownTime = 0.05, level = { 0, 0 }, levelTime = 0.15, velocityLeak = 0.6,
