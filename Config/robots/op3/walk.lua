@@ -25,10 +25,10 @@ return {
   -- feedback.capture/captureHip below, the largest sideways push survived at 8 moments of the gait
   -- cycle: median 1.5 -> 1.7 N s, 2.1 with captureHip (Tests/motion/push_sweep.sh; README). Worse:
   -- switchError 0.03 (the loaded foot cannot lift), touchdownError 0.04-0.06, level 0.5, max 0.12.
-  -- Off for now (velocityLeak 0, feedback.capture 0): in the scoring scenario they added falls
-  -- (seeds 1-10: 8/10 goals, 6 falls; seeds 4, 5, 9 without them: 3/3, no fall; with the leak
-  -- alone: 2/3, 2 falls), while turning and stepping about the ball. velocityLeak = 0.6 and
-  -- capture = { 2, 0 } are the measured push settings
+  -- Off for now (velocityLeak 0, feedback.capture 0): in the scoring scenario they gave 8/10 goals
+  -- and 6 falls (seeds 4, 5, 9 without them: 3/3, no fall; with the leak alone: 2/3, 2 falls; the
+  -- scenario is chaotic, but never better with them). velocityLeak = 0.6 and capture = { 2, 0 }
+  -- are the measured push settings
   stepAdjust = { gain = 1.0, deadband = { 0.03, 0.02 }, max = { 0.05, 0.08 }, switchError = 1,
     touchdownError = 1, touchdownTime = 0.05, level = { 0, 0 }, levelTime = 0.15, velocityLeak = 0,
     retarget = 0.85 },
