@@ -1,7 +1,7 @@
 -- Kick scenario helpers shared by Tests/motion/sim_scenarios.lua (the pass/fail kick) and the kick
 -- tools (kick_trace, kick_measure, kick_sweep, kick_tune): ball placement from the foot's forward
 -- kinematics, the kicking foot's toe point in the world from the sim's truth, and waiting for the
--- motion process (which every scenario needs first).
+-- motion process (which every scenario needs first), and a push of the walking robot.
 local Body = require('Body')
 local kin = require('kinematics')
 local shm = require('shm')
@@ -205,6 +205,20 @@ function M.setup(Sim, Motion, wait, side, gap, lateral)
   M.place_ball(Sim, side, gap, Sim.truth(), lateral)
   wait(0.5)
   return Sim.truth()
+end
+
+-- Pushes the walking robot at its torso for 0.1 s with f N, 'forward' or sideways (to its left),
+-- and watches 3 s of robot time: true when it fell (the sim's truth, or the motion process's count).
+-- The push scenarios share it (sim_scenarios.lua's push search, push_sweep.lua).
+function M.push_falls(Sim, Motion, wait_until, dir, f)
+  local a = Sim.truth()
+  local falls0 = Motion.falls()
+  if dir == 'forward' then
+    Sim.push(f * math.cos(a.yaw), f * math.sin(a.yaw), 0.1)
+  else
+    Sim.push(-f * math.sin(a.yaw), f * math.cos(a.yaw), 0.1)
+  end
+  return wait_until(function() return Sim.truth().fallen or Motion.falls() > falls0 end, 3)
 end
 
 return M

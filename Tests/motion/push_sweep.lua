@@ -67,15 +67,7 @@ local function survives(f, k)
   Motion.request('walk')
   Walk.set_velocity(0.2, 0, 0)
   wait(3 + k * 2 * T / phases)
-  local a = Sim.truth()
-  local falls0 = Motion.falls()
-  if dir == 'forward' then
-    Sim.push(f * math.cos(a.yaw), f * math.sin(a.yaw), 0.1)
-  else
-    Sim.push(-f * math.sin(a.yaw), f * math.cos(a.yaw), 0.1)
-  end
-  local fell = wait_until(function() return Sim.truth().fallen or Motion.falls() > falls0 end, 3)
-  return not fell
+  return not ks.push_falls(Sim, Motion, wait_until, dir, f)
 end
 
 for _, c in ipairs(configs) do

@@ -396,15 +396,7 @@ function scenarios.pushmax(label, dir)
       Motion.request('walk')
       Walk.set_velocity(v, 0, 0)
       wait(3 + k * Walk.get('tStep') / 2)
-      local a = Sim.truth()
-      local falls0 = Motion.falls()
-      if dir == 'forward' then
-        Sim.push(f * math.cos(a.yaw), f * math.sin(a.yaw), 0.1)
-      else
-        Sim.push(-f * math.sin(a.yaw), f * math.cos(a.yaw), 0.1)
-      end
-      local fell = wait_until(function() return Sim.truth().fallen or Motion.falls() > falls0 end, 3)
-      if fell then return false end
+      if ks.push_falls(Sim, Motion, wait_until, dir, f) then return false end
     end
     return true
   end
