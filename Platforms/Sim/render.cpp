@@ -582,9 +582,12 @@ void Renderer::develop_settings(const Shot &sh, Develop *d) const {
   const int n = std::min(Develop::kMaxTaps, (int)std::ceil(len));
   d->taps = n;
   for (int k = 0; k < n; k++) {
-    const double s = (k + 0.5) / n;   // the frame at time s of the exposure, seen back from its end
-    d->dx[k] = (int)std::lround(s * fu);
-    d->dy[k] = (int)std::lround(s * fv);
+    // the frame at time s of the exposure, seen back from its end: what lies at p at the end was at
+    // p + s * flow then, so the frame's pixel p takes the end image's p - s * flow (the smear runs
+    // from where things were at the start to where they are at the end)
+    const double s = (k + 0.5) / n;
+    d->dx[k] = -(int)std::lround(s * fu);
+    d->dy[k] = -(int)std::lround(s * fv);
   }
 }
 

@@ -1,6 +1,7 @@
 -- Draws a frame with what the vision found into a PNG (RGB; zlib through the FFI), for looking at:
 -- the field boundary (yellow), the ball candidates (blue, with the classifier's probability as the
--- circle's brightness), the ball detected (red circle), the truth (green cross), robots seen (boxes in
+-- circle's brightness), the ball detected (red circle), the truth (green cross; with u0, v0 a green
+-- line from where it was at the exposure's start), robots seen (boxes in
 -- their team's colour: red, blue, magenta when unknown), the robots' truth (a green tick up from their middle
 -- on the ground).
 --   require('Tests.vision.draw').frame('out.png', frame, vp, det, truth_ball)
@@ -89,6 +90,11 @@ function M.frame(path, fr, vp, det, truth)
   end
   if truth and truth.radius > 0 then
     for d = -6, 6 do px(truth.u + d, truth.v, 0, 255, 0); px(truth.u, truth.v + d, 0, 255, 0) end
+    -- where the ball was seen at the exposure's start (a moving camera): a green line to the cross
+    if truth.u0 then
+      local n = math.ceil(math.max(math.abs(truth.u0 - truth.u), math.abs(truth.v0 - truth.v))) + 1
+      for k = 0, n do px(truth.u0 + (truth.u - truth.u0) * k / n, truth.v0 + (truth.v - truth.v0) * k / n, 0, 255, 0) end
+    end
   end
   if det.ball.detected then
     circle(det.ball.u, det.ball.v, det.ball.radius, 255, 0, 0)

@@ -23,8 +23,8 @@
 -- and TAP lines; WALK_EYE_GATE names the goals to fail on (recall,false,range,bearing; default all).
 -- WALK_EYE_SAVE=file: the figures into a file instead of TAP lines (walk_merge.lua: several runs).
 -- WALK_EYE_DRAW=dir: PNGs of the frames (the vision's detection: red circle; the truth's centre:
--- green cross) of misses, false detections, range errors over 8%, frames left out near the own limbs with no detection
--- (up to 30 of each) and every 50th frame scored.
+-- green cross) of misses, false detections, range errors over 8%, bearing errors over 2 deg, frames
+-- left out near the own limbs with no detection (up to 30 of each) and every 50th frame scored.
 -- luacheck: globals Sim Motion Walk Body wait arg
 local shm = require('shm')
 local Config = require('Config')
@@ -155,6 +155,21 @@ local function through(q, qh, rpy, u, v)
   return project.to_ground(cm, pose, u, v, R_SEEN)
 end
 
+-- The ball's pixel at `back` s before the tick of e (the camera's pose between the ticks kept: the
+-- pixels of the two ticks around it, interpolated), or nil.
+local function pixel_before(e, back)
+  local k = back / period
+  local k0 = math.floor(k)
+  local a, b = at(e.tick - k0), at(e.tick - k0 - 1)
+  if not a or not b then return nil end
+  local ua, va = wt:pixel(wt:camera(a.truth, a.q), e.ball[1], e.ball[2], e.ball[3])
+  local ub, vb = wt:pixel(wt:camera(b.truth, b.q), e.ball[1], e.ball[2], e.ball[3])
+  if not ua or not ub then return nil end
+  local s = k - k0
+  return ua + s * (ub - ua), va + s * (vb - va)
+end
+local EXPOSURE = scfg.camera.exposure
+
 -- the frame still in camera.image (the one the vision just published) as a PNG
 local drawn = {}
 local function draw(kind, e, det, cam)
@@ -163,10 +178,11 @@ local function draw(kind, e, det, cam)
   if kind ~= 'sample' and drawn[kind] > 30 or kind == 'sample' and drawn[kind] % 50 ~= 1 then return end
   if image.frame[0] ~= det.frame then return end
   local u, v = wt:pixel(cam, e.ball[1], e.ball[2], e.ball[3])
-  require('Tests.vision.draw').frame(string.format('%s/%s_%06d.png', DRAW, kind, e.tick),
+  local u0, v0 = pixel_before(e, EXPOSURE)
+  require('Tests.vision.draw').frame(string.format('%s/%s_s%d_%06d.png', DRAW, kind, SEED, e.tick),
     { width = image.width[0], height = image.height[0], yuyv = image.yuyv }, { p = { scale = 1 } },
     { ball = { detected = det.detected, u = det.u, v = det.v, radius = det.radius } },
-    u and { u = u, v = v, radius = 1 } or nil)
+    u and { u = u, v = v, radius = 1, u0 = u0, v0 = v0 } or nil)
 end
 
 local function score(frame_tick, got_tick, det)
@@ -209,12 +225,22 @@ local function score(frame_tick, got_tick, det)
     est['true'] = { project.to_ground(cm, walk_truth.level_pose(t, cam), u, v, R_SEEN) }
   end
   local ok, note = st:ball(range, tx, ty, det.detected, est)
+  if VERBOSE and det.detected then
+    -- the detected pixel against the truth's at the exposure's end and its start (the smear's ends)
+    local u, v = wt:pixel(cam, e.ball[1], e.ball[2], e.ball[3])
+    local u0, v0 = pixel_before(e, EXPOSURE)
+    if u and u0 then
+      note = note .. string.format('; px det %.1f %.1f end %.1f %.1f start %.1f %.1f r %.1f', det.u, det.v, u, v,
+        u0, v0, det.radius)
+    end
+  end
   if VERBOSE or not ok then
     print(string.format('t %.3f: ball %.2f m %+.1f deg (late %d ticks): %s', e.time, range,
       math.deg(math.atan2(ty, tx)), got_tick - frame_tick, note))
   end
   local big = ok and range <= 3 and math.abs(math.sqrt(det.x ^ 2 + det.y ^ 2) - range) > 0.08 * range
-  draw(big and 'range8' or ok and 'sample' or 'miss', e, det, cam)
+  local berr = ok and math.abs(math.deg(wrap(math.atan2(det.y, det.x) - math.atan2(ty, tx)))) or 0
+  draw(big and 'range8' or berr > 2 and 'bearing2' or ok and 'sample' or 'miss', e, det, cam)
 end
 
 -- ---- the run

@@ -70,7 +70,8 @@ function S:ball(range, tx, ty, detected, est)
       parts[#parts + 1] = string.format('%s %+.1f%%', name, 100 * re)
     end
   end
-  return true, 'found: range error ' .. table.concat(parts, ', ')
+  return true, string.format('found: bearing error %.2f deg, range error %s', bearing_err(ex, ey, tx, ty),
+    table.concat(parts, ', '))
 end
 
 local function summary(list)

@@ -109,8 +109,8 @@ int main() {
 
     // 3. motion blur: the camera turned by an angle giving 12 px of flow at the image centre during
     // the exposure: the ball's image (weighted by its orange: U below the carpet's, which is linear in
-    // the mix) moves by half the flow against it and spreads by its length (variance + flow^2 / 12),
-    // not upwards
+    // the mix) moves by half the flow toward where it was at the start and spreads by its length
+    // (variance + flow^2 / 12), not upwards
     const double flow = 12, yaw = std::atan(flow / c.fu());
     double m0[4], m1[4];
     sh.has_start = false;
@@ -126,6 +126,14 @@ int main() {
       sim::yuyv_write_png(std::string(getenv("SIM_REALISM_PNG")) + "_still.png", a.data(), W, H, &err);
       sim::yuyv_write_png(std::string(getenv("SIM_REALISM_PNG")) + "_turning.png", b.data(), W, H, &err);
     }
+    // the still frame from the exposure's start: the smear lies between the two still images
+    double m2[4];
+    sim::Shot s0 = sh;
+    s0.has_start = false;
+    s0.cam = sh.cam_start;
+    rq.render(s0, solids, d.data());
+    orange_moments(d, W, H, m2);
+    printf("# the ball still at the end %.1f px, at the start %.1f px, blurred %.1f px\n", m0[0], m2[0], m1[0]);
     const double shift = m1[0] - m0[0], spread = std::sqrt(std::max(0.0, 12 * (m1[2] - m0[2])));
     printf("# turning %.2f deg during the exposure (%.0f px of flow): the ball moves %.1f px across, %.1f px up, "
            "spreads %.1f px across, %.1f px^2 of variance up\n",
@@ -133,6 +141,9 @@ int main() {
     check(std::fabs(std::fabs(shift) - flow / 2) < 1.0 && std::fabs(spread - flow) < 2.0 &&
               std::fabs(m1[1] - m0[1]) < 0.5 && std::fabs(m1[3] - m0[3]) < 2,
           "a camera turning during the exposure smears the ball along the flow by its length");
+    // (it once smeared it the other way, beyond the end: no pose during the exposure saw it there)
+    check(std::fabs(m1[0] - (m0[0] + m2[0]) / 2) < 1.0,
+          "the smear lies between the ball's still images at the exposure's start and end");
 
     // 4. drift within its amplitude, and moving
     double gmin = 9, gmax = 0, wmin = 9, wmax = 0;
