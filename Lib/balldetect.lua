@@ -7,13 +7,14 @@
 --   local n = bd:candidates(labels, wl, hl, 2, 8, 0.07, cfg)   -- bd.cand[0 .. n-1]: u, v, radius, score
 --   local mlp = assert(balldetect.load_model('Config/common/ball_white.mlp'))
 --   local p = bd:classify(mlp, yuyv, 640, 480, bd.cand[0])      -- probability 0..1 (also in cand.prob)
+--   bd:settle(labels, wl, hl, 2, 8, 0.07, bd.cand[0])    -- the ball chosen: its centre settled
 --   local n = bd:obstacles(labels, wl, hl, cfg)          -- bd.obst[0 .. n-1]: x0, x1, top, foot, red, blue, fx0, fx1
 -- Nothing on the per-frame path allocates.
 local ffi = require('ffi')
 local native = require('native')
 
 ffi.cdef [[
-typedef struct bd_view { double f, cx, cy; double R[9]; double height; } bd_view;
+typedef struct bd_view { double f, cx, cy; double R[9]; double height; double blur[2]; } bd_view;
 typedef struct bd bd;
 typedef struct bd_candidate { double u, v, radius; double inner, ring; double score; double prob; } bd_candidate;
 typedef struct bd_mlp bd_mlp;
@@ -31,6 +32,8 @@ int bd_field_boundary(bd *w, const uint8_t *labels, int wl, int hl, uint8_t gree
 int bd_candidates(bd *w, const uint8_t *labels, int wl, int hl, int scale, uint8_t green,
                   const int16_t *top, const bd_view *view, double ball_r, int step, double min_inner,
                   double max_ring, double min_radius_px, bd_candidate *out, int maxn);
+int bd_settle(const uint8_t *labels, int wl, int hl, int scale, uint8_t green, const int16_t *top, const bd_view *view,
+              double ball_r, bd_candidate *c);
 int bd_features(const uint8_t *yuyv, int width, int height, double u, double v, double radius,
                 double margin, float *out);
 bd_mlp *bd_mlp_load(const char *path, char *err, size_t errlen);
@@ -77,11 +80,14 @@ function Bd:boundary(labels, wl, hl, green, min_run)
   return C.bd_field_boundary(self.w, labels, wl, hl, green, min_run, self.top)
 end
 
--- The camera at the frame: cm = Vision.project.camera(...), pose from kinematics' camera_pose.
+-- The camera at the frame: cm = Vision.project.camera(...), pose from kinematics' camera_pose;
+-- pose.blur (optional): { du, dv } px the image moved during the exposure.
 function Bd:set_view(cm, pose)
   local v = self.view
   v.f, v.cx, v.cy, v.height = cm.f, cm.cx, cm.cy, pose.height
   for i = 0, 8 do v.R[i] = pose.R[i + 1] end
+  local b = pose.blur
+  v.blur[0], v.blur[1] = b and b[1] or 0, b and b[2] or 0
 end
 
 -- Ball candidates (after boundary and set_view) into self.cand[0 .. n-1]; returns n.
@@ -92,6 +98,13 @@ function Bd:candidates(labels, wl, hl, scale, green, ball_r, cfg)
                             math.min(cfg.max_candidates, M.MAXCAND))
   if n < 0 then error('balldetect: bad arguments to bd_candidates', 2) end
   return n
+end
+
+-- The centre of the candidate chosen as the ball settled (bd_settle: more centroid passes).
+function Bd:settle(labels, wl, hl, scale, green, ball_r, c)
+  if C.bd_settle(labels, wl, hl, scale, green, self.top, self.view, ball_r, c) < 0 then
+    error('balldetect: bad arguments to bd_settle', 2)
+  end
 end
 
 -- The features of a candidate (into self.feat) at the model's margin.

@@ -120,6 +120,65 @@ static int32_t box(const int32_t *S, int wl, int hl, int x0, int y0, int x1, int
   return S[y1 * s + x1] - S[y0 * s + x1] - S[y1 * s + x0] + S[y0 * s + x0];
 }
 
+/* The candidate's centre moved to the centroid of the non-field labels in its disc swept by half the
+ * view's blur either way (the smear's shape: a disc alone would rest anywhere along a smear longer
+ * than the ball), up to `passes` times, until it moves less than a quarter label; the radius
+ * follows. At most ~400 labels a disc's area looked at per pass. Returns the passes made. */
+static int centroid_passes(const uint8_t *labels, int wl, int hl, uint8_t green, const int16_t *top, int scale,
+                           const bd_view *view, double ball_r, bd_candidate *c, int passes) {
+  const double sc = scale;
+  const double hbx = view->blur[0] / (2 * sc), hby = view->blur[1] / (2 * sc);   /* labels */
+  const double hb2 = hbx * hbx + hby * hby, ex = fabs(hbx), ey = fabs(hby);
+  int it = 0;
+  while (it < passes) {
+    it++;
+    const double r = c->radius / sc, cx = c->u / sc - 0.5, cy = c->v / sc - 0.5;
+    const int st = r > 20 ? (int)(r / 10) : 1;
+    double sx = 0, sy = 0, m = 0;
+    for (int yy = (int)(cy - r - ey); yy <= (int)(cy + r + ey) + 1; yy += st) {
+      if (yy < 0 || yy >= hl) continue;
+      for (int xx = (int)(cx - r - ex); xx <= (int)(cx + r + ex) + 1; xx += st) {
+        if (xx < 0 || xx >= wl) continue;
+        double dx = xx - cx, dy = yy - cy;
+        if (hb2 > 0) {
+          /* beyond the field boundary only within the disc itself: the sweep there would take in the
+           * backdrop behind a ball smeared at the field's edge */
+          if (yy < top[xx] && dx * dx + dy * dy > r * r) continue;
+          /* from the nearest point of the segment centre -+ half the blur */
+          double t = (dx * hbx + dy * hby) / hb2;
+          t = t < -1 ? -1 : (t > 1 ? 1 : t);
+          dx -= t * hbx;
+          dy -= t * hby;
+        }
+        if (dx * dx + dy * dy > r * r || (labels[(size_t)yy * wl + xx] & green)) continue;
+        sx += xx;
+        sy += yy;
+        m += 1;
+      }
+    }
+    if (m == 0) break;
+    const double nu = (sx / m + 0.5) * sc, nv = (sy / m + 0.5) * sc;
+    const double moved = (nu - c->u) * (nu - c->u) + (nv - c->v) * (nv - c->v);
+    c->u = nu;
+    c->v = nv;
+    const double rr = bd_ball_radius_px(view, c->u, c->v, ball_r);
+    if (rr > 0) c->radius = rr;
+    if (moved < 0.0625 * sc * sc) break;
+  }
+  return it;
+}
+
+int bd_settle(const uint8_t *labels, int wl, int hl, int scale, uint8_t green, const int16_t *top, const bd_view *view,
+              double ball_r, bd_candidate *c) {
+  if (!labels || !top || !view || !c || wl <= 0 || hl <= 0 || scale <= 0 || !(c->radius > 0)) return BD_EARG;
+  /* not a ball whose disc reaches beyond the field boundary: there the backdrop is as not-field as
+   * the ball, and more passes would climb into it */
+  const double r = c->radius / scale, cx = c->u / scale - 0.5, cy = c->v / scale - 0.5;
+  for (int x = (int)(cx - r); x <= (int)(cx + r) + 1; x++)
+    if (x >= 0 && x < wl && cy - r < top[x]) return 0;
+  return centroid_passes(labels, wl, hl, green, top, scale, view, ball_r, c, 6);
+}
+
 static int by_score(const void *a, const void *b) {
   const double sa = ((const bd_candidate *)a)->score, sb = ((const bd_candidate *)b)->score;
   return sa < sb ? 1 : (sa > sb ? -1 : 0);
@@ -201,29 +260,8 @@ int bd_candidates(bd *w, const uint8_t *labels, int wl, int hl, int scale, uint8
     }
     if (near) continue;
     out[n] = *c;
-    /* the centre: centroid of the non-field labels in the disc, twice (a disc on a spot's edge
-     * moves onto it); at most ~400 labels looked at per pass */
-    for (int it = 0; it < 2; it++) {
-      const double r = out[n].radius / sc, cx = out[n].u / sc - 0.5, cy = out[n].v / sc - 0.5;
-      const int st = r > 20 ? (int)(r / 10) : 1;
-      double sx = 0, sy = 0, m = 0;
-      for (int yy = (int)(cy - r); yy <= (int)(cy + r) + 1; yy += st) {
-        if (yy < 0 || yy >= hl) continue;
-        for (int xx = (int)(cx - r); xx <= (int)(cx + r) + 1; xx += st) {
-          if (xx < 0 || xx >= wl) continue;
-          const double dx = xx - cx, dy = yy - cy;
-          if (dx * dx + dy * dy > r * r || (labels[(size_t)yy * wl + xx] & green)) continue;
-          sx += xx;
-          sy += yy;
-          m += 1;
-        }
-      }
-      if (m == 0) break;
-      out[n].u = (sx / m + 0.5) * sc;
-      out[n].v = (sy / m + 0.5) * sc;
-      const double rr = bd_ball_radius_px(view, out[n].u, out[n].v, ball_r);
-      if (rr > 0) out[n].radius = rr;
-    }
+    /* the centre: the centroid of its region, twice (a disc on a spot's edge moves onto it) */
+    centroid_passes(labels, wl, hl, green, top, scale, view, ball_r, &out[n], 2);
     n++;
   }
   return n;

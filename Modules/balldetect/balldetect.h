@@ -28,6 +28,8 @@ typedef struct bd_view {
   double f, cx, cy;          /* px: focal length and principal point (full resolution) */
   double R[9];               /* camera -> level frame, row-major; camera x optical axis, y left, z up */
   double height;             /* m, the camera above the ground */
+  double blur[2];            /* px: how far the image moved during the exposure (a smear's length and
+                                direction; 0, 0 for a still camera) */
 } bd_view;
 
 /* Apparent radius (px) of a ball of radius r (m) lying on the ground whose centre is seen at
@@ -59,10 +61,24 @@ typedef struct bd_candidate {
  * field (>= min_inner) and a ring around it mostly field or beyond the boundary (not-field labels
  * below the boundary <= max_ring); local maxima of inner - ring, the best first, none
  * within one radius of a better one; the centre refined to the centroid of the non-field labels in
- * its disc. `scale`: full-resolution px per label. Writes up to maxn into out, returns the count. */
+ * its disc swept along the view's blur (the shape of a ball smeared by a moving camera: its centre
+ * is then the smear's, the ball at the exposure's middle; the sweep beyond the field boundary left
+ * out: the backdrop behind a ball at the field's edge), twice. `scale`: full-resolution px per label.
+ * Writes up to maxn into out, returns the count. */
 int bd_candidates(bd *w, const uint8_t *labels, int wl, int hl, int scale, uint8_t green,
                   const int16_t *top, const bd_view *view, double ball_r, int step, double min_inner,
                   double max_ring, double min_radius_px, bd_candidate *out, int maxn);
+
+/* The centre of the candidate chosen as the ball (bd_candidates' arguments; top: the boundary) refined further: the
+ * same centroid in the disc swept by the blur, up to 6 more times until it moves less than a quarter
+ * label. Each pass halves its offset from a ball of the disc's size; two leave a quarter of it,
+ * which for a near ball (its candidate may lie many labels off) is many pixels. Not for every
+ * candidate: on a far ball's few labels the passes drift into what lies beside it, and the
+ * classifier was trained on the centres of two; nor for a ball whose disc reaches beyond the field
+ * boundary (the backdrop there is as not-field as the ball). Returns the passes made (0: left as it
+ * was), BD_EARG for bad arguments. */
+int bd_settle(const uint8_t *labels, int wl, int hl, int scale, uint8_t green, const int16_t *top, const bd_view *view,
+              double ball_r, bd_candidate *c);
 
 /* Features of a square patch of side 2 * margin * radius around (u, v) in a YUYV frame:
  * BD_GRID x BD_GRID luma cells (mean over up to 3 x 3 samples each), normalised to zero mean and

@@ -55,16 +55,63 @@ function M.new(vcfg, ccfg, model)
                              block = vcfg.block, lut = lut }),
     cm = project.from_config(ccfg),
     head_joint = rawget(ccfg, 'head_joint') or { 0, 1 },
-    pose = { 0, 0, 0, R = { 1, 0, 0, 0, 1, 0, 0, 0, 1 }, height = 0 },
+    pose = { 0, 0, 0, R = { 1, 0, 0, 0, 1, 0, 0, 0, 1 }, height = 0, blur = { 0, 0 } },
     result = { ball = { detected = false, kind = kind == 'white' and 1 or 0, score = 0 }, goals = { n = 0 },
                robots = { n = 0 } },
     q = {},
+    -- the last frame's angles and time (Pipeline:process dates the pose to the exposure's middle)
+    exposure = rawget(ccfg, 'exposure_time') or 0,
+    last = { time = -math.huge, pan = 0, tilt = 0, roll = 0, pitch = 0 },
+    rpy = { 0, 0 },
+    pose_ends = { { R = {} }, { R = {} } },
   }, Pipeline)
   return self
 end
 
+-- The frames' angles are their exposure's end; the image shows the exposure's middle (a smear's
+-- centre): each angle goes back by half the exposure at its rate since the last frame (none after a
+-- gap of more than 0.1 s: frames missed, or the first one). Sets the head's angles in self.q and
+-- self.rpy at `back` exposures before the end (0.5: the middle); returns the rate's factor (0: none).
+local MAX_GAP = 0.1
+function Pipeline:angles_at(frame, rpy, back)
+  local qq, last = self.q, self.last
+  local ip, it = self.head_joint[1] + 1, self.head_joint[2] + 1
+  local pan, tilt = frame.head[0], frame.head[1]
+  local t = frame.time or -math.huge   -- (a test's frame may have no time: no dating)
+  local dt = t - last.time
+  local k = (self.exposure > 0 and dt > 0 and dt <= MAX_GAP) and back * self.exposure / dt or 0
+  qq[ip], qq[it] = pan - k * (pan - last.pan), tilt - k * (tilt - last.tilt)
+  self.rpy[1], self.rpy[2] = rpy[1] - k * (rpy[1] - last.roll), rpy[2] - k * (rpy[2] - last.pitch)
+  return k
+end
+
+-- The pixel offset (du, dv) between where the exposure's start and its end saw the point on the
+-- middle pose's optical axis (on the ground, or 5 m away): the smear of a still object.
+local blur_ends = { {}, {} }
+function Pipeline:blur(frame, rpy, mid)
+  local R = mid.R
+  local dz = R[7]
+  local t = dz < -1e-3 and math.min(5, mid.height / -dz) or 5
+  local px, py, pz = mid[1] + t * R[1], mid[2] + t * R[4], mid.height + t * dz
+  local ends = blur_ends
+  for e = 1, 2 do
+    local pose = self.pose_ends[e]
+    self:angles_at(frame, rpy, e == 1 and 1 or 0)
+    self.model:camera_pose(self.q, self.rpy, pose)
+    ends[e][1], ends[e][2] = project.to_image(self.cm, pose, px, py, pz)
+  end
+  local b = mid.blur
+  if ends[1][1] and ends[2][1] then
+    b[1], b[2] = ends[1][1] - ends[2][1], ends[1][2] - ends[2][2]
+  else
+    b[1], b[2] = 0, 0
+  end
+end
+
 -- Runs the pipeline on a frame. q: joint angles (1-based table in the robot's joint order; the
--- head angles are replaced by the frame's), rpy: {roll, pitch} of the torso at the frame.
+-- head angles are replaced by the frame's), rpy: {roll, pitch} of the torso at the frame; the head
+-- and torso angles dated to the exposure's middle (camera.exposure_time, Pipeline:angles_at), the
+-- pose's blur the image's motion during the exposure (Pipeline:blur).
 -- Returns the detections, or nil and a message for a frame of the wrong size.
 function Pipeline:process(frame, q, rpy)
   if frame.width ~= self.width or frame.height ~= self.height then
@@ -73,8 +120,13 @@ function Pipeline:process(frame, q, rpy)
   end
   local qq = self.q
   for i = 1, #q do qq[i] = q[i] end
-  qq[self.head_joint[1] + 1], qq[self.head_joint[2] + 1] = frame.head[0], frame.head[1]
-  self.model:camera_pose(qq, rpy, self.pose)
+  local pose = self.pose
+  local moving = self:angles_at(frame, rpy, 0.5) > 0
+  self.model:camera_pose(qq, self.rpy, pose)
+  if moving then self:blur(frame, rpy, pose) else pose.blur[1], pose.blur[2] = 0, 0 end
+  local last = self.last
+  last.time, last.pan, last.tilt = frame.time or -math.huge, frame.head[0], frame.head[1]
+  last.roll, last.pitch = rpy[1], rpy[2]
   return self:detect(frame, self.pose)
 end
 

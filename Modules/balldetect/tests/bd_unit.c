@@ -46,6 +46,19 @@ int main(void) {
   check(n == 1, "one candidate: the disc (the thin line is no disc)");
   check(n >= 1 && fabs(c[0].u - 200) < 1 && fabs(c[0].v - 150) < 1, "its centre within 1 px");
   check(n >= 1 && c[0].inner > 0.95 && c[0].ring < 0.05, "inside not field, around it field");
+  /* the disc smeared 24 px across by a turning camera (the view's blur): the smear's centre */
+  for (int y = 0; y < H; y++)
+    for (int x = 0; x < W; x++) {
+      const double dx = x + 0.5 - 200, dy = y + 0.5 - 150, ex = fabs(dx) > 12 ? fabs(dx) - 12 : 0;
+      L[y * W + x] = ex * ex + dy * dy <= rpx * rpx ? WHITE : GREEN;
+    }
+  bd_field_boundary(w, L, W, H, GREEN, 4, top);
+  view.blur[0] = 24;
+  n = bd_candidates(w, L, W, H, 1, GREEN, top, &view, 0.07, 2, 0.8, 0.5, 1.5, c, 8);
+  if (n >= 1) bd_settle(L, W, H, 1, GREEN, top, &view, 0.07, &c[0]);
+  view.blur[0] = 0;
+  if (n >= 1) printf("# smeared: centre %.2f, %.2f\n", c[0].u, c[0].v);
+  check(n >= 1 && fabs(c[0].u - 200) < 1 && fabs(c[0].v - 150) < 1, "a smeared ball: the smear's centre within 1 px");
 
   float f[BD_NFEAT];
   static uint8_t yuyv[W * H * 2];
@@ -57,6 +70,21 @@ int main(void) {
   double mean = 0;
   for (int i = 0; i < BD_GRID * BD_GRID; i++) mean += f[i];
   check(fabs(mean) < 1e-3 && f[8 * BD_GRID + 8] > 0 && f[0] < 0, "luma normalised, ball bright, corner dark");
+
+  /* a near ball (41 px) and a centre 30 px off it: settled onto it */
+  bd_view near = view;
+  near.f = 250;
+  const double rn = bd_ball_radius_px(&near, 160, 120, 0.07);
+  for (int y = 0; y < H; y++)
+    for (int x = 0; x < W; x++) {
+      const double dx = x + 0.5 - 160, dy = y + 0.5 - 120;
+      L[y * W + x] = dx * dx + dy * dy <= rn * rn ? WHITE : GREEN;
+    }
+  bd_field_boundary(w, L, W, H, GREEN, 4, top);
+  bd_candidate cn = {.u = 190, .v = 120, .radius = rn};
+  const int passes = bd_settle(L, W, H, 1, GREEN, top, &near, 0.07, &cn);
+  printf("# near ball: settled at %.2f, %.2f in %d passes\n", cn.u, cn.v, passes);
+  check(passes > 2 && fabs(cn.u - 160) < 1 && fabs(cn.v - 120) < 1, "a near ball's centre 30 px off settles within 1 px");
 
   /* obstacles: sky above row 40, a robot (columns 100..120, rows 20..100), a line, a dark spot */
   enum { RED = 2 };
