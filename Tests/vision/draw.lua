@@ -93,7 +93,9 @@ function M.frame(path, fr, vp, det, truth)
     -- where the ball was seen at the exposure's start (a moving camera): a green line to the cross
     if truth.u0 then
       local n = math.ceil(math.max(math.abs(truth.u0 - truth.u), math.abs(truth.v0 - truth.v))) + 1
-      for k = 0, n do px(truth.u0 + (truth.u - truth.u0) * k / n, truth.v0 + (truth.v - truth.v0) * k / n, 0, 255, 0) end
+      for k = 0, n do
+        px(truth.u0 + (truth.u - truth.u0) * k / n, truth.v0 + (truth.v - truth.v0) * k / n, 0, 255, 0)
+      end
     end
   end
   if det.ball.detected then

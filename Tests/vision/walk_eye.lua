@@ -169,6 +169,12 @@ local function pixel_before(e, back)
   return ua + s * (ub - ua), va + s * (vb - va)
 end
 local EXPOSURE = scfg.camera.exposure
+-- the vision dates a frame by the camera's exposure time: the sim's must be the camera config's
+if math.abs((rawget(ccfg, 'exposure_time') or 0) - EXPOSURE) > 1e-9 then
+  print(string.format('not ok 1 - camera.lua exposure_time %s differs from sim.lua camera.exposure %s',
+    tostring(rawget(ccfg, 'exposure_time')), tostring(EXPOSURE)))
+  os.exit(1)
+end
 
 -- the frame still in camera.image (the one the vision just published) as a PNG
 local drawn = {}
