@@ -2,6 +2,8 @@
 -- Run by ./run_repl as the lockstep's observer on the first robot (ROBOT_ID = the first robot's id):
 --   ./run_repl Run/referee.lua PER_TEAM GC_PORT RETURN_PORT     (rules: game.lua's `referee`; a site
 --   folder, $HRP_SITE, may change them: Tests/bench/match.sh)
+-- With HRP_MATCH_TRACE set to a file, every look writes one line there: "t state bx by" and per robot
+-- "x y yaw fallen role" (role: game block's, -1 penalized) for Tests/game/plot_match.py.
 -- Robots ROBOT_ID .. ROBOT_ID + 2 * PER_TEAM - 1: the first PER_TEAM are team 1's players 1..n, the
 -- others team 2's. Sends GameController packets (GameFSM/packet.lua, broadcast on the loopback to
 -- GC_PORT), reads the robots' return packets on RETURN_PORT, watches the sim's truth and plays the
@@ -56,9 +58,23 @@ local function look()
       w.ball = { T.ball.x, T.ball.y, T.ball.vx, T.ball.vy }
       w.score = { s.score() }
     end
-    w.robots[i] = { team = robots[i].team, player = robots[i].player, x = T.x, y = T.y, fallen = T.fallen }
+    w.robots[i] = { team = robots[i].team, player = robots[i].player, x = T.x, y = T.y, yaw = T.yaw,
+      fallen = T.fallen }
   end
   return w
+end
+
+local trace_path = os.getenv('HRP_MATCH_TRACE')
+local trace = trace_path and trace_path ~= '' and assert(io.open(trace_path, 'w'))
+
+local function write_trace(t, w)
+  local parts = { string.format('%.2f %d %.3f %.3f', t - t0, m.state, w.ball[1], w.ball[2]) }
+  for i, r in ipairs(w.robots) do
+    local p = m.robots[i]
+    parts[#parts + 1] = string.format('%.3f %.3f %.3f %d %d', r.x, r.y, r.yaw, r.fallen and 1 or 0,
+      (p and p.penalty) and -1 or beliefs[i].game.role[0])
+  end
+  trace:write(table.concat(parts, ' '), '\n')
 end
 
 local STATUS = 30 -- s of robot time between status lines (where the ball and the robots are)
@@ -77,6 +93,7 @@ while true do
   local t = Body.get_time()
   local w = look()
   if t >= next_status then next_status = t + STATUS status(t, w) end
+  if trace then write_trace(t, w) end
   local playing = m.state == packet.STATE.playing
   for i, rb in ipairs(w.robots) do
     local b = beliefs[i]
@@ -125,6 +142,7 @@ while true do
   wait(rules.look_period)
 end
 
+if trace then trace:close() end
 local st, sim_s, wall_s = m.stats, Body.get_time() - t0, math.max(1, os.time() - wall0)
 print(string.format('result: team %d %d : %d team %d', team_numbers[1], m.score[1], m.score[2], team_numbers[2]))
 for i = 1, 2 do
