@@ -56,6 +56,8 @@ local function look()
     local T = s.truth()
     if i == 1 then
       w.ball = { T.ball.x, T.ball.y, T.ball.vx, T.ball.vy }
+      -- the physics' last contact (world index r is robot r + 1 here: match.sh starts them in order)
+      w.touch = T.ball.touch >= 0 and T.ball.touch + 1 or false
       w.score = { s.score() }
     end
     w.robots[i] = { team = robots[i].team, player = robots[i].player, x = T.x, y = T.y, yaw = T.yaw,
