@@ -4,8 +4,9 @@ prints what each robot did: falls, seconds fallen, seconds near another robot, b
 
     Tests/game/plot_match.py TRACE.txt [SECONDS_PER_PANEL (30)]   -> TRACE.png next to it
 
-A trace line: "t state bx by" then per robot "x y yaw fallen role" (role -1: penalized). Team 1 is
-the first half of the robots. Panels run left to right, top to bottom, one per SECONDS_PER_PANEL of
+A trace line: "t state bx by", per robot the truth "x y yaw fallen role" (role -1: penalized), then
+(traces with a "# robots N" header) per robot its own view "px py pyaw ball_x ball_y ball_age
+body_state" in the same frame. Team 1 is the first half of the robots. Panels run left to right, top to bottom, one per SECONDS_PER_PANEL of
 PLAYING: team 1 blue (player 1 dark), team 2 red (player 1 dark), the ball orange, falls as crosses,
 each robot's end position as a circle with its heading.
 """
@@ -24,15 +25,22 @@ ROLE_NAMES = {-1: 'penalized', 0: 'none', 1: 'striker', 2: 'supporter', 3: 'defe
 
 
 def load(path):
-    rows = []
+    rows, n = [], None
     with open(path) as f:
         for ln in f:
             p = ln.split()
-            if len(p) >= 9:
+            if ln.startswith('# robots'):
+                n = int(p[2])
+            elif len(p) >= 9:
                 rows.append([float(v) for v in p])
     a = np.array(rows)
-    n = (a.shape[1] - 4) // 5
-    return a, n
+    return a, n if n else (a.shape[1] - 4) // 5
+
+
+def view(a, n, i):
+    """px, py, pyaw, ball_x, ball_y, ball_age, body_state of robot i's own view, or None (old traces)"""
+    c = 4 + 5 * n + 7 * i
+    return None if a.shape[1] < 4 + 12 * n else tuple(a[:, c + k] for k in range(7))
 
 
 def robot(a, i):
@@ -84,9 +92,17 @@ def summary(a, n):
                 close |= np.hypot(x - pos[j][0], y - pos[j][1]) < 0.35
         near_ball = np.hypot(x - a[:, 2], y - a[:, 3]) < 0.25
         roles = {ROLE_NAMES.get(int(r), str(r)): (dt * play * (role == r)).sum() for r in np.unique(role)}
-        print('%d/%d falls %d, fallen %.0f s, near a robot %.0f s, at the ball %.0f s; %s' % (
+        belief = ''
+        v = view(a, n, i)
+        if v is not None:  # the pose belief's error while playing and not penalized
+            on = play & (role >= 0)
+            err = np.hypot(v[0] - x, v[1] - y)[on]
+            if len(err):
+                belief = '; pose error median %.2f m, p95 %.2f m, over 1 m %.0f s' % (
+                    np.median(err), np.percentile(err, 95), (dt[on] * (err > 1.0)).sum())
+        print('%d/%d falls %d, fallen %.0f s, near a robot %.0f s, at the ball %.0f s; %s%s' % (
             team, player, falls, down, (dt * play * close).sum(), (dt * play * near_ball).sum(),
-            ' '.join('%s=%.0f' % kv for kv in roles.items())))
+            ' '.join('%s=%.0f' % kv for kv in roles.items()), belief))
 
 
 def main():
