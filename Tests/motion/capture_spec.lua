@@ -167,6 +167,28 @@ describe('capture point error', function()
     assert.is_near(0.5 * d_on, half, 1e-9)
   end)
 
+  it('holds the activation for activateHold after the error reached activateFull, fading', function()
+    local w, p = walk(0)
+    p.stepAdjust.activateFrom, p.stepAdjust.activateFull = { 0, 0.03 }, { 0, 0.05 }
+    local h = p.tZmp * p.tZmp * G
+    local big, small = -math.asin(0.06 / h), -math.asin(0.01 / h) -- errors of 0.06 and 0.01 m
+    -- without a hold the gate follows the error at once
+    p.stepAdjust.activateHold = 0
+    capture.update(w, sensors(p, 0, 0, big), { 0, 0, 0 }, dt)
+    assert.are.equal(1, w.cp_gate[2])
+    capture.update(w, sensors(p, 0, 0, small), { 0, 0, 0 }, dt)
+    assert.are.equal(0, w.cp_gate[2])
+    -- with a hold of 0.5 s: 1 - t / 0.5 after the push's error, 0 from then on
+    p.stepAdjust.activateHold = 0.5
+    capture.update(w, sensors(p, 0, 0, big), { 0, 0, 0 }, dt)
+    local n = math.floor(0.25 / dt + 0.5)
+    for _ = 1, n do capture.update(w, sensors(p, 0, 0, small), { 0, 0, 0 }, dt) end
+    assert.is_near(1 - n * dt / 0.5, w.cp_gate[2], 1e-9)
+    for _ = 1, n + 2 do capture.update(w, sensors(p, 0, 0, small), { 0, 0, 0 }, dt) end
+    assert.are.equal(0, w.cp_gate[2])
+    assert.are.equal(1, w.cp_gate[1]) -- x: activateFull 0, no gate
+  end)
+
   it('rests while the walk stands', function()
     local w, p = walk(0.6)
     for _ = 1, 50 do capture.update(w, sensors(p, 0, 3), { 0, 0, 0 }, dt) end

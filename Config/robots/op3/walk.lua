@@ -31,7 +31,8 @@ return {
   -- are the measured push settings
   stepAdjust = { gain = 1.0, deadband = { 0.03, 0.02 }, max = { 0.05, 0.08 }, switchError = 1,
     touchdownError = 1, touchdownTime = 0.05, level = { 0, 0 }, levelTime = 0.15, velocityLeak = 0,
-    retarget = 0.85, activateFrom = { 0, 0.03 }, activateFull = { 0, 0.05 } },
+    retarget = 0.85, activateFrom = { 0, 0.03 }, activateFull = { 0, 0.05 },
+    activateHold = 0 },
   -- posture
   bodyHeight = 0.25,         -- m, torso origin (between the hip yaw joints: the URDF's body_link) above the ground
   bodyTilt = 0.08,           -- rad, torso pitch (forward positive)
