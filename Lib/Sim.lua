@@ -1,7 +1,8 @@
 -- The simulator's truth and control (PLATFORM=Sim), through this robot's `sim` block.
 --
 --   local Sim = require('Sim')
---   Sim.truth()  --> { x, y, z, yaw, roll, pitch, fallen = bool, ball = { x, y, z, vx, vy } }
+--   Sim.truth()  --> { x, y, z, yaw, roll, pitch, fallen = bool, ball = { x, y, z, vx, vy, touch, touch_time } }
+--                    (ball.touch: world index of the robot that touched it last, -1 none since placed)
 --   Sim.reset()                      every robot to its start pose, ball to the centre, score 0:0
 --   Sim.teleport_robot(x, y, yaw)    this robot, upright, joints at their commands, at rest
 --   Sim.teleport_ball(x, y [, vx, vy])
@@ -95,7 +96,8 @@ local function bind(S, R)
         x = x.robot[0], y = x.robot[1], z = x.robot[2],
         yaw = x.robot[3], roll = x.robot[4], pitch = x.robot[5],
         fallen = x.fallen[0] ~= 0,
-        ball = { x = x.ball[0], y = x.ball[1], z = x.ball[2], vx = x.ball[3], vy = x.ball[4] },
+        ball = { x = x.ball[0], y = x.ball[1], z = x.ball[2], vx = x.ball[3], vy = x.ball[4],
+          touch = x.ball_touch[0], touch_time = x.ball_touch_time[0] },
       }
     end)
   end

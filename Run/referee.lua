@@ -2,6 +2,10 @@
 -- Run by ./run_repl as the lockstep's observer on the first robot (ROBOT_ID = the first robot's id):
 --   ./run_repl Run/referee.lua PER_TEAM GC_PORT RETURN_PORT     (rules: game.lua's `referee`; a site
 --   folder, $HRP_SITE, may change them: Tests/bench/match.sh)
+-- With HRP_MATCH_TRACE set to a file, every look writes one line there (Tests/game/plot_match.py):
+-- "t state bx by", per robot the truth "x y yaw fallen role" (role: the game block's, -1 penalized),
+-- then per robot its own view in the referee's frame: "px py pyaw ball_x ball_y ball_age body_state"
+-- (its pose belief, where it believes the ball is, s since it saw it, its body FSM state's index).
 -- Robots ROBOT_ID .. ROBOT_ID + 2 * PER_TEAM - 1: the first PER_TEAM are team 1's players 1..n, the
 -- others team 2's. Sends GameController packets (GameFSM/packet.lua, broadcast on the loopback to
 -- GC_PORT), reads the robots' return packets on RETURN_PORT, watches the sim's truth and plays the
@@ -54,11 +58,39 @@ local function look()
     local T = s.truth()
     if i == 1 then
       w.ball = { T.ball.x, T.ball.y, T.ball.vx, T.ball.vy }
+      -- the physics' last contact (world index r is robot r + 1 here: match.sh starts them in order)
+      w.touch = T.ball.touch >= 0 and T.ball.touch + 1 or false
       w.score = { s.score() }
     end
-    w.robots[i] = { team = robots[i].team, player = robots[i].player, x = T.x, y = T.y, fallen = T.fallen }
+    w.robots[i] = { team = robots[i].team, player = robots[i].player, x = T.x, y = T.y, yaw = T.yaw,
+      fallen = T.fallen }
   end
   return w
+end
+
+local trace_path = os.getenv('HRP_MATCH_TRACE')
+local trace = trace_path and trace_path ~= '' and assert(io.open(trace_path, 'w'))
+if trace then trace:write(string.format('# robots %d\n', 2 * n)) end
+
+local function write_trace(t, w)
+  local parts = { string.format('%.2f %d %.3f %.3f', t - t0, m.state, w.ball[1], w.ball[2]) }
+  for i, r in ipairs(w.robots) do
+    local p = m.robots[i]
+    parts[#parts + 1] = string.format('%.3f %.3f %.3f %d %d', r.x, r.y, r.yaw, r.fallen and 1 or 0,
+      (p and p.penalty) and -1 or beliefs[i].game.role[0])
+  end
+  for i, r in ipairs(w.robots) do
+    local s = m.side[r.team]
+    local v = beliefs[i].world:read(function(x)
+      local c, sn = math.cos(x.pose[2]), math.sin(x.pose[2])
+      return { x.pose[0], x.pose[1], x.pose[2], x.pose[0] + c * x.ball[0] - sn * x.ball[1],
+        x.pose[1] + sn * x.ball[0] + c * x.ball[1], t - x.ball_time[0] }
+    end)
+    local body = beliefs[i].game.body_state[0]
+    parts[#parts + 1] = string.format('%.3f %.3f %.3f %.3f %.3f %.1f %d', s * v[1], s * v[2],
+      s > 0 and v[3] or v[3] + math.pi, s * v[4], s * v[5], math.min(v[6], 999), body)
+  end
+  trace:write(table.concat(parts, ' '), '\n')
 end
 
 local STATUS = 30 -- s of robot time between status lines (where the ball and the robots are)
@@ -77,6 +109,7 @@ while true do
   local t = Body.get_time()
   local w = look()
   if t >= next_status then next_status = t + STATUS status(t, w) end
+  if trace then write_trace(t, w) end
   local playing = m.state == packet.STATE.playing
   for i, rb in ipairs(w.robots) do
     local b = beliefs[i]
@@ -125,6 +158,7 @@ while true do
   wait(rules.look_period)
 end
 
+if trace then trace:close() end
 local st, sim_s, wall_s = m.stats, Body.get_time() - t0, math.max(1, os.time() - wall0)
 print(string.format('result: team %d %d : %d team %d', team_numbers[1], m.score[1], m.score[2], team_numbers[2]))
 for i = 1, 2 do

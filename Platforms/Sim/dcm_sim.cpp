@@ -168,6 +168,8 @@ void publish_truth(Sim &s, int r) {
   b.score[0] = s.world->score(0);
   b.score[1] = s.world->score(1);
   *b.realtime_factor = s.rtf;
+  *b.ball_touch = s.world->ball_touch();
+  *b.ball_touch_time = s.world->ball_touch_time();
   shm_write_end(b.blk);
 }
 

@@ -549,6 +549,7 @@ void World::place_ball(double x, double y, double vx, double vy) {
   const dQuaternion q0 = {1, 0, 0, 0};
   dBodySetQuaternion(ball_, q0);
   in_goal_ = 0;
+  ball_touch_ = -1;
 }
 
 void World::reset() {
@@ -649,6 +650,10 @@ void World::collide(dGeomID o1, dGeomID o2) {
     s.soft_erp = h * kp / (h * kp + kd);
     s.soft_cfm = 1 / (h * kp + kd);
   } else if (ball) {
+    if (a->kind == kRobot || b->kind == kRobot) {
+      ball_touch_ = a->kind == kRobot ? a->robot : b->robot;
+      ball_touch_time_ = time_;
+    }
     s.mode = dContactApprox1 | dContactBounce;
     s.mu = 0.5;
     s.bounce = p_.ball_bounce;

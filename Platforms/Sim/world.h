@@ -155,6 +155,10 @@ class World {
   // A force (N, field frame, horizontal) on robot r's torso for `duration` s.
   void push(int r, double fx, double fy, double duration);
   int score(int goal) const { return score_[goal]; }   // 0: goals into +x, 1: into -x
+  // The robot whose body touched the ball last (a contact in the physics), -1: none since the ball
+  // was placed; and the sim time of that touch. The referee's "last touched" (own goals, throw-ins).
+  int ball_touch() const { return ball_touch_; }
+  double ball_touch_time() const { return ball_touch_time_; }
 
   // Camera of robot r: world pose (columns of rot: optical axis, image-left, image-up).
   void camera_pose(int r, Vec3 *pos, Mat3 *rot) const;
@@ -224,6 +228,8 @@ class World {
   double time_ = 0;
   int substeps_ = 8;
   int score_[2] = {0, 0};
+  int ball_touch_ = -1;
+  double ball_touch_time_ = 0;
   int in_goal_ = 0;                         // latched: +1 / -1 while the ball is inside a goal
   uint64_t seed_;
   std::mt19937_64 rng_;

@@ -62,9 +62,15 @@ function Match:place_all(acts, world)
   end
 end
 
--- Who touched the ball last: the truth has no contacts, so the robot nearest to the ball (within
--- `touch` m) when the ball's velocity changed by more than rolling explains (`touch_dv` m/s per look).
+-- Who touched the ball last: the sim's contacts when the world has them (world.touch: the index of
+-- the robot whose body touched the ball last, false for none since the ball was placed); without
+-- them, the robot nearest to the ball (within `touch` m) when the ball's velocity changed by more than
+-- rolling explains (`touch_dv` m/s per look).
 function Match:watch_touch(world)
+  if world.touch ~= nil then
+    if world.touch then self.last_touch = world.robots[world.touch].team end
+    return
+  end
   local b = world.ball
   if self.ball_dv < self.r.touch_dv then return end
   local best, bd = nil, self.r.touch

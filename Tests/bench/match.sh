@@ -6,7 +6,8 @@
 #   Tests/bench/match.sh [PER_TEAM (2)] [HALF_SECONDS (300)] [SEED (1)] [READY_SECONDS (45)]
 # (make match, make match4). The referee's rules are Config/common/game.lua's `referee`; the half and
 # READY's length given here reach it through its own site folder (build/match/<id>/site_referee/game.lua).
-# env: ROBOT_ID (robots ROBOT_ID+270 ..; UDP ports derived from it), logs in build/match/<first id>/;
+# env: ROBOT_ID (robots ROBOT_ID+270 ..; UDP ports derived from it), logs in build/match/<first id>/
+# (trace.txt: where everyone was every 0.1 s, for Tests/game/plot_match.py; HRP_MATCH_TRACE= for none);
 # ALONE="2" (team numbers, space-separated): those teams' robots play without team play (no team
 # messages, no roles: each robot alone; game.lua's team.enabled, roles.enabled), for Run/league.py.
 # The robots see each other (jerseys in the sim camera, the vision block's robots, the world's obstacles) and walk
@@ -72,7 +73,7 @@ printf 'return { referee = { half_time = %s%s } }\n' "$HALF" "${READY:+, ready_t
   >"$DIR/site_referee/game.lua"
 START=$(date +%s.%N)
 # in the background with its pid kept, so that the cleanup can stop it (a signal ends `wait` at once)
-ROBOT_ID=$ID HRP_SITE="$DIR/site_referee" ./run_repl Run/referee.lua "$N" "$GC_PORT" "$RET_PORT" \
+HRP_MATCH_TRACE="${HRP_MATCH_TRACE-$DIR/trace.txt}" ROBOT_ID=$ID HRP_SITE="$DIR/site_referee" ./run_repl Run/referee.lua "$N" "$GC_PORT" "$RET_PORT" \
   > >(tee "$DIR/referee.log") 2>&1 &
 REF=$!
 wait "$REF"

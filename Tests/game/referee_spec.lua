@@ -119,6 +119,29 @@ describe('the referee', function()
     assert.are.equal(1, m.stats.own_goals[1])
   end)
 
+  it("takes the last touch from the sim's contacts when the world has them, not the nearest robot", function()
+    local m, t = playing()
+    -- team 1's defender stands nearest, but the physics says team 2's attacker touched it last: a goal,
+    -- not an own goal (the seed-3 league match that the nearest-robot rule called an own goal)
+    local w = world({ -4.3, 0, -0.3, 0 })
+    w.robots[1].x, w.robots[1].y = -4.25, 0.05
+    w.robots[2].x, w.robots[2].y = -4.0, 0
+    w.touch = 2
+    m:step(t + 0.1, w)
+    local g = world({ -4.7, 0 }, nil, { 0, 1 })
+    g.touch = 2
+    m:step(t + 0.2, g)
+    assert.are.equal(0, m.stats.own_goals[1])
+    assert.are.equal(1, m.stats.goals[2])
+    -- the same scene with the defender's touch: an own goal; `false` (placed since) keeps the last
+    m, t = playing()
+    w.touch = 1
+    m:step(t + 0.1, w)
+    g.touch = false
+    m:step(t + 0.2, g)
+    assert.are.equal(1, m.stats.own_goals[1])
+  end)
+
   it('changes ends at half time and finishes after the second half', function()
     local m, t = playing()
     t = t + rules.half_time + 0.1

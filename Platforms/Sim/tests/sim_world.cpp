@@ -115,6 +115,23 @@ int main() {
             "foot forces carry the robot's weight");
       check(std::fabs(acc_z - p.gravity) < 0.2, "accelerometer reads gravity standing");
     }
+    // ---- the last touch: a ball rolled away from the robot is untouched; rolled at its feet, touched
+    {
+      sim::World w(p, m, 1, 3);
+      std::vector<double> q = sim::stance_pose(m, p);
+      w.set_command(0, q.data(), nullptr, nullptr);
+      w.place_robot(0, 0, 0, 0);
+      w.place_ball(0.4, 0, 0.8, 0);
+      for (int k = 0; k < (int)std::lround(1.0 / p.period); k++) w.step();
+      check(w.ball_touch() == -1, "a ball rolled away: no touch");
+      w.place_ball(0.6, 0, -1.0, 0);
+      for (int k = 0; k < (int)std::lround(2.0 / p.period); k++) w.step();
+      printf("# ball rolled at the robot: touch %d at %.2f s (placed at %.2f s)\n", w.ball_touch(),
+             w.ball_touch_time(), w.time() - 2.0);
+      check(w.ball_touch() == 0 && w.ball_touch_time() > w.time() - 2.0, "a ball rolled at the feet: robot 0 touched it");
+      w.place_ball(1.0, 0);
+      check(w.ball_touch() == -1, "placing the ball forgets the touch");
+    }
     (void)angspeed;
   } catch (const std::exception &e) {
     check(false, e.what());
