@@ -13,11 +13,49 @@
 --    or the plan's own error does not wind it up. The larger of the two velocity errors (by
 --    magnitude, per axis) counts: the tilt rate reacts first to a tip, the accelerometer to a shove.
 -- The integral rests while the walk stands (no plan to compare with).
+--
+-- The activation (w.cp_gate, per axis 0..1): how much of the error the push recovery acts on (the
+-- capture feedback on the ankles and hips, the step adjustment's landing). Normal walking, turning
+-- and dribbling have an error too (the plan's own mismatch, the sensors'): on the OP3 |ey| < 0.03 m
+-- in 99% of the ticks it walks in the scoring scenario and < 0.042 m in 99.9%, while a push of
+-- 1.0-2.0 N s passes 0.05 m within 0.05-0.1 s (Tests/motion/capture_stats.py). The gate is 0 below
+-- `stepAdjust.activateFrom` (m, { x, y }), 1 beyond `activateFull`, smooth between; a body without
+-- them, or with activateFull 0 on an axis: 1 (the dead bands alone). With `activateHold` (s) > 0,
+-- once the error has reached activateFull the gate stays at least at 1 - (time since) / hold: the
+-- recovery's steps bring the error back into the band while the push is not yet caught.
 local sin, cos, abs = math.sin, math.cos, math.abs
 
 local M = {}
 
 local G = 9.81
+
+-- The activation for an error's magnitude a (m) between from and full (m): 0 at or below from, 1 at
+-- or beyond full, a smoothstep between (no jolt to the joints as the push grows).
+function M.activation(a, from, full)
+  if full <= 0 or a >= full then return 1 end
+  if a <= from then return 0 end
+  local u = (a - from) / (full - from)
+  return u * u * (3 - 2 * u)
+end
+
+-- w.cp_gate from w.cp_err and the config (w.cp_latch: the hold's share, per axis)
+local function gate(w, sa, e, dt)
+  local g = w.cp_gate or { 1, 1 }
+  w.cp_gate = g
+  local from, full = sa and rawget(sa, 'activateFrom'), sa and rawget(sa, 'activateFull')
+  if not from or not full then g[1], g[2] = 1, 1 return end
+  local hold = rawget(sa, 'activateHold') or 0
+  local l = w.cp_latch or { 0, 0 }
+  w.cp_latch = l
+  for i = 1, 2 do
+    local gi = M.activation(abs(e[i]), from[i], full[i])
+    if hold > 0 then
+      if gi >= 1 then l[i] = 1 else l[i] = math.max(0, l[i] - (dt or 0) / hold) end
+      if l[i] > gi then gi = l[i] end
+    end
+    g[i] = gi
+  end
+end
 
 -- Updates w.cp_err (and w.cp_vel: the accelerometer's velocity error) from sensors (angle, acc)
 -- and the gyro's rates (rad/s, torso frame) for one tick of dt s.
@@ -65,6 +103,7 @@ function M.update(w, sensors, gyro, dt)
   end
   e[1] = px + p.tZmp * vx
   e[2] = py + p.tZmp * vy
+  gate(w, sa, e, dt)
 end
 
 return M

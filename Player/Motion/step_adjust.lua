@@ -4,9 +4,9 @@
 -- plans it) is estimated every tick from the IMU (Player/Motion/capture.lua). A push moves it;
 -- the walk then catches itself with the next footstep, and with the step's timing where placement
 -- alone comes too late:
---  * landing: the swing foot lands gain x (e beyond the dead band) further (at most `max`, within
---    the step limits); while the foot is still travelling its landing point moves (the swing goes on
---    from where the foot is, no jump);
+--  * landing: the swing foot lands gain x (e beyond the dead band) x the activation (Motion.capture:
+--    0 for normal walking's errors) further (at most `max`, within the step limits); while the foot
+--    is still travelling its landing point moves (the swing goes on from where the foot is, no jump);
 --  * which foot: a sideways error beyond `switchError` at a step's start makes the foot on the side
 --    of the push the swing foot (support on the other), even twice in a row: stepping out with the
 --    other foot would cross the legs;
@@ -51,9 +51,10 @@ end
 -- The landing of swing pose `target` from support pose `sup` (LEFT/RIGHT swing by `left`) moved
 -- by the error, within the step limits; nil when the error is inside the dead band.
 local function landing(w, sa, sup, target, left)
-  local p, e = w.p, w.cp_err
-  local ox = clamp(sa.gain * beyond(e[1], sa.deadband[1]), -sa.max[1], sa.max[1])
-  local oy = clamp(sa.gain * beyond(e[2], sa.deadband[2]), -sa.max[2], sa.max[2])
+  local p, e, g = w.p, w.cp_err, w.cp_gate or { 1, 1 }
+  -- (times the activation: Motion.capture)
+  local ox = clamp(sa.gain * g[1] * beyond(e[1], sa.deadband[1]), -sa.max[1], sa.max[1])
+  local oy = clamp(sa.gain * g[2] * beyond(e[2], sa.deadband[2]), -sa.max[2], sa.max[2])
   -- below 5 mm a landing stays nominal: a small steady bias of the estimate (an IMU's offset) must
   -- not keep the feet from ever coming together for a stop
   if abs(ox) < 0.005 then ox = 0 end

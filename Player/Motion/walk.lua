@@ -652,12 +652,14 @@ function Walk:joint_angles(q, sensors, dt, support)
   -- there before the torso tips (feedback.capture and captureHip, rad per m: { roll, pitch };
   -- pushed left, the ZMP goes left); only while stepping (at stance the tilt's share of the error
   -- on the ankles rocked the standing OP3 until it crept away, 1.6 m in 60 s) and beyond the step
-  -- adjustment's dead band (the walk's own sway, on them, slowed the OP3's sideways walk by a third)
-  local kc, kh, e = rawget(fb, 'capture'), rawget(fb, 'captureHip'), self.cp_err
+  -- adjustment's dead band (the walk's own sway, on them, slowed the OP3's sideways walk by a third),
+  -- times the activation (Motion.capture: 0 for the errors of normal walking, 1 for a push's)
+  local kc, kh, e, ga = rawget(fb, 'capture'), rawget(fb, 'captureHip'), self.cp_err, self.cp_gate
   local thx, thy = 0, 0
   local sa = rawget(p, 'stepAdjust')
   if e and sa and not support and self.active then
     local ex, ey = deadband(e[1], sa.deadband[1]), deadband(e[2], sa.deadband[2])
+    if ga then ex, ey = ga[1] * ex, ga[2] * ey end
     if kc then tax, tay = tax - kc[1] * ey, tay + kc[2] * ex end
     if kh then thx, thy = -kh[1] * ey, kh[2] * ex end
   end

@@ -103,6 +103,92 @@ describe('capture point error', function()
     end
   end)
 
+  it('activates smoothly between activateFrom and activateFull', function()
+    assert.are.equal(0, capture.activation(0.02, 0.03, 0.05))
+    assert.are.equal(0, capture.activation(0.03, 0.03, 0.05))
+    assert.is_near(0.5, capture.activation(0.04, 0.03, 0.05), 1e-12)
+    assert.are.equal(1, capture.activation(0.05, 0.03, 0.05))
+    assert.are.equal(1, capture.activation(0.2, 0.03, 0.05))
+    assert.are.equal(1, capture.activation(0, 0, 0)) -- full 0: no gate
+    local last = 0
+    for i = 1, 99 do
+      local g = capture.activation(0.03 + 0.0002 * i, 0.03, 0.05)
+      assert.is_true(g > last and g < 1)
+      last = g
+    end
+    -- no step at either end: the slope is 0 there
+    assert.is_true(capture.activation(0.0301, 0.03, 0.05) < 1e-4)
+    assert.is_true(capture.activation(0.0499, 0.03, 0.05) > 1 - 1e-4)
+  end)
+
+  it('acts on the ankles and hips only beyond the errors of normal walking (the activation)', function()
+    local robot = fixture.robot
+    local ji = {}
+    for i, n in ipairs(robot.joints) do ji[n] = i end
+    -- walking, tipped left by `roll`, capture gains 2 (ankle) and 3 (hip): the joints' change from
+    -- the same walk without the gains
+    local function change(roll, from, full)
+      local function angles(kc, kh)
+        local w, p = walk(0)
+        p.stepAdjust.activateFrom, p.stepAdjust.activateFull = { 0, from }, { 0, full }
+        p.feedback.capture, p.feedback.captureHip = { kc, 0 }, { kh, 0 }
+        p.feedback.ankle, p.feedback.hip, p.feedback.tilt = { 0, 0 }, { 0, 0 }, { 0, 0 }
+        w:bind(robot)
+        w:start()
+        w:advance(dt)
+        local q = {}
+        for i = 1, #robot.joints do q[i] = 0 end
+        local s = sensors(p, 0, 0, -roll)
+        s.gyro, s.position = { 0, 0, 0 }, nil
+        w:joint_angles(q, s, dt)
+        return q, w
+      end
+      local q0 = angles(0, 0)
+      local q1, w = angles(2, 3)
+      local d = 0
+      for _, n in ipairs({ 'l_ank_roll', 'r_ank_roll', 'l_hip_roll', 'r_hip_roll' }) do
+        d = d + math.abs(q1[ji[n]] - q0[ji[n]])
+      end
+      return d, w.cp_err[2], w.cp_gate[2]
+    end
+    local h = params.tZmp * params.tZmp * G
+    local db = params.stepAdjust.deadband[2]
+    -- an error beyond the dead band but below activateFrom: nothing; without the gate: the terms
+    local roll = math.asin((db + 0.005) / h)
+    local d, e, g = change(roll, db + 0.01, db + 0.03)
+    assert.is_true(e > db and e < db + 0.01)
+    assert.are.equal(0, g)
+    assert.are.equal(0, d)
+    local d_on, _, g_on = change(roll, 0, 0)
+    assert.are.equal(1, g_on)
+    assert.is_true(d_on > 0.005)
+    -- half way between activateFrom and activateFull: half the terms
+    local half = change(roll, e - 0.001, e + 0.001)
+    assert.is_near(0.5 * d_on, half, 1e-9)
+  end)
+
+  it('holds the activation for activateHold after the error reached activateFull, fading', function()
+    local w, p = walk(0)
+    p.stepAdjust.activateFrom, p.stepAdjust.activateFull = { 0, 0.03 }, { 0, 0.05 }
+    local h = p.tZmp * p.tZmp * G
+    local big, small = -math.asin(0.06 / h), -math.asin(0.01 / h) -- errors of 0.06 and 0.01 m
+    -- without a hold the gate follows the error at once
+    p.stepAdjust.activateHold = 0
+    capture.update(w, sensors(p, 0, 0, big), { 0, 0, 0 }, dt)
+    assert.are.equal(1, w.cp_gate[2])
+    capture.update(w, sensors(p, 0, 0, small), { 0, 0, 0 }, dt)
+    assert.are.equal(0, w.cp_gate[2])
+    -- with a hold of 0.5 s: 1 - t / 0.5 after the push's error, 0 from then on
+    p.stepAdjust.activateHold = 0.5
+    capture.update(w, sensors(p, 0, 0, big), { 0, 0, 0 }, dt)
+    local n = math.floor(0.25 / dt + 0.5)
+    for _ = 1, n do capture.update(w, sensors(p, 0, 0, small), { 0, 0, 0 }, dt) end
+    assert.is_near(1 - n * dt / 0.5, w.cp_gate[2], 1e-9)
+    for _ = 1, n + 2 do capture.update(w, sensors(p, 0, 0, small), { 0, 0, 0 }, dt) end
+    assert.are.equal(0, w.cp_gate[2])
+    assert.are.equal(1, w.cp_gate[1]) -- x: activateFull 0, no gate
+  end)
+
   it('rests while the walk stands', function()
     local w, p = walk(0.6)
     for _ = 1, 50 do capture.update(w, sensors(p, 0, 3), { 0, 0, 0 }, dt) end

@@ -396,7 +396,10 @@ function scenarios.pushmax(label, dir)
       Motion.request('walk')
       Walk.set_velocity(v, 0, 0)
       wait(3 + k * Walk.get('tStep') / 2)
-      if ks.push_falls(Sim, Motion, wait_until, dir, f) then return false end
+      if ks.push_falls(Sim, Motion, wait_until, dir, f) then
+        note('pushmax: %.1f N x 0.1 s fell at moment %d (%d x tStep / 2 into the gait)', f, k, k)
+        return false
+      end
     end
     return true
   end

@@ -41,6 +41,18 @@ describe('step adjustment', function()
     assert.is_near(p.stepLimitY[2], rel_y(w, true), 1e-6)
   end)
 
+  it('keeps the landing nominal while the activation is 0 (the errors of normal walking)', function()
+    local w = walking(true)
+    local nominal = rel_y(w, true)
+    w.cp_err[2], w.cp_gate = 0.05, { 1, 0 }
+    for _ = 1, 10 do w:advance(dt) end
+    assert.is_near(nominal, rel_y(w, true), 1e-9)
+    -- half on: half the move
+    w.cp_gate[2] = 0.5
+    for _ = 1, 2 do w:advance(dt) end
+    assert.is_near(nominal + 0.015, rel_y(w, true), 1e-6)
+  end)
+
   it('moves the landing without a jump of the swing foot', function()
     local w = walking(true)
     for _ = 1, 10 do w:advance(dt) end

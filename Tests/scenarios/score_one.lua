@@ -77,8 +77,24 @@ local function log_step()
   end
 end
 if trace then trace:write('# t x y yaw bx by fallen px py pyaw wbx wby ball_age body motion confidence head\n') end
+-- optional capture log ($CAPTURE_LOG): the walk's capture point error every motion tick, to see
+-- what normal play gives (Tests/motion/capture_stats.py): t ex ey walking motion-state
+local cap_path = os.getenv('CAPTURE_LOG') or ''
+local cap = cap_path ~= '' and assert(io.open(cap_path, 'w'))
+local motion = cap and shm.open('motion')
+local period = cap and require('Config').load('robot').period
+local function wait_quarter()
+  if not cap then return wait(0.25) end
+  local t1 = Body.get_time() + 0.25
+  while Body.get_time() < t1 - 1e-6 do
+    wait(period)
+    cap:write(string.format('%.3f %.4f %.4f %d %d\n', Body.get_time() - t0, motion.capture_error[0],
+      motion.capture_error[1], motion.walking[0], motion.state[0]))
+  end
+end
+if cap then cap:write('# t ex ey walking state\n') end
 while Body.get_time() - t0 < limit do
-  wait(0.25)
+  wait_quarter()
   log_step()
   local plus, minus = Sim.score()
   if plus > plus0 then goal = true break end
@@ -95,3 +111,4 @@ local T = Sim.truth()
 print(string.format('result seed=%d goal=%d time=%.2f own=%d robot=(%.2f,%.2f) ball=(%.2f,%.2f) fallen=%s',
   seed, goal and 1 or 0, Body.get_time() - t0, own and 1 or 0, T.x, T.y, T.ball.x, T.ball.y, tostring(T.fallen)))
 if trace then trace:close() end
+if cap then cap:close() end

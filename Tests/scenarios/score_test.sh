@@ -6,9 +6,10 @@
 # still scores. Each run leaves a trace (truth, world model, states, post sightings) in
 # build/test-logs/scenarios/trace_SEED.txt; Tests/scenarios/plot_paths.py draws them to PNG.
 #   Tests/scenarios/score_test.sh [SEEDS...]        (default 1..10)
-# env: SCORE_LIMIT (s), SCORE_NEED (goals needed per 10 runs, default 9), SKIP_KILL=1, SCORE_LOGDIR, SCORE_BEHAVIOR=FILE (run FILE as the behavior
-# process: Tests/bench/score_given_pose.sh, Tests/scenarios/behavior_record.lua), ROBOT_ID (the
-# runs use ROBOT_ID+1.. and ROBOT_ID+50)
+# env: SCORE_LIMIT (s), SCORE_NEED (goals needed per 10 runs, default 9), SKIP_KILL=1, SCORE_LOGDIR,
+# CAPTURE_LOGS=1 (each run also logs the walk's capture point error per tick: capture_SEED.txt),
+# SCORE_BEHAVIOR=FILE (run FILE as the behavior process: Tests/bench/score_given_pose.sh,
+# Tests/scenarios/behavior_record.lua), ROBOT_ID (the runs use ROBOT_ID+1.. and ROBOT_ID+50)
 # TAP output; logs in build/test-logs/scenarios/.
 set -u
 cd "$(dirname "$0")/../.."
@@ -44,7 +45,8 @@ run_one() {
     [ -n "$tick" ] && [ "$tick" != 0 ] && break
     sleep 0.1
   done
-  ROBOT_ID=$id MAIN_LOG="$mainlog" TRUTH_LOG="$LOGDIR/trace_$tag.txt" timeout 900 \
+  ROBOT_ID=$id MAIN_LOG="$mainlog" TRUTH_LOG="$LOGDIR/trace_$tag.txt" \
+    CAPTURE_LOG="${CAPTURE_LOGS:+$LOGDIR/capture_$tag.txt}" timeout 900 \
     ./run_repl Tests/scenarios/score_one.lua "$seed" "$LIMIT" $kill_at >"$LOGDIR/run_$tag.log" 2>&1
   kill -TERM "$main_pid" 2>/dev/null
   wait "$main_pid" 2>/dev/null
