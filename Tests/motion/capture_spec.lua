@@ -67,6 +67,26 @@ describe('capture point error', function()
     assert.is_true(math.abs(w.cp_err[2]) < 0.01 * 0.5 * p.tZmp)
   end)
 
+  -- One step of a walk (standing: not started) tipped left by `roll`, with capture gains kc (ankle)
+  -- and kh (hip) and only those feedback terms, `gate` the stepAdjust keys to set: the joint angles
+  -- and the walk.
+  local function capture_angles(kc, kh, roll, stand, gate)
+    local robot = fixture.robot
+    local w, p = walk(0)
+    for k, v in pairs(gate or {}) do p.stepAdjust[k] = v end
+    p.feedback.capture, p.feedback.captureHip = { kc, 0 }, { kh, 0 }
+    p.feedback.ankle, p.feedback.hip, p.feedback.tilt = { 0, 0 }, { 0, 0 }, { 0, 0 }
+    w:bind(robot)
+    if not stand then w:start() end
+    w:advance(dt)
+    local q = {}
+    for i = 1, #robot.joints do q[i] = 0 end
+    local s = sensors(p, 0, 0, -roll)
+    s.gyro, s.position = { 0, 0, 0 }, nil
+    w:joint_angles(q, s, dt)
+    return q, w
+  end
+
   it('turns the ankles and hips against it (feedback.capture, captureHip)', function()
     local robot = fixture.robot
     local ji = {}
@@ -74,17 +94,7 @@ describe('capture point error', function()
     -- walking, tipped left by 0.2 rad: the capture point's error is +y, beyond the dead band; the
     -- same sensors with and without the gains (standing: none)
     local function angles(kc, kh, stand)
-      local w, p = walk(0)
-      p.feedback.capture, p.feedback.captureHip = { kc, 0 }, { kh, 0 }
-      p.feedback.ankle, p.feedback.hip, p.feedback.tilt = { 0, 0 }, { 0, 0 }, { 0, 0 }
-      w:bind(robot)
-      if not stand then w:start() end
-      w:advance(dt)
-      local q = {}
-      for i = 1, #robot.joints do q[i] = 0 end
-      local s = sensors(p, 0, 0, -0.2)
-      s.gyro, s.position = { 0, 0, 0 }, nil
-      w:joint_angles(q, s, dt)
+      local q, w = capture_angles(kc, kh, 0.2, stand)
       return q, w.cp_err[2], w.support == Walk.LEFT and 'l_' or 'r_'
     end
     local q0, e, sup = angles(0, 0)
@@ -128,23 +138,9 @@ describe('capture point error', function()
     -- walking, tipped left by `roll`, capture gains 2 (ankle) and 3 (hip): the joints' change from
     -- the same walk without the gains
     local function change(roll, from, full)
-      local function angles(kc, kh)
-        local w, p = walk(0)
-        p.stepAdjust.activateFrom, p.stepAdjust.activateFull = { 0, from }, { 0, full }
-        p.feedback.capture, p.feedback.captureHip = { kc, 0 }, { kh, 0 }
-        p.feedback.ankle, p.feedback.hip, p.feedback.tilt = { 0, 0 }, { 0, 0 }, { 0, 0 }
-        w:bind(robot)
-        w:start()
-        w:advance(dt)
-        local q = {}
-        for i = 1, #robot.joints do q[i] = 0 end
-        local s = sensors(p, 0, 0, -roll)
-        s.gyro, s.position = { 0, 0, 0 }, nil
-        w:joint_angles(q, s, dt)
-        return q, w
-      end
-      local q0 = angles(0, 0)
-      local q1, w = angles(2, 3)
+      local gate = { activateFrom = { 0, from }, activateFull = { 0, full } }
+      local q0 = capture_angles(0, 0, roll, false, gate)
+      local q1, w = capture_angles(2, 3, roll, false, gate)
       local d = 0
       for _, n in ipairs({ 'l_ank_roll', 'r_ank_roll', 'l_hip_roll', 'r_hip_roll' }) do
         d = d + math.abs(q1[ji[n]] - q0[ji[n]])
