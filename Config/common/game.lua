@@ -57,6 +57,8 @@ return {
     turn_speed = 0.5,
     striker_margin = 1.5,      -- s: the striker keeps the ball until another is this much faster
     keeper_depth = 0.5,        -- m out from the own goal's centre towards the ball
+    keeper_min_depth = 0.3,    -- m: the goalkeeper's place never nearer its goal line (a ball lying on the
+                               -- line walked into: an own goal in the session-10 league, seed 11)
     keeper_clear = 1.5,        -- m: a ball this near the own goal's centre: the goalkeeper clears it
                                -- (when it is first to it; the striker then waits upfield:)
     receive_ahead = 1.5,       -- m upfield of the ball ...

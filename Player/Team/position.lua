@@ -24,8 +24,10 @@ function M.target(role, ball, cfg, field, clearing)
     if not ball then return gx + cfg.keeper_depth, 0 end
     local dx, dy = ball[1] - gx, ball[2]
     local d = sqrt(dx * dx + dy * dy)
-    -- on the line from the goal's centre to the ball, keeper_depth out, within the goal's width
-    return gx + cfg.keeper_depth * dx / d, clamp(cfg.keeper_depth * dy / d, -field.goal_width / 2, field.goal_width / 2)
+    -- on the line from the goal's centre to the ball, keeper_depth out, within the goal's width; never
+    -- nearer the goal line than keeper_min_depth (a ball on the line: beside it, not walking into it)
+    return gx + math.max(cfg.keeper_min_depth, cfg.keeper_depth * dx / d),
+      clamp(cfg.keeper_depth * dy / d, -field.goal_width / 2, field.goal_width / 2)
   end
   if role == 'defender' then
     if not ball then return gx + cfg.defender_home, 0 end

@@ -97,6 +97,12 @@ describe('roles', function()
     assert.is_true(x > GOAL_X and x < GOAL_X + rc.keeper_depth + 1e-9)
     assert.is_true(y > 0 and y <= field.goal_width / 2)
     assert.is_nil(position.target('goalkeeper', { GOAL_X + 0.5, 0.2 }, rc, field, true)) -- clears a near ball
+    -- a ball lying on the goal line beside the goal's centre, or behind it: the goalkeeper's place stays
+    -- keeper_min_depth in front of the line (not on the line, into the ball)
+    for _, b in ipairs({ { GOAL_X + 0.03, 0.31 }, { GOAL_X - 0.2, 0.5 }, { GOAL_X, -1.0 } }) do
+      x = position.target('goalkeeper', b, rc, field)
+      assert.is_near(GOAL_X + rc.keeper_min_depth, x, 1e-9)
+    end
     assert.is_nil(position.target('striker', ball, rc, field))
     x, y = position.target('defender', { 2.0, 1.0 }, rc, field)
     assert.is_true(x <= rc.defender_max_x and x > GOAL_X and y > 0 and y < 1.0)
