@@ -121,8 +121,7 @@ def main():
     cols = 2
     while len(panels) % cols:
         panels.append(np.full_like(panels[0], 255))
-    grid = np.vstack([np.hstack(panels[r:r + cols] + [np.full((pp.H, 4, 3), 255, np.uint8)] * 0)
-                      for r in range(0, len(panels), cols)])
+    grid = np.vstack([np.hstack(panels[r:r + cols]) for r in range(0, len(panels), cols)])
     out = path.rsplit('.', 1)[0] + '.png'
     pp.write_png(out, grid)
     print(out)
