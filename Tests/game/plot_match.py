@@ -117,7 +117,9 @@ def main():
     dt = np.diff(t, prepend=t[0])
     clock = np.cumsum(dt * play)
     k = (clock // span).astype(int)
-    panels = [panel(a, n, play & (k == j)) for j in range(k[play].max() + 1)] if play.any() else []
+    # (a last panel of a row or two, the play clock's final tick, is left out)
+    panels = [panel(a, n, play & (k == j)) for j in range(k[play].max() + 1)
+              if (play & (k == j)).sum() >= 2] if play.any() else []
     cols = 2
     while len(panels) % cols:
         panels.append(np.full_like(panels[0], 255))
