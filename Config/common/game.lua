@@ -53,6 +53,8 @@ return {
     enabled = true,            -- false: every robot plays the ball alone
     goalkeeper = 0,            -- player number of the goalkeeper without a GameController (0: none;
                                -- with one, its goalKeeper flag decides)
+    keeper_team = 3,           -- robots playing from which the goalkeeper keeps goal (fewer: striker and
+                               -- defender; 2v2 with a goalkeeper lost the session-10 league 2/10/8)
     walk_speed = 0.2,          -- m/s and rad/s a robot is assumed to walk and turn at (time to the ball)
     turn_speed = 0.5,
     striker_margin = 1.5,      -- s: the striker keeps the ball until another is this much faster

@@ -1,13 +1,16 @@
 -- Roles from the shared estimates (Player/Team/team.lua): every robot computes the whole team's
 -- assignment from the same data, so the robots agree without sending roles (the league's message
 -- has no field for them). Among the robots playing (heard within lost_after, not penalised):
---   goalkeeper  the GameController's (or the site's) goalkeeper; if it is lost, the robot nearest
---               the own goal takes over, once two others remain to play
+--   goalkeeper  the GameController's (or the site's) goalkeeper, once the team playing has
+--               `keeper_team` robots (fewer: it plays in the field); if it is lost, the robot
+--               nearest the own goal takes over
 --   striker     the one that reaches the ball first (distance / speed plus the turn); the current
 --               striker keeps the role until another is faster by `striker_margin` s
 --   defender    the one nearest the own goal among the rest
 --   supporter   everyone else
--- A robot alone is the striker (or the goalkeeper, if it is the designated one and others play).
+-- A robot alone is the striker. Two (keeper_team = 3) are a striker and a defender: in the session-10
+-- league a goalkeeper of two lost to two lone strikers, and left the field from its poor pose belief
+-- near the goal line.
 -- A ball within keeper_clear of the own goal's centre is the goalkeeper's to clear when it reaches
 -- it first (the striker's margin kept while it clears); the striker then waits upfield for the
 -- clearance (Team/position.lua) instead of both going for the ball and blocking each other.
@@ -58,11 +61,9 @@ function M.assign(me, mates, cfg, ball, own_goal_x, previous, was_clearing)
   local out = {}
   -- the goalkeeper
   local keeper
-  for _, r in ipairs(team) do if r.player == cfg.goalkeeper then keeper = r end end
-  if not keeper and cfg.goalkeeper ~= 0 and #team >= 3 then
-    keeper = pick(team, function(r) return goal_distance(r, own_goal_x) end)
-  end
-  if keeper and #team >= 2 then
+  if cfg.goalkeeper ~= 0 and #team >= cfg.keeper_team then
+    for _, r in ipairs(team) do if r.player == cfg.goalkeeper then keeper = r end end
+    keeper = keeper or pick(team, function(r) return goal_distance(r, own_goal_x) end)
     out[keeper.player] = 'goalkeeper'
     remove(team, keeper)
   end
@@ -74,7 +75,7 @@ function M.assign(me, mates, cfg, ball, own_goal_x, previous, was_clearing)
   end
   local striker = pick(team, t_ball)
   local clearing = false
-  if keeper and out[keeper.player] and ball and goal_distance({ pose = ball }, own_goal_x) < cfg.keeper_clear then
+  if keeper and ball and goal_distance({ pose = ball }, own_goal_x) < cfg.keeper_clear then
     local tk = M.time_to_ball(keeper, ball, cfg) - (was_clearing and cfg.striker_margin or 0)
     clearing = not striker or tk < M.time_to_ball(striker, ball, cfg)
   end

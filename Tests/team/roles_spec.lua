@@ -12,7 +12,9 @@ local Config = require('Config')
 local rules = Config.load('game')
 local field = Config.load('behavior').world.field
 local GOAL_X = -field.length / 2
-local function cfg(keeper) return setmetatable({ goalkeeper = keeper or 0 }, { __index = rules.roles }) end
+local function cfg(keeper, keeper_team)
+  return setmetatable({ goalkeeper = keeper or 0, keeper_team = keeper_team }, { __index = rules.roles })
+end
 local function r(player, x, y, a) return { player = player, pose = { x, y, a or 0 } } end
 
 describe('roles', function()
@@ -44,6 +46,19 @@ describe('roles', function()
     assert.are.same({ [2] = 'striker', [4] = 'defender' }, all)
   end)
 
+  it('two robots are a striker and a defender, the designated goalkeeper among them (keeper_team 3)', function()
+    assert.are.equal(3, rules.roles.keeper_team)
+    local role, all = roles.assign(r(1, -4.2, 0), { team[1] }, cfg(1), ball, GOAL_X)
+    assert.are.equal('defender', role)
+    assert.are.same({ [1] = 'defender', [2] = 'striker' }, all)
+    -- the designated goalkeeper nearer the ball strikes
+    all = select(2, roles.assign(r(1, 0.8, 0), { team[3] }, cfg(1), ball, GOAL_X))
+    assert.are.same({ [1] = 'striker', [4] = 'defender' }, all)
+    -- a third robot back: the goalkeeper keeps goal again
+    all = select(2, roles.assign(r(1, 0.8, 0), { team[3], team[1] }, cfg(1), ball, GOAL_X))
+    assert.are.equal('goalkeeper', all[1])
+  end)
+
   it('a robot alone strikes, even the designated goalkeeper; penalised teammates do not count', function()
     assert.are.equal('striker', (roles.assign(r(1, -4.2, 0), {}, cfg(1), ball, GOAL_X)))
     local pen = r(2, 0.2, 0.1)
@@ -62,22 +77,23 @@ describe('roles', function()
   end)
 
   it('the goalkeeper clears a ball near its goal only when first to it; the striker then waits upfield', function()
+    -- a goalkeeper in a team of two (keeper_team 2: the rule, whatever the team size)
     local rc = rules.roles
     local near = { GOAL_X + 1.0, 0.4 }
     local keeper, chaser = r(1, GOAL_X + 0.5, 0, 0), r(2, GOAL_X + 2.5, 0.4, math.pi)
-    local role, all, clearing = roles.assign(keeper, { chaser }, cfg(1), near, GOAL_X)
+    local role, all, clearing = roles.assign(keeper, { chaser }, cfg(1, 2), near, GOAL_X)
     assert.are.equal('goalkeeper', role)
     assert.are.same({ [1] = 'goalkeeper', [2] = 'striker' }, all)
     assert.is_true(clearing)
     -- the teammate computes the same
-    assert.is_true(select(3, roles.assign(chaser, { keeper }, cfg(1), near, GOAL_X, 'striker')))
+    assert.is_true(select(3, roles.assign(chaser, { keeper }, cfg(1, 2), near, GOAL_X, 'striker')))
     assert.is_nil(position.target('goalkeeper', near, rc, field, true))
     local x, y = position.target('striker', near, rc, field, true)
     assert.are.equal(near[1] + rc.receive_ahead, x)
     assert.is_true(math.abs(y) < near[2])
     -- the striker at the ball, the goalkeeper further: the goalkeeper keeps its place
     local at_ball = r(2, GOAL_X + 1.1, 0.4, math.pi)
-    clearing = select(3, roles.assign(keeper, { at_ball }, cfg(1), near, GOAL_X))
+    clearing = select(3, roles.assign(keeper, { at_ball }, cfg(1, 2), near, GOAL_X))
     assert.is_false(clearing)
     assert.is_not_nil(position.target('goalkeeper', near, rc, field, false))
     assert.is_nil(position.target('striker', near, rc, field, false))
@@ -85,9 +101,9 @@ describe('roles', function()
     local a_bit = r(2, GOAL_X + 1.0 + 0.5 * rc.striker_margin * rc.walk_speed + 0.5, 0.4, math.pi)
     local tk = roles.time_to_ball(keeper, near, rc)
     assert.is_true(roles.time_to_ball(a_bit, near, rc) < tk, 'the teammate is faster')
-    assert.is_true(select(3, roles.assign(keeper, { a_bit }, cfg(1), near, GOAL_X, 'goalkeeper', true)))
+    assert.is_true(select(3, roles.assign(keeper, { a_bit }, cfg(1, 2), near, GOAL_X, 'goalkeeper', true)))
     -- a ball far from the goal is never the goalkeeper's
-    clearing = select(3, roles.assign(keeper, { chaser }, cfg(1), { 0, 0 }, GOAL_X))
+    clearing = select(3, roles.assign(keeper, { chaser }, cfg(1, 2), { 0, 0 }, GOAL_X))
     assert.is_false(clearing)
   end)
 
