@@ -8,6 +8,7 @@
 --   local mlp = assert(balldetect.load_model('Config/common/ball_white.mlp'))
 --   local p = bd:classify(mlp, yuyv, 640, 480, bd.cand[0])      -- probability 0..1 (also in cand.prob)
 --   bd:settle(labels, wl, hl, 2, 8, 0.07, bd.cand[0])    -- the ball chosen: its centre settled
+--   bd:fit(labels, wl, hl, 2, 8, 0.07, u0, v0, bd.cand[0])  -- then fitted to its outline (u0, v0: before settle)
 --   local n = bd:obstacles(labels, wl, hl, cfg)          -- bd.obst[0 .. n-1]: x0, x1, top, foot, red, blue, fx0, fx1
 -- Nothing on the per-frame path allocates.
 local ffi = require('ffi')
@@ -34,6 +35,8 @@ int bd_candidates(bd *w, const uint8_t *labels, int wl, int hl, int scale, uint8
                   double max_ring, double min_radius_px, bd_candidate *out, int maxn);
 int bd_settle(const uint8_t *labels, int wl, int hl, int scale, uint8_t green, const int16_t *top, const bd_view *view,
               double ball_r, bd_candidate *c);
+int bd_fit(const uint8_t *labels, int wl, int hl, int scale, uint8_t green, const int16_t *top, const bd_view *view,
+           double ball_r, double u0, double v0, bd_candidate *c);
 int bd_features(const uint8_t *yuyv, int width, int height, double u, double v, double radius,
                 double margin, float *out);
 bd_mlp *bd_mlp_load(const char *path, char *err, size_t errlen);
@@ -105,6 +108,14 @@ function Bd:settle(labels, wl, hl, scale, green, ball_r, c)
   if C.bd_settle(labels, wl, hl, scale, green, self.top, self.view, ball_r, c) < 0 then
     error('balldetect: bad arguments to bd_settle', 2)
   end
+end
+
+-- The centre of the ball chosen from its outline (bd_fit), tried from its centre and from (u0, v0)
+-- (before settle); returns the outline points on the fitted circle, 0 when it was left as it was.
+function Bd:fit(labels, wl, hl, scale, green, ball_r, u0, v0, c)
+  local n = C.bd_fit(labels, wl, hl, scale, green, self.top, self.view, ball_r, u0, v0, c)
+  if n < 0 then error('balldetect: bad arguments to bd_fit', 2) end
+  return n
 end
 
 -- The features of a candidate (into self.feat) at the model's margin.

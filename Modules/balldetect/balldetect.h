@@ -80,6 +80,19 @@ int bd_candidates(bd *w, const uint8_t *labels, int wl, int hl, int scale, uint8
 int bd_settle(const uint8_t *labels, int wl, int hl, int scale, uint8_t green, const int16_t *top, const bd_view *view,
               double ball_r, bd_candidate *c);
 
+/* The chosen ball's centre from its outline (fit.c): rays from a start find where its region meets
+ * the field (none counted that run past 1.5 radii into a line touching the ball, out of the image or
+ * beyond the field boundary); a circle swept along the view's blur, its radius loosely held to the
+ * expected one, fitted to those points with weights that leave out the few ending on a line's far edge;
+ * the rays cast again from its centre until it stays. Tried from c's centre (settled) and from
+ * (u0, v0) (the centre before bd_settle, whose passes may have climbed into a line touching the ball);
+ * a fit passes with at least a quarter of the rays on its circle, no gap over half a turn between
+ * them and a radius within a quarter of the expected one. The passing fit with more points on its
+ * circle moves c's centre (and its radius to the expected one there); returns their count, 0 when
+ * no fit passed (c left as it was; a ball under 3 labels across is never fitted), BD_EARG. */
+int bd_fit(const uint8_t *labels, int wl, int hl, int scale, uint8_t green, const int16_t *top, const bd_view *view,
+           double ball_r, double u0, double v0, bd_candidate *c);
+
 /* Features of a square patch of side 2 * margin * radius around (u, v) in a YUYV frame:
  * BD_GRID x BD_GRID luma cells (mean over up to 3 x 3 samples each), normalised to zero mean and
  * unit spread, then BD_CGRID x BD_CGRID cells of U - 128 and of V - 128 over 32, then BD_NLEVEL

@@ -32,8 +32,11 @@ function M.ball(bd, mlp, p, cm, pose, frame, cfg, out)
     if pr >= best_p then best, best_p = c, pr end
   end
   if not best then refuse('classifier: candidates, best probability', n, top_p); return out end
-  -- its centre settled (a near ball's is still off after the candidates' two centroid passes)
+  -- its centre settled (a near ball's is still off after the candidates' two centroid passes), then
+  -- from its outline: the centroid takes in a line touching the ball, the outline leaves it out
+  local u0, v0 = best.u, best.v
   bd:settle(p.labels, p.wa, p.ha, p.scale, w.green, radius, best)
+  bd:fit(p.labels, p.wa, p.ha, p.scale, w.green, radius, u0, v0, best)
   local x, y, dist = project.to_ground(cm, pose, best.u, best.v, radius)
   if not x then refuse('above the horizon', best.v); return out end
   if dist > cfg.max_range then refuse('range', dist); return out end
