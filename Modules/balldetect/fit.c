@@ -19,8 +19,11 @@ typedef struct fit_state {
   int n;
 } fit_state;
 
+/* field and nothing else: the colour table gives some labels two colours (the shaded side of a
+ * white ball is also light green), and those are no edge */
 static int is_field(const uint8_t *labels, int wl, int x, int y, uint8_t green) {
-  return (labels[(size_t)y * wl + x] & green) != 0;
+  const uint8_t l = labels[(size_t)y * wl + x];
+  return (l & green) != 0 && (l & ~green) == 0;
 }
 
 /* the edge points seen from (cx, cy), rays up to rmax labels; returns their count */
@@ -35,9 +38,14 @@ static int cast(const uint8_t *labels, int wl, int hl, uint8_t green, const int1
       const int ix = (int)x, iy = (int)y;
       if (iy < top[ix]) break;                           /* beyond the field: unknown */
       if (!is_field(labels, wl, ix, iy, green)) continue;
-      /* field here and a label further on (one stray field label inside the ball is no edge) */
-      const double x2 = x + dx, y2 = y + dy;
-      if (x2 >= 0 && y2 >= 0 && x2 < wl && y2 < hl && !is_field(labels, wl, (int)x2, (int)y2, green)) continue;
+      /* field here and one and two labels further on (stray field labels inside the ball, sensor noise
+       * in its shade, are no edge) */
+      int more = 1;
+      for (int j = 1; j <= 2 && more; j++) {
+        const double x2 = x + j * dx, y2 = y + j * dy;
+        more = !(x2 >= 0 && y2 >= 0 && x2 < wl && y2 < hl) || is_field(labels, wl, (int)x2, (int)y2, green);
+      }
+      if (!more) continue;
       /* between the last not-field sample and this one */
       s->px[s->n] = cx + (t - 0.25) * dx;
       s->py[s->n] = cy + (t - 0.25) * dy;
@@ -48,20 +56,37 @@ static int cast(const uint8_t *labels, int wl, int hl, uint8_t green, const int1
   return s->n;
 }
 
-/* distance from p to the segment c -+ h, and the unit vector from its nearest point to p */
-static double seg_dist(double px, double py, double cx, double cy, double hx, double hy, double *ux, double *uy) {
-  double dx = px - cx, dy = py - cy;
-  const double h2 = hx * hx + hy * hy;
+/* The ball's outline at centre pixel (u, v) (labels): the angle (rad) from the ray through it to the
+ * sphere's tangent cone's edge, the cone of half angle asin(r / distance) around the ray to the centre
+ * on the plane of ball centres (an ellipse off the optical axis, and not centred on the centre's
+ * pixel: a circle is neither). The point is first moved back along the blur by as much as the smear
+ * moved it (the segment centre -+ h: its nearest point's offset); returns 0 above the horizon. */
+typedef struct sphere_model {
+  const bd_view *view;
+  double sc, r, hx, hy;
+} sphere_model;
+
+static int cone_angle(const sphere_model *m, double u, double v, double px, double py, double *ang) {
+  const bd_view *vw = m->view;
+  const double uf = u * m->sc, vf = v * m->sc;
+  const double b = -(uf - vw->cx) / vw->f, c = -(vf - vw->cy) / vw->f;
+  const double *R = vw->R;
+  const double dz = R[6] + R[7] * b + R[8] * c, drop = vw->height - m->r;
+  if (dz >= -1e-6 || drop <= 0) return 0;
+  const double n2 = 1 + b * b + c * c, dist = drop / -dz * sqrt(n2);
+  if (dist <= m->r) return 0;
+  double dx = px - u, dy = py - v;
+  const double h2 = m->hx * m->hx + m->hy * m->hy;
   if (h2 > 0) {
-    double t = (dx * hx + dy * hy) / h2;
+    double t = (dx * m->hx + dy * m->hy) / h2;
     t = t < -1 ? -1 : (t > 1 ? 1 : t);
-    dx -= t * hx;
-    dy -= t * hy;
+    px -= t * m->hx;
+    py -= t * m->hy;
   }
-  const double d = sqrt(dx * dx + dy * dy);
-  *ux = d > 1e-9 ? dx / d : 0;
-  *uy = d > 1e-9 ? dy / d : 0;
-  return d;
+  const double pb = -(px * m->sc - vw->cx) / vw->f, pc = -(py * m->sc - vw->cy) / vw->f;
+  const double cosang = (1 + b * pb + c * pc) / sqrt(n2 * (1 + pb * pb + pc * pc));
+  *ang = acos(cosang > 1 ? 1 : cosang) - asin(m->r / dist);
+  return 1;
 }
 
 static int by_value(const void *a, const void *b) {
@@ -69,34 +94,44 @@ static int by_value(const void *a, const void *b) {
   return x < y ? -1 : (x > y ? 1 : 0);
 }
 
-/* Fits centre (x, y) and radius rho to the points: Gauss-Newton with Cauchy weights (scale from the
- * residuals' median), a weak pull of rho toward r0 (an arc alone leaves the radius loose). Returns
- * the points within the inlier band, and the largest angle (rad) between neighbouring inliers seen
- * from the centre in *gap. */
-static int fit_circle(const fit_state *s, double hx, double hy, double r0, double *x, double *y, double *rho,
+/* residuals (labels: the angles times f / scale, less the outline's offset d) at centre (u, v) */
+static int residuals(const sphere_model *m, const fit_state *s, double u, double v, double d, double *e) {
+  const double k = m->view->f / m->sc;
+  for (int i = 0; i < s->n; i++) {
+    double a;
+    if (!cone_angle(m, u, v, s->px[i], s->py[i], &a)) return 0;
+    e[i] = k * a - d;
+  }
+  return 1;
+}
+
+/* Fits the centre pixel (u, v) and the outline's offset d (labels: how much larger the region's
+ * outline is than the sphere's; held loosely to 0, an arc alone leaves it loose) to the points:
+ * Gauss-Newton with Cauchy weights (scale from the residuals' median). Returns the points within the
+ * inlier band (0: no fit), and the largest angle (rad) between neighbouring inliers seen from the
+ * centre in *gap. */
+static int fit_sphere(const sphere_model *m, const fit_state *s, double r0, double *u, double *v, double *d,
                       double *gap) {
-  double e[NRAY], ae[NRAY];
+  double e[NRAY], eu[NRAY], ev[NRAY], ae[NRAY];
   double scale = 1;
+  const double eps = 0.01;
   for (int it = 0; it < 12; it++) {
-    for (int i = 0; i < s->n; i++) {
-      double ux, uy;
-      e[i] = seg_dist(s->px[i], s->py[i], *x, *y, hx, hy, &ux, &uy) - *rho;
-      ae[i] = fabs(e[i]);
-    }
+    if (!residuals(m, s, *u, *v, *d, e) || !residuals(m, s, *u + eps, *v, *d, eu) ||
+        !residuals(m, s, *u, *v + eps, *d, ev))
+      return 0;
+    for (int i = 0; i < s->n; i++) ae[i] = fabs(e[i]);
     qsort(ae, (size_t)s->n, sizeof(double), by_value);
     scale = 1.4826 * ae[s->n / 2];
     if (scale < 0.5) scale = 0.5;   /* labels: the outline's own quantisation */
     double A[3][3] = {{0}}, b[3] = {0};
-    const double wp = 1;   /* the pull toward r0: one point's worth */
+    const double wp = 1;   /* the pull of d toward 0: one point's worth */
     A[2][2] += wp;
-    b[2] -= wp * (*rho - r0);
+    b[2] -= wp * *d;
     for (int i = 0; i < s->n; i++) {
-      double ux, uy;
-      seg_dist(s->px[i], s->py[i], *x, *y, hx, hy, &ux, &uy);
       /* a region touching the ball only takes its outline further out, never nearer: a point beyond
-       * the circle is three times as suspect as one inside it */
+       * the outline is three times as suspect as one inside it */
       const double q = (e[i] > 0 ? 3 : 1) * e[i] / (2.4 * scale), w = 1 / (1 + q * q);
-      const double J[3] = {-ux, -uy, -1};
+      const double J[3] = {(eu[i] - e[i]) / eps, (ev[i] - e[i]) / eps, -1};
       for (int r = 0; r < 3; r++) {
         for (int c = 0; c < 3; c++) A[r][c] += w * J[r] * J[c];
         b[r] -= w * J[r] * e[i];
@@ -107,28 +142,28 @@ static int fit_circle(const fit_state *s, double hx, double hy, double r0, doubl
                        A[0][1] * (A[1][0] * A[2][2] - A[1][2] * A[2][0]) +
                        A[0][2] * (A[1][0] * A[2][1] - A[1][1] * A[2][0]);
     if (fabs(det) < 1e-12) return 0;
-    double d[3];
+    double dl[3];
     for (int k = 0; k < 3; k++) {
       double M[3][3];
       memcpy(M, A, sizeof M);
       for (int r = 0; r < 3; r++) M[r][k] = b[r];
-      d[k] = (M[0][0] * (M[1][1] * M[2][2] - M[1][2] * M[2][1]) - M[0][1] * (M[1][0] * M[2][2] - M[1][2] * M[2][0]) +
-              M[0][2] * (M[1][0] * M[2][1] - M[1][1] * M[2][0])) / det;
+      dl[k] = (M[0][0] * (M[1][1] * M[2][2] - M[1][2] * M[2][1]) - M[0][1] * (M[1][0] * M[2][2] - M[1][2] * M[2][0]) +
+               M[0][2] * (M[1][0] * M[2][1] - M[1][1] * M[2][0])) / det;
     }
-    *x += d[0];
-    *y += d[1];
-    *rho += d[2];
-    if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < 1e-4) break;
+    *u += dl[0];
+    *v += dl[1];
+    *d += dl[2];
+    if (dl[0] * dl[0] + dl[1] * dl[1] + dl[2] * dl[2] < 1e-4) break;
   }
   /* the inliers and the widest gap between them around the centre */
+  if (!residuals(m, s, *u, *v, *d, e)) return 0;
   double ang[NRAY];
   int n = 0;
-  const double band = 3 * scale > 1.5 ? 3 * scale : 1.5;
-  for (int i = 0; i < s->n; i++) {
-    double ux, uy;
-    if (fabs(seg_dist(s->px[i], s->py[i], *x, *y, hx, hy, &ux, &uy) - *rho) <= band)
-      ang[n++] = atan2(s->py[i] - *y, s->px[i] - *x);
-  }
+  /* a fixed band (not the residuals' scale: a wrong fit's spread would widen it): the outline's
+   * quantisation, and the region's edge a little off the sphere's on a large ball */
+  const double band = 1.5 + 0.04 * r0;
+  for (int i = 0; i < s->n; i++)
+    if (fabs(e[i]) <= band) ang[n++] = atan2(s->py[i] - *v, s->px[i] - *u);
   *gap = 2 * M_PI;
   if (n >= 2) {
     qsort(ang, (size_t)n, sizeof(double), by_value);
@@ -144,19 +179,20 @@ static int fit_circle(const fit_state *s, double hx, double hy, double r0, doubl
  * inliers (0: no fit that passes), the centre in *fu, *fv (px). */
 static int fit_from(const uint8_t *labels, int wl, int hl, int scale, uint8_t green, const int16_t *top,
                     const bd_view *view, double ball_r, double u, double v, double *fu, double *fv) {
-  const double sc = scale, hx = view->blur[0] / (2 * sc), hy = view->blur[1] / (2 * sc);
+  const double sc = scale;
+  const sphere_model m = {view, sc, ball_r, view->blur[0] / (2 * sc), view->blur[1] / (2 * sc)};
   fit_state s;
   int inliers = 0;
   for (int pass = 0; pass < 4; pass++) {
-    const double rpx = bd_ball_radius_px(view, u, v, ball_r);
-    const double r0 = rpx / sc;
+    const double r0 = bd_ball_radius_px(view, u, v, ball_r) / sc;
     if (!(r0 >= 3)) return 0;   /* too few labels across for an outline */
     const double cx = u / sc, cy = v / sc;
-    if (cast(labels, wl, hl, green, top, cx, cy, 1.5 * r0 + sqrt(hx * hx + hy * hy), &s) < MIN_POINTS) return 0;
-    double x = cx, y = cy, rho = r0, gap;
-    inliers = fit_circle(&s, hx, hy, r0, &x, &y, &rho, &gap);
-    /* enough of the outline around it, a radius near the expected one (its region is the ball's) */
-    if (inliers < MIN_POINTS || gap > M_PI || fabs(rho - r0) > 0.25 * r0 + 1) return 0;
+    if (cast(labels, wl, hl, green, top, cx, cy, 1.5 * r0 + sqrt(m.hx * m.hx + m.hy * m.hy), &s) < MIN_POINTS)
+      return 0;
+    double x = cx, y = cy, d = 0, gap;
+    inliers = fit_sphere(&m, &s, r0, &x, &y, &d, &gap);
+    /* enough of the outline around it, near the expected size (its region is the ball's) */
+    if (inliers < MIN_POINTS || gap > M_PI || fabs(d) > 0.25 * r0 + 1) return 0;
     const double moved = (x - cx) * (x - cx) + (y - cy) * (y - cy);
     u = x * sc;
     v = y * sc;
