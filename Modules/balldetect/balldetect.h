@@ -81,15 +81,17 @@ int bd_settle(const uint8_t *labels, int wl, int hl, int scale, uint8_t green, c
               double ball_r, bd_candidate *c);
 
 /* The chosen ball's centre from its outline (fit.c): rays from a start find where its region meets
- * the field (none counted that run past 1.5 radii into a line touching the ball, out of the image or
- * beyond the field boundary); a circle swept along the view's blur, its radius loosely held to the
- * expected one, fitted to those points with weights that leave out the few ending on a line's far edge;
- * the rays cast again from its centre until it stays. Tried from c's centre (settled) and from
- * (u0, v0) (the centre before bd_settle, whose passes may have climbed into a line touching the ball);
- * a fit passes with at least a quarter of the rays on its circle, no gap over half a turn between
- * them and a radius within a quarter of the expected one. The passing fit with more points on its
- * circle moves c's centre (and its radius to the expected one there); returns their count, 0 when
- * no fit passed (c left as it was; a ball under 3 labels across is never fitted), BD_EARG. */
+ * the field (labels with the field's bits and no other; none counted that run past 1.5 radii into a
+ * line touching the ball, out of the image or beyond the field boundary); the sphere's outline there
+ * (its tangent cone for a centre on the plane of ball centres: the expected size at that distance,
+ * swept along the view's blur, plus an offset loosely held to 0) fitted to those points with weights
+ * that leave out the ones beyond it (a line's far edge); the rays cast again from its centre until it
+ * stays. Tried from c's centre (settled) and from (u0, v0) (the centre before bd_settle, whose passes
+ * may have climbed into a line touching the ball); a fit passes with at least a quarter of the rays
+ * within 1.5 labels + 4% of the radius of its outline, no gap over half a turn between those and an
+ * offset under a quarter of the radius. The passing fit with more such points moves c's centre (its
+ * radius to the expected one there); returns their count, 0 when no fit passed (c left as it was; a
+ * ball under 3 labels in radius is never fitted), BD_EARG. */
 int bd_fit(const uint8_t *labels, int wl, int hl, int scale, uint8_t green, const int16_t *top, const bd_view *view,
            double ball_r, double u0, double v0, bd_candidate *c);
 

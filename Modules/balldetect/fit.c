@@ -3,9 +3,13 @@
  * A centroid takes in whatever not-field region touches the ball (a field line passing behind it, the
  * image's edge cutting it), and more passes climb into it. The outline does not: rays from the centre
  * find where the ball's region meets the field; a ray that runs on past 1.5 radii (into a line), out of
- * the image or beyond the field boundary (the backdrop is as not-field as the ball) gives no point; a
- * circle (swept along the view's blur, the smear's shape) is fitted to the points with weights that
- * leave out the few that ended on a line's far edge. */
+ * the image or beyond the field boundary (the backdrop is as not-field as the ball) gives no point.
+ * The outline fitted is the sphere's, not a circle: the edge of the ball's tangent cone for a centre
+ * on the plane of ball centres, an ellipse off the optical axis whose middle is not the centre's
+ * pixel (swept along the view's blur, the smear's shape); its size follows from where the centre is
+ * (the expected size at that ground distance), with a loose offset for the colour table's edge. The
+ * weights leave out the points beyond it: a region touching the ball only takes its outline further
+ * out. */
 #include "balldetect.h"
 
 #include <math.h>
@@ -187,6 +191,11 @@ static int fit_from(const uint8_t *labels, int wl, int hl, int scale, uint8_t gr
     const double r0 = bd_ball_radius_px(view, u, v, ball_r) / sc;
     if (!(r0 >= 3)) return 0;   /* too few labels across for an outline */
     const double cx = u / sc, cy = v / sc;
+    /* not a ball whose disc reaches beyond the field boundary (as bd_settle): half its outline is
+     * unknown there, and a smear longer than the view's blur says (the head turning faster than
+     * since the last frame) then fits anywhere along it */
+    for (int x = (int)(cx - r0); x <= (int)(cx + r0); x++)
+      if (x >= 0 && x < wl && cy - r0 < top[x]) return 0;
     if (cast(labels, wl, hl, green, top, cx, cy, 1.5 * r0 + sqrt(m.hx * m.hx + m.hy * m.hy), &s) < MIN_POINTS)
       return 0;
     double x = cx, y = cy, d = 0, gap;
