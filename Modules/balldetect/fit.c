@@ -193,9 +193,10 @@ static int fit_from(const uint8_t *labels, int wl, int hl, int scale, uint8_t gr
     const double cx = u / sc, cy = v / sc;
     /* not a ball whose disc reaches beyond the field boundary (as bd_settle): half its outline is
      * unknown there, and a smear longer than the view's blur says (the head turning faster than
-     * since the last frame) then fits anywhere along it */
+     * since the last frame) then fits anywhere along it. A boundary at row 0 is the image's edge: the
+     * field goes on above it */
     for (int x = (int)(cx - r0); x <= (int)(cx + r0); x++)
-      if (x >= 0 && x < wl && cy - r0 < top[x]) return 0;
+      if (x >= 0 && x < wl && top[x] > 0 && cy - r0 < top[x]) return 0;
     if (cast(labels, wl, hl, green, top, cx, cy, 1.5 * r0 + sqrt(m.hx * m.hx + m.hy * m.hy), &s) < MIN_POINTS)
       return 0;
     double x = cx, y = cy, d = 0, gap;

@@ -110,6 +110,12 @@ int main(void) {
   check(bd_fit(L, W, H, 1, GREEN, top, &view, 0.07, 162, 127, &e) == 0 && e.u == 162 && e.v == 127,
         "a ball rising beyond the field boundary: not fitted, left as it was");
 
+  /* a near ball cut by the image's top edge, a line 25 px wide touching it from above */
+  scene(150, 30, r, 25, -(r + 12.5), 5, 0, 0);
+  const int got_t = detect(w, &view, 150, 30, &es, &ef);
+  printf("# cut by the top edge, a line touching it: settled %.1f px off, fitted %.1f px\n", es, ef);
+  check(got_t && ef <= 1.5, "a ball cut by the image's top edge, a line touching it: centre within 1.5 px");
+
   /* a stray field label inside the ball and the image's edge cutting it */
   scene(28, 120, r, 0, 0, 0, 0, 0);
   L[118 * W + 35] = GREEN;
