@@ -36,7 +36,7 @@ static int cast(const uint8_t *labels, int wl, int hl, uint8_t green, const int1
   s->n = 0;
   for (int k = 0; k < NRAY; k++) {
     const double a = 2 * M_PI * k / NRAY, dx = cos(a), dy = sin(a);
-    for (double t = 0; t <= rmax; t += 0.5) {
+    for (double t = 0; t <= rmax; t += 1) {
       const double x = cx + t * dx, y = cy + t * dy;
       if (x < 0 || y < 0 || x >= wl || y >= hl) break;   /* the image cuts the ball */
       const int ix = (int)x, iy = (int)y;
@@ -50,9 +50,12 @@ static int cast(const uint8_t *labels, int wl, int hl, uint8_t green, const int1
         more = !(x2 >= 0 && y2 >= 0 && x2 < wl && y2 < hl) || is_field(labels, wl, (int)x2, (int)y2, green);
       }
       if (!more) continue;
-      /* between the last not-field sample and this one */
-      s->px[s->n] = cx + (t - 0.25) * dx;
-      s->py[s->n] = cy + (t - 0.25) * dy;
+      /* the edge to half a label: between the last not-field sample and the first field one */
+      const double xh = x - 0.5 * dx, yh = y - 0.5 * dy;
+      const double te = t >= 0.5 && xh >= 0 && yh >= 0 && is_field(labels, wl, (int)xh, (int)yh, green) ? t - 0.75
+                                                                                                   : t - 0.25;
+      s->px[s->n] = cx + te * dx;
+      s->py[s->n] = cy + te * dy;
       s->n++;
       break;
     }
@@ -64,34 +67,11 @@ static int cast(const uint8_t *labels, int wl, int hl, uint8_t green, const int1
  * sphere's tangent cone's edge, the cone of half angle asin(r / distance) around the ray to the centre
  * on the plane of ball centres (an ellipse off the optical axis, and not centred on the centre's
  * pixel: a circle is neither). The point is first moved back along the blur by as much as the smear
- * moved it (the segment centre -+ h: its nearest point's offset); returns 0 above the horizon. */
+ * moved it (the segment centre -+ h: its nearest point's offset). */
 typedef struct sphere_model {
   const bd_view *view;
   double sc, r, hx, hy;
 } sphere_model;
-
-static int cone_angle(const sphere_model *m, double u, double v, double px, double py, double *ang) {
-  const bd_view *vw = m->view;
-  const double uf = u * m->sc, vf = v * m->sc;
-  const double b = -(uf - vw->cx) / vw->f, c = -(vf - vw->cy) / vw->f;
-  const double *R = vw->R;
-  const double dz = R[6] + R[7] * b + R[8] * c, drop = vw->height - m->r;
-  if (dz >= -1e-6 || drop <= 0) return 0;
-  const double n2 = 1 + b * b + c * c, dist = drop / -dz * sqrt(n2);
-  if (dist <= m->r) return 0;
-  double dx = px - u, dy = py - v;
-  const double h2 = m->hx * m->hx + m->hy * m->hy;
-  if (h2 > 0) {
-    double t = (dx * m->hx + dy * m->hy) / h2;
-    t = t < -1 ? -1 : (t > 1 ? 1 : t);
-    px -= t * m->hx;
-    py -= t * m->hy;
-  }
-  const double pb = -(px * m->sc - vw->cx) / vw->f, pc = -(py * m->sc - vw->cy) / vw->f;
-  const double cosang = (1 + b * pb + c * pc) / sqrt(n2 * (1 + pb * pb + pc * pc));
-  *ang = acos(cosang > 1 ? 1 : cosang) - asin(m->r / dist);
-  return 1;
-}
 
 static int by_value(const void *a, const void *b) {
   const double x = *(const double *)a, y = *(const double *)b;
@@ -100,11 +80,26 @@ static int by_value(const void *a, const void *b) {
 
 /* residuals (labels: the angles times f / scale, less the outline's offset d) at centre (u, v) */
 static int residuals(const sphere_model *m, const fit_state *s, double u, double v, double d, double *e) {
-  const double k = m->view->f / m->sc;
+  const bd_view *vw = m->view;
+  const double b = -(u * m->sc - vw->cx) / vw->f, c = -(v * m->sc - vw->cy) / vw->f;
+  const double *R = vw->R;
+  const double dz = R[6] + R[7] * b + R[8] * c, drop = vw->height - m->r;
+  if (dz >= -1e-6 || drop <= 0) return 0;
+  const double n2 = 1 + b * b + c * c, dist = drop / -dz * sqrt(n2);
+  if (dist <= m->r) return 0;
+  const double cone = asin(m->r / dist), k = vw->f / m->sc;
+  const double h2 = m->hx * m->hx + m->hy * m->hy;
   for (int i = 0; i < s->n; i++) {
-    double a;
-    if (!cone_angle(m, u, v, s->px[i], s->py[i], &a)) return 0;
-    e[i] = k * a - d;
+    double px = s->px[i], py = s->py[i];
+    if (h2 > 0) {
+      double t = ((px - u) * m->hx + (py - v) * m->hy) / h2;
+      t = t < -1 ? -1 : (t > 1 ? 1 : t);
+      px -= t * m->hx;
+      py -= t * m->hy;
+    }
+    const double pb = -(px * m->sc - vw->cx) / vw->f, pc = -(py * m->sc - vw->cy) / vw->f;
+    const double cosang = (1 + b * pb + c * pc) / sqrt(n2 * (1 + pb * pb + pc * pc));
+    e[i] = k * (acos(cosang > 1 ? 1 : cosang) - cone) - d;
   }
   return 1;
 }
@@ -116,13 +111,20 @@ static int residuals(const sphere_model *m, const fit_state *s, double u, double
  * centre in *gap. */
 static int fit_sphere(const sphere_model *m, const fit_state *s, double r0, double *u, double *v, double *d,
                       double *gap) {
-  double e[NRAY], eu[NRAY], ev[NRAY], ae[NRAY];
+  double e[NRAY], eu[NRAY], ev[NRAY], ju[NRAY], jv[NRAY], ae[NRAY];
   double scale = 1;
   const double eps = 0.01;
   for (int it = 0; it < 12; it++) {
-    if (!residuals(m, s, *u, *v, *d, e) || !residuals(m, s, *u + eps, *v, *d, eu) ||
-        !residuals(m, s, *u, *v + eps, *d, ev))
-      return 0;
+    if (!residuals(m, s, *u, *v, *d, e)) return 0;
+    /* the derivatives change little near the fit: taken anew on the first two iterations and every
+     * fourth (each takes two more passes over the points) */
+    if (it < 2 || it % 4 == 0) {
+      if (!residuals(m, s, *u + eps, *v, *d, eu) || !residuals(m, s, *u, *v + eps, *d, ev)) return 0;
+      for (int i = 0; i < s->n; i++) {
+        ju[i] = (eu[i] - e[i]) / eps;
+        jv[i] = (ev[i] - e[i]) / eps;
+      }
+    }
     for (int i = 0; i < s->n; i++) ae[i] = fabs(e[i]);
     qsort(ae, (size_t)s->n, sizeof(double), by_value);
     scale = 1.4826 * ae[s->n / 2];
@@ -135,7 +137,7 @@ static int fit_sphere(const sphere_model *m, const fit_state *s, double r0, doub
       /* a region touching the ball only takes its outline further out, never nearer: a point beyond
        * the outline is three times as suspect as one inside it */
       const double q = (e[i] > 0 ? 3 : 1) * e[i] / (2.4 * scale), w = 1 / (1 + q * q);
-      const double J[3] = {(eu[i] - e[i]) / eps, (ev[i] - e[i]) / eps, -1};
+      const double J[3] = {ju[i], jv[i], -1};
       for (int r = 0; r < 3; r++) {
         for (int c = 0; c < 3; c++) A[r][c] += w * J[r] * J[c];
         b[r] -= w * J[r] * e[i];
@@ -157,7 +159,7 @@ static int fit_sphere(const sphere_model *m, const fit_state *s, double r0, doub
     *u += dl[0];
     *v += dl[1];
     *d += dl[2];
-    if (dl[0] * dl[0] + dl[1] * dl[1] + dl[2] * dl[2] < 1e-4) break;
+    if (dl[0] * dl[0] + dl[1] * dl[1] + dl[2] * dl[2] < 1e-3) break;
   }
   /* the inliers and the widest gap between them around the centre */
   if (!residuals(m, s, *u, *v, *d, e)) return 0;
@@ -218,7 +220,9 @@ int bd_fit(const uint8_t *labels, int wl, int hl, int scale, uint8_t green, cons
   if (!labels || !top || !view || !c || wl <= 0 || hl <= 0 || scale <= 0 || !(ball_r > 0)) return BD_EARG;
   double ua = 0, va = 0, ub = 0, vb = 0;
   const int na = fit_from(labels, wl, hl, scale, green, top, view, ball_r, c->u, c->v, &ua, &va);
-  const int nb = fit_from(labels, wl, hl, scale, green, top, view, ball_r, u0, v0, &ub, &vb);
+  /* the second start only when it is more than a label from the first */
+  const double du = (u0 - c->u) / scale, dv = (v0 - c->v) / scale;
+  const int nb = du * du + dv * dv > 1 ? fit_from(labels, wl, hl, scale, green, top, view, ball_r, u0, v0, &ub, &vb) : 0;
   if (na == 0 && nb == 0) return 0;
   c->u = na >= nb ? ua : ub;
   c->v = na >= nb ? va : vb;
