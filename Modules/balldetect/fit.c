@@ -110,9 +110,9 @@ static int residuals(const sphere_model *m, const fit_state *s, double u, double
  * inlier band (0: no fit), and the largest angle (rad) between neighbouring inliers seen from the
  * centre in *gap. */
 static int fit_sphere(const sphere_model *m, const fit_state *s, double r0, double *u, double *v, double *d,
-                      double *gap) {
+                      double *gap, double *cond) {
   double e[NRAY], eu[NRAY], ev[NRAY], ju[NRAY], jv[NRAY], ae[NRAY];
-  double scale = 1;
+  double scale = 1, A[3][3];
   const double eps = 0.01;
   for (int it = 0; it < 12; it++) {
     if (!residuals(m, s, *u, *v, *d, e)) return 0;
@@ -129,7 +129,8 @@ static int fit_sphere(const sphere_model *m, const fit_state *s, double r0, doub
     qsort(ae, (size_t)s->n, sizeof(double), by_value);
     scale = 1.4826 * ae[s->n / 2];
     if (scale < 0.5) scale = 0.5;   /* labels: the outline's own quantisation */
-    double A[3][3] = {{0}}, b[3] = {0};
+    memset(A, 0, sizeof A);
+    double b[3] = {0};
     const double wp = 1;   /* the pull of d toward 0: one point's worth */
     A[2][2] += wp;
     b[2] -= wp * *d;
@@ -178,6 +179,13 @@ static int fit_sphere(const sphere_model *m, const fit_state *s, double r0, doub
       if (ang[i] - ang[i - 1] > g) g = ang[i] - ang[i - 1];
     *gap = g;
   }
+  /* how well the points hold the centre in its worst direction against its best: the centre's block
+   * of the last iteration's normal equations with the offset d eliminated, its eigenvalues' ratio (1
+   * for a whole outline, ~0.2 for half of it, ~0 for a smear's straight sides alone) */
+  const double sxx = A[0][0] - A[0][2] * A[2][0] / A[2][2], syy = A[1][1] - A[1][2] * A[2][1] / A[2][2];
+  const double sxy = A[0][1] - A[0][2] * A[2][1] / A[2][2];
+  const double h = (sxx + syy) / 2, q = sqrt(((sxx - syy) / 2) * ((sxx - syy) / 2) + sxy * sxy);
+  *cond = h + q > 0 ? (h - q) / (h + q) : 0;
   return n;
 }
 
@@ -201,10 +209,14 @@ static int fit_from(const uint8_t *labels, int wl, int hl, int scale, uint8_t gr
       if (x >= 0 && x < wl && top[x] > 0 && cy - r0 < top[x]) return 0;
     if (cast(labels, wl, hl, green, top, cx, cy, 1.5 * r0 + sqrt(m.hx * m.hx + m.hy * m.hy), &s) < MIN_POINTS)
       return 0;
-    double x = cx, y = cy, d = 0, gap;
-    inliers = fit_sphere(&m, &s, r0, &x, &y, &d, &gap);
+    double x = cx, y = cy, d = 0, gap = 0;
+    double cond = 0;
+    inliers = fit_sphere(&m, &s, r0, &x, &y, &d, &gap, &cond);
     /* enough of the outline around it, near the expected size (its region is the ball's) */
-    if (inliers < MIN_POINTS || gap > M_PI || fabs(d) > 0.25 * r0 + 1) return 0;
+    /* and the points hold the centre in every direction (the spec's outlines cut by a line or an
+     * edge: 0.38 and more; a smear longer than the view's blur, cut at one end, leaves the centre
+     * free to slide along it) */
+    if (inliers < MIN_POINTS || gap > M_PI || fabs(d) > 0.25 * r0 + 1 || cond < 0.25) return 0;
     const double moved = (x - cx) * (x - cx) + (y - cy) * (y - cy);
     u = x * sc;
     v = y * sc;
