@@ -91,7 +91,8 @@ int bd_settle(const uint8_t *labels, int wl, int hl, int scale, uint8_t green, c
  * within 1.5 labels + 4% of the radius of its outline, no gap over half a turn between those and an
  * offset under a quarter of the radius. The passing fit with more such points moves c's centre (its
  * radius to the expected one there); returns their count, 0 when no fit passed (c left as it was; a
- * ball under 3 labels in radius is never fitted), BD_EARG. */
+ * ball under 10 labels in radius is never fitted: there a smear the view's blur does not cover
+ * misleads the fit more than a line the centroid), BD_EARG. */
 int bd_fit(const uint8_t *labels, int wl, int hl, int scale, uint8_t green, const int16_t *top, const bd_view *view,
            double ball_r, double u0, double v0, bd_candidate *c);
 

@@ -21,7 +21,8 @@ local vp = assert(pipeline.new(vcfg, ccfg, nil))
 local file = assert(frames.open(path))
 local draw_dir = os.getenv('DRAW')
 
-local st = { inview = 0, found = 0, wrong = 0, empty = 0, false_pos = 0, ranges = {}, bearings = {} }
+local st = { inview = 0, found = 0, wrong = 0, empty = 0, false_pos = 0, ranges = {}, bearings = {},
+             worst = { err = -1, frame = -1 } }   -- the frame of the largest range error (DRAW_FRAMES)
 local misses = {}
 local robot_misses = os.getenv('ROBOT_MISSES') == '1'
 local rs = { seen = 0, found = 0, errs = {}, dets = 0, false_pos = 0, team_ok = 0, team_named = 0,
@@ -57,7 +58,11 @@ for fr in file:each() do
     if ball.detected and math.sqrt((ball.x - tx) ^ 2 + (ball.y - ty) ^ 2) <= math.max(0.25, 0.25 * b.distance) then
       st.found = st.found + 1
       local r = math.sqrt(ball.x ^ 2 + ball.y ^ 2)
-      if b.distance <= 3 then st.ranges[#st.ranges + 1] = math.abs(r - b.distance) / b.distance end
+      if b.distance <= 3 then
+        local err = math.abs(r - b.distance) / b.distance
+        st.ranges[#st.ranges + 1] = err
+        if err > st.worst.err then st.worst.err, st.worst.frame = err, fr.index end
+      end
       local e = math.abs(math.atan2(ball.y, ball.x) - b.bearing)
       if e > math.pi then e = 2 * math.pi - e end
       st.bearings[#st.bearings + 1] = math.deg(e)
@@ -165,8 +170,9 @@ local bm, b95, bmax = stats(st.bearings)
 print(string.format('%s ball: recall %d/%d = %.1f%% (fully in view, 0.3-4 m; %d detected elsewhere), '
   .. 'false detections %d/%d frames without the ball = %.2f%%', kind, st.found, st.inview, 100 * recall, st.wrong,
   st.false_pos, st.empty, 100 * fp))
-print(string.format('%s ball: range error (<= 3 m, %d) mean %.1f%% p95 %.1f%% max %.1f%%; bearing error mean %.2f '
-  .. 'p95 %.2f max %.2f deg', kind, #st.ranges, 100 * rm, 100 * r95, 100 * rmax, bm, b95, bmax))
+print(string.format('%s ball: range error (<= 3 m, %d) mean %.1f%% p95 %.1f%% max %.1f%% (frame %d); bearing error '
+  .. 'mean %.2f p95 %.2f max %.2f deg', kind, #st.ranges, 100 * rm, 100 * r95, 100 * rmax, st.worst.frame, bm, b95,
+  bmax))
 local em, e95, emax = stats(rs.errs)
 print(string.format('robots: recall %d/%d = %.1f%% (in view, 0.3-3 m, not cut by the image side, at most half '
   .. 'hidden behind nearer robots: %d more were); position error mean %.2f p95 %.2f max %.2f m', rs.found, rs.seen,
