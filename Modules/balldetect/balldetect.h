@@ -88,8 +88,10 @@ int bd_settle(const uint8_t *labels, int wl, int hl, int scale, uint8_t green, c
  * that leave out the ones beyond it (a line's far edge); the rays cast again from its centre until it
  * stays. Tried from c's centre (settled) and from (u0, v0) (the centre before bd_settle, whose passes
  * may have climbed into a line touching the ball); a fit passes with at least a quarter of the rays
- * within 1.5 labels + 4% of the radius of its outline, no gap over half a turn between those and an
- * offset under a quarter of the radius. The passing fit with more such points moves c's centre (its
+ * within 1.5 labels + 4% of the radius of its outline, no gap over half a turn between those, an
+ * offset under a quarter of the radius, and the points holding the centre in every direction (the
+ * eigenvalues of its covariance within 1:4); none where the ball's disc reaches beyond a field
+ * boundary below the image's top row (as bd_settle). The passing fit with more such points moves c's centre (its
  * radius to the expected one there); returns their count, 0 when no fit passed (c left as it was; a
  * ball under 10 labels in radius is never fitted: there a smear the view's blur does not cover
  * misleads the fit more than a line the centroid), BD_EARG. */

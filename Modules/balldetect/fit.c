@@ -199,7 +199,7 @@ static int fit_from(const uint8_t *labels, int wl, int hl, int scale, uint8_t gr
   int inliers = 0;
   for (int pass = 0; pass < 4; pass++) {
     const double r0 = bd_ball_radius_px(view, u, v, ball_r) / sc;
-    /* a ball of 10 labels in radius or more (~2 m and nearer at 320 x 240 labels): on a smaller one a
+    /* a ball of 10 labels in radius or more (the OP3's camera: 2.1 m and nearer): on a smaller one a
      * line pulls the centroid by few pixels, while a smear longer than the view's blur says (a still
      * frame without rates, the head sped up) leaves its few outline points a choice of either end
      * (Tests/vision/ball_frames_test.sh's frame 65: 7.7% by the centroid, 11.5% fitted) */
@@ -213,13 +213,12 @@ static int fit_from(const uint8_t *labels, int wl, int hl, int scale, uint8_t gr
       if (x >= 0 && x < wl && top[x] > 0 && cy - r0 < top[x]) return 0;
     if (cast(labels, wl, hl, green, top, cx, cy, 1.5 * r0 + sqrt(m.hx * m.hx + m.hy * m.hy), &s) < MIN_POINTS)
       return 0;
-    double x = cx, y = cy, d = 0, gap = 0;
-    double cond = 0;
+    double x = cx, y = cy, d = 0, gap = 0, cond = 0;
     inliers = fit_sphere(&m, &s, r0, &x, &y, &d, &gap, &cond);
-    /* enough of the outline around it, near the expected size (its region is the ball's) */
-    /* and the points hold the centre in every direction (the spec's outlines cut by a line or an
-     * edge: 0.38 and more; a smear longer than the view's blur, cut at one end, leaves the centre
-     * free to slide along it) */
+    /* enough of the outline around it, near the expected size (its region is the ball's), and the
+     * points hold the centre in every direction (the spec's outlines cut by a line or an edge: 0.38
+     * and more; a smear longer than the view's blur, cut at one end, leaves the centre free to slide
+     * along it) */
     if (inliers < MIN_POINTS || gap > M_PI || fabs(d) > 0.25 * r0 + 1 || cond < 0.25) return 0;
     const double moved = (x - cx) * (x - cx) + (y - cy) * (y - cy);
     u = x * sc;
