@@ -58,6 +58,7 @@ return {
     walk_speed = 0.2,          -- m/s and rad/s a robot is assumed to walk and turn at (time to the ball)
     turn_speed = 0.5,
     striker_margin = 1.5,      -- s: the striker keeps the ball until another is this much faster
+    striking_radius = 0.3,     -- m: a teammate's target this near its ball: it says it goes for the ball
     keeper_depth = 0.5,        -- m out from the own goal's centre towards the ball
     keeper_min_depth = 0.3,    -- m: the goalkeeper's place never nearer its goal line (a ball lying on the
                                -- line walked into: an own goal in the session-10 league, seed 11)
