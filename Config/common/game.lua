@@ -66,8 +66,7 @@ return {
                                -- (when it is first to it; the striker then waits upfield:)
     receive_ahead = 1.5,       -- m upfield of the ball ...
     receive_inside = 0.5,      -- ... at this fraction of the ball's y (towards the centre line)
-    defender_fraction = 0.4,   -- of the way from the own goal's centre to the ball
-    defender_max_x = -1.0,     -- m: the defender stays behind this line
+    defender_gap = 1.0,        -- m short of the ball on the line from the own goal's centre to it
     defender_home = 1.5,       -- m in front of the own goal while no ball is known
     supporter_back = 1.0,      -- m behind the ball ...
     supporter_side = 1.2,      -- m ... and to the side, towards the centre line

@@ -142,7 +142,7 @@ describe('roles', function()
     assert.is_false(clearing)
   end)
 
-  it('positions: goalkeeper on the goal-ball line, defender between, supporter behind and inside', function()
+  it('positions: goalkeeper on the goal-ball line, defender short of the ball, supporter behind and inside', function()
     local rc = rules.roles
     local x, y = position.target('goalkeeper', { -2.0, 2.0 }, rc, field)
     assert.is_true(x > GOAL_X and x < GOAL_X + rc.keeper_depth + 1e-9)
@@ -155,8 +155,15 @@ describe('roles', function()
       assert.is_near(GOAL_X + rc.keeper_min_depth, x, 1e-9)
     end
     assert.is_nil(position.target('striker', ball, rc, field))
+    -- the defender: on the goal-ball line, defender_gap short of the ball; near the goal no nearer
+    -- to it than keeper_depth
     x, y = position.target('defender', { 2.0, 1.0 }, rc, field)
-    assert.is_true(x <= rc.defender_max_x and x > GOAL_X and y > 0 and y < 1.0)
+    local bx, by = 2.0 - GOAL_X, 1.0
+    local d = math.sqrt(bx * bx + by * by)
+    assert.is_near(2.0 - rc.defender_gap * bx / d, x, 1e-9)
+    assert.is_near(1.0 - rc.defender_gap * by / d, y, 1e-9)
+    x, y = position.target('defender', { GOAL_X + 0.8, 0.6 }, rc, field)
+    assert.is_near(rc.keeper_depth, math.sqrt((x - GOAL_X) ^ 2 + y ^ 2), 1e-9)
     x, y = position.target('supporter', { 3.0, -2.7 }, rc, field)
     assert.are.equal(3.0 - rc.supporter_back, x)
     assert.is_true(y > -2.7 and y <= field.width / 2 - rc.field_margin)
