@@ -85,6 +85,17 @@ describe('roles', function()
     assert.are.same({ [1] = 'supporter', [2] = 'striker', [3] = 'defender' }, all)
   end)
 
+  it("a teammate's time to the ball from the ball it reports: two robots with their own balls agree", function()
+    -- robot 1 sees the ball at 1.0 m, robot 2 (facing it from 2 m) at 1.4 m; each reports its own
+    local one, two = r(1, 0.0, 0.0, 0.0), r(2, 2.0, 0.0, math.pi)
+    one.ball, one.ball_known = { 1.0, 0.0 }, true
+    two.ball, two.ball_known = { 1.4, 0.0 }, true
+    local _, one_view = roles.assign(one, { two }, cfg(0), one.ball, GOAL_X)
+    local _, two_view = roles.assign(two, { one }, cfg(0), two.ball, GOAL_X)
+    assert.are.same({ [1] = 'defender', [2] = 'striker' }, one_view)
+    assert.are.same(one_view, two_view)
+  end)
+
   it('two robots that both were strikers settle on one: the lower number a teammate hears strike', function()
     local rc = rules.roles
     -- robot 2 a little faster to the ball than robot 1, each remembering itself as the striker
