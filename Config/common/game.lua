@@ -58,6 +58,7 @@ return {
     walk_speed = 0.2,          -- m/s and rad/s a robot is assumed to walk and turn at (time to the ball)
     turn_speed = 0.5,
     striker_margin = 1.5,      -- s: the striker keeps the ball until another is this much faster
+    striking_radius = 0.3,     -- m: a teammate's target this near its ball: it says it goes for the ball
     keeper_depth = 0.5,        -- m out from the own goal's centre towards the ball
     keeper_min_depth = 0.3,    -- m: the goalkeeper's place never nearer its goal line (a ball lying on the
                                -- line walked into: an own goal in the session-10 league, seed 11)
@@ -65,8 +66,7 @@ return {
                                -- (when it is first to it; the striker then waits upfield:)
     receive_ahead = 1.5,       -- m upfield of the ball ...
     receive_inside = 0.5,      -- ... at this fraction of the ball's y (towards the centre line)
-    defender_fraction = 0.4,   -- of the way from the own goal's centre to the ball
-    defender_max_x = -1.0,     -- m: the defender stays behind this line
+    defender_gap = 1.0,        -- m short of the ball on the line from the own goal's centre to it
     defender_home = 1.5,       -- m in front of the own goal while no ball is known
     supporter_back = 1.0,      -- m behind the ball ...
     supporter_side = 1.2,      -- m ... and to the side, towards the centre line

@@ -18,6 +18,7 @@ local setplay = require('GameFSM.setplay')
 local act = require('Behavior.act')
 local Team = require('Team.team')
 local roles = require('Team.roles')
+local position = require('Team.position')
 local param = require('param')
 local netlog = require('netlog')
 
@@ -202,7 +203,7 @@ function Behavior:talk(t, m)
   end
   if self.rules.team.enabled then
     self.team:update(t, { pose = { p.x, p.y, p.a }, ball = ball, penalised = gc:penalized(),
-      colour = gc.gc_seen and gc.team_colour or nil,
+      colour = gc.gc_seen and gc.team_colour or nil, target = self:target(ball),
       walk = { m.walk_velocity[0], m.walk_velocity[1], m.walk_velocity[2] } })
     w.mates = self.team:mates(t)
   else
@@ -210,6 +211,18 @@ function Behavior:talk(t, m)
   end
   self.team:publish(self.blocks.team, t)
   self:assign_role()
+end
+
+-- Where this robot goes (field x, y, heading; the message's target_pose), from its last role: the
+-- ball when it plays it (`ball`, the one it sends: teammates compare the two), its role's place
+-- otherwise; nil without roles or a place.
+function Behavior:target(ball)
+  local ctx, rc = self.ctx, self.rules.roles
+  if not (rc.enabled and ctx.role) then return nil end
+  local x, y = position.target(ctx.role, ctx.team_ball, rc, self.world.cfg.field, ctx.clearing)
+  if x then return { x, y, 0 } end
+  local b = ball or ctx.team_ball
+  return b and { b[1], b[2], 0 } or nil
 end
 
 -- This robot's role from the shared estimates (Player/Team/roles.lua); the striker alone or
@@ -223,7 +236,7 @@ function Behavior:assign_role()
   self.role_cfg.goalkeeper = keeper
   local p = w.pose
   ctx.role, ctx.roles, ctx.clearing = roles.assign({ player = self.cfg.player_number, pose = { p.x, p.y, p.a } },
-    w.mates, self.role_cfg, ctx.team_ball, -w.cfg.field.length / 2, ctx.role, ctx.clearing)
+    w.mates, self.role_cfg, ctx.team_ball, -w.cfg.field.length / 2, ctx.roles, ctx.clearing)
 end
 
 -- Closes the sockets (tests; the process just ends).

@@ -39,13 +39,13 @@ function M.update(ctx)
   local mode, distance = setplay.decide(ctx.game, ctx.rules, kickoff_progress(ctx), ctx.role)
   ctx.setplay = mode
   local x, y
-  if mode == 'play' then
+  if mode == 'play' or mode == 'take' then -- our set play is taken by the one playing the ball only
     x, y = position.target(ctx.role or 'striker', ctx.team_ball, ctx.rules.roles, ctx.world.cfg.field, ctx.clearing)
   end
   if mode == 'play' and not x then
     if ctx.body:state() == 'idle' then ctx.body:event('start', ctx) end
     ctx.body:update(ctx)
-  elseif mode == 'play' then -- a role that keeps its position (Player/Team/position.lua)
+  elseif x then -- a role that keeps its position (Player/Team/position.lua)
     if ctx.body:state() ~= 'idle' then ctx.body:event('stop', ctx) end
     moves.go_to(ctx, x, y, ctx.rules.roles.arrive)
   else

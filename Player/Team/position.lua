@@ -31,8 +31,16 @@ function M.target(role, ball, cfg, field, clearing)
   end
   if role == 'defender' then
     if not ball then return gx + cfg.defender_home, 0 end
-    local x = gx + cfg.defender_fraction * (ball[1] - gx)
-    return math.min(x, cfg.defender_max_x), cfg.defender_fraction * ball[2]
+    -- on the line from the own goal's centre to the ball, defender_gap m short of the ball (where a
+    -- ball dribbled or bouncing towards the goal comes), never nearer the goal than keeper_depth.
+    -- Standing at a fixed fraction of the way instead (0.4, behind x = -1 m), a defender of two
+    -- watched opponents dribble past it in the session-11 league.
+    local dx, dy = ball[1] - gx, ball[2]
+    local d = sqrt(dx * dx + dy * dy)
+    if d < 1e-6 then return gx + cfg.keeper_depth, 0 end
+    local r = math.max(d - cfg.defender_gap, math.min(d, cfg.keeper_depth))
+    return clamp(gx + r * dx / d, gx + margin, field.length / 2 - margin),
+      clamp(r * dy / d, -field.width / 2 + margin, field.width / 2 - margin)
   end
   -- supporter: behind the ball, to the side nearer the field's centre line
   if not ball then return cfg.supporter_home, 0 end

@@ -4,8 +4,13 @@
 --   goalkeeper  the GameController's (or the site's) goalkeeper, once the team playing has
 --               `keeper_team` robots (fewer: it plays in the field); if it is lost, the robot
 --               nearest the own goal takes over
---   striker     the one that reaches the ball first (distance / speed plus the turn); the current
---               striker keeps the role until another is faster by `striker_margin` s
+--   striker     the one that reaches the ball first (distance / speed plus the turn); the previous
+--               assignment's striker keeps the role until another is faster by `striker_margin` s
+--               (the same for every robot: with the margin on "me", two robots that both were
+--               strikers once, e.g. before they heard each other, both stayed strikers for good,
+--               as in the first league of session 11); a teammate that says it goes for the ball
+--               (its message's target_pose at its ball) with a lower player number than that
+--               striker takes the margin instead, so that two robots that disagree settle on one
 --   defender    the one nearest the own goal among the rest
 --   supporter   everyone else
 -- A robot alone is the striker. Two (keeper_team = 3) are a striker and a defender: in the session-10
@@ -16,7 +21,10 @@
 -- clearance (Team/position.lua) instead of both going for the ball and blocking each other.
 --
 --   local role, assignment, clearing = roles.assign(me, mates, cfg, ball, own_goal_x, previous, was_clearing)
---   me / mates: { player, pose = {x, y, a} }; ball: {x, y} on the field or nil; cfg: game.lua roles
+--   me / mates: { player, pose = {x, y, a}, [target = {x, y, a}, ball = {x, y}, ball_known] }
+--   ball: {x, y} on the field or nil; cfg: game.lua roles
+--   previous: the last assignment ({ [player] = role }) or nil; its striker's margin counts only when
+--   the same robots play (one joins or is lost: a fresh choice, which every robot makes alike)
 --   clearing: the goalkeeper plays the ball now (was_clearing: it did at the last assignment)
 local M = {}
 
@@ -53,11 +61,31 @@ local function remove(list, r)
   for i, x in ipairs(list) do if x == r then table.remove(list, i) return end end
 end
 
--- The assignment { [player] = role } and this robot's role. `previous` is this robot's last role
--- (the striker's hysteresis).
+-- The previous assignment's striker, when `previous` holds exactly the robots of `team`.
+local function previous_striker(previous, team)
+  if not previous then return nil end
+  local n, striker = 0, nil
+  for player, role in pairs(previous) do
+    n = n + 1
+    if role == 'striker' then striker = player end
+  end
+  if n ~= #team then return nil end
+  for _, r in ipairs(team) do if not previous[r.player] then return nil end end
+  return striker
+end
+
+-- Whether teammate r says it goes for the ball: the target in its message at its own ball.
+local function striking(r, cfg)
+  if not (r.target and r.ball_known) then return false end
+  local dx, dy = r.target[1] - r.ball[1], r.target[2] - r.ball[2]
+  return dx * dx + dy * dy < cfg.striking_radius * cfg.striking_radius
+end
+
+-- The assignment { [player] = role } and this robot's role.
 function M.assign(me, mates, cfg, ball, own_goal_x, previous, was_clearing)
   local team = { me }
   for _, m in ipairs(mates) do if not m.penalised then team[#team + 1] = m end end
+  local kept = previous_striker(previous, team)
   local out = {}
   -- the goalkeeper
   local keeper
@@ -67,10 +95,18 @@ function M.assign(me, mates, cfg, ball, own_goal_x, previous, was_clearing)
     out[keeper.player] = 'goalkeeper'
     remove(team, keeper)
   end
-  -- the striker: first to the ball (without a ball anywhere: the one furthest forward)
+  -- the striker: first to the ball (without a ball anywhere: the one furthest forward); the margin
+  -- for the previous striker or the lowest-numbered teammate that says it strikes
+  for _, r in ipairs(team) do
+    if r ~= me and striking(r, cfg) and (not kept or r.player < kept) then kept = r.player end
+  end
+  -- a teammate's time from the ball it reports (it sees it from there), so that every robot computes
+  -- every time from the same numbers; with one ball for all, each robot's own ball estimate, 0.1 to
+  -- 0.5 m apart, made two robots disagree on who was nearer (both or neither striking: 3-9% of a match)
   local function t_ball(r)
-    local tb = ball and M.time_to_ball(r, ball, cfg) or -r.pose[1]
-    if r == me and previous == 'striker' then tb = tb - cfg.striker_margin end
+    local b = (r ~= me and r.ball_known and r.ball) or ball
+    local tb = b and M.time_to_ball(r, b, cfg) or -r.pose[1]
+    if r.player == kept then tb = tb - cfg.striker_margin end
     return tb
   end
   local striker = pick(team, t_ball)

@@ -198,6 +198,31 @@ describe('behavior under the rules of a game', function()
     assert.are.equal(0, speed())
   end)
 
+  it('our free kick with a teammate at the ball: only the striker goes behind it, the defender to its place', function()
+    local rc = setmetatable({ broadcast = '127.255.255.255' }, { __index = rules.team })
+    local mate = require('Team.team').new({ team_number = TEAM, player_number = 2, team = rc }, { port = port + 2 })
+    ball = { 1.0, 0.0 } -- the robot at (-2, 0) facing the opponent goal, the ball at (-1, 0)
+    local function with_mate(seconds)
+      for _ = 1, math.floor(seconds / 0.1 + 0.5) do
+        mate:update(sensor.time[0], { pose = { -1.3, 0.0, 0 }, ball = { -1.0, 0.0, 0, 0 }, penalised = false,
+          walk = { 0, 0, 0 }, target = { -1.0, 0.0, 0 } }) -- it stands behind the ball and says it strikes
+        run(0.1)
+      end
+    end
+    send(packet.STATE.playing, { secondary = 4, team = TEAM, mode = 0 })
+    with_mate(3)
+    mate:close()
+    assert.are.equal(2, game.setplay[0]) -- take
+    assert.are.equal(require('Team.roles').INDEX.defender, game.role[0])
+    -- the defender's place (defender_gap short of the ball towards its goal) is where it stands: it
+    -- stays (taking the free kick, it walked on to the ball at 0.38 m/s)
+    assert.are.equal(1.0, rules.roles.defender_gap)
+    local vx, _, va = vel()
+    assert.is_true(vx <= 0.01, string.format('walk %.3f %.3f', vx, va))
+    send(packet.STATE.playing) -- normal play; the teammate is lost after team.lost_after s
+    run(rules.team.lost_after + 0.5)
+  end)
+
   it('says alive about once a second and reports the button; the packets decide', function()
     returns()
     send(packet.STATE.playing)

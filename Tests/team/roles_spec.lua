@@ -71,9 +71,54 @@ describe('roles', function()
     local me = r(1, 0.0, 0.0)
     local a_bit = r(2, 0.5 * rc.striker_margin * rc.walk_speed, 0.0) -- half the margin faster
     local much = r(2, 2.0 * rc.striker_margin * rc.walk_speed, 0.0)  -- twice the margin faster
-    assert.are.equal('defender', (roles.assign(me, { a_bit }, cfg(0), ball, GOAL_X, 'defender')))
-    assert.are.equal('striker', (roles.assign(me, { a_bit }, cfg(0), ball, GOAL_X, 'striker')))
-    assert.are.equal('defender', (roles.assign(me, { much }, cfg(0), ball, GOAL_X, 'striker')))
+    local was_mate = { [1] = 'defender', [2] = 'striker' }
+    local was_me = { [1] = 'striker', [2] = 'defender' }
+    assert.are.equal('defender', (roles.assign(me, { a_bit }, cfg(0), ball, GOAL_X, was_mate)))
+    assert.are.equal('striker', (roles.assign(me, { a_bit }, cfg(0), ball, GOAL_X, was_me)))
+    assert.are.equal('defender', (roles.assign(me, { much }, cfg(0), ball, GOAL_X, was_me)))
+    -- the teammate, computing from the same data, agrees in each case
+    assert.are.equal('striker', (roles.assign(a_bit, { me }, cfg(0), ball, GOAL_X, was_mate)))
+    assert.are.equal('defender', (roles.assign(a_bit, { me }, cfg(0), ball, GOAL_X, was_me)))
+    -- another robot joined since: a fresh choice (the faster one), the margin not carried over
+    local third = r(3, -3.0, 2.0)
+    local all = select(2, roles.assign(me, { a_bit, third }, cfg(0), ball, GOAL_X, was_me))
+    assert.are.same({ [1] = 'supporter', [2] = 'striker', [3] = 'defender' }, all)
+  end)
+
+  it("a teammate's time to the ball from the ball it reports: two robots with their own balls agree", function()
+    -- robot 1 sees the ball at 1.0 m, robot 2 (facing it from 2 m) at 1.4 m; each reports its own
+    local one, two = r(1, 0.0, 0.0, 0.0), r(2, 2.0, 0.0, math.pi)
+    one.ball, one.ball_known = { 1.0, 0.0 }, true
+    two.ball, two.ball_known = { 1.4, 0.0 }, true
+    local _, one_view = roles.assign(one, { two }, cfg(0), one.ball, GOAL_X)
+    local _, two_view = roles.assign(two, { one }, cfg(0), two.ball, GOAL_X)
+    assert.are.same({ [1] = 'defender', [2] = 'striker' }, one_view)
+    assert.are.same(one_view, two_view)
+  end)
+
+  it('two robots that both were strikers settle on one: the lower number a teammate hears strike', function()
+    local rc = rules.roles
+    -- robot 2 a little faster to the ball than robot 1, each remembering itself as the striker
+    local one, two = r(1, 0.0, 0.0), r(2, 0.5 * rc.striker_margin * rc.walk_speed, 0.0)
+    local function says_strike(x) -- its message: its ball, its target at the ball
+      x.ball, x.ball_known, x.target = { ball[1], ball[2] }, true, { ball[1], ball[2], 0 }
+      return x
+    end
+    says_strike(one)
+    says_strike(two)
+    local one_view = { [1] = 'striker', [2] = 'defender' }
+    local two_view = { [1] = 'defender', [2] = 'striker' }
+    assert.are.equal('striker', (roles.assign(one, { two }, cfg(0), ball, GOAL_X, one_view)))
+    assert.are.equal('defender', (roles.assign(two, { one }, cfg(0), ball, GOAL_X, two_view)))
+    -- a teammate whose target is its place, not its ball, does not strike: robot 2 keeps its margin
+    local placed = r(1, 0.0, 0.0)
+    placed.ball, placed.ball_known = { ball[1], ball[2] }, true
+    placed.target = { GOAL_X + 1.5, 0.0, 0 }
+    assert.are.equal('striker', (roles.assign(two, { placed }, cfg(0), ball, GOAL_X, two_view)))
+    -- no ball in its message: no claim either
+    local blind = r(1, 0.0, 0.0)
+    blind.target = { ball[1], ball[2], 0 }
+    assert.are.equal('striker', (roles.assign(two, { blind }, cfg(0), ball, GOAL_X, two_view)))
   end)
 
   it('the goalkeeper clears a ball near its goal only when first to it; the striker then waits upfield', function()
@@ -81,12 +126,13 @@ describe('roles', function()
     local rc = rules.roles
     local near = { GOAL_X + 1.0, 0.4 }
     local keeper, chaser = r(1, GOAL_X + 0.5, 0, 0), r(2, GOAL_X + 2.5, 0.4, math.pi)
+    local keeper_striker = { [1] = 'goalkeeper', [2] = 'striker' } -- the last assignment
     local role, all, clearing = roles.assign(keeper, { chaser }, cfg(1, 2), near, GOAL_X)
     assert.are.equal('goalkeeper', role)
     assert.are.same({ [1] = 'goalkeeper', [2] = 'striker' }, all)
     assert.is_true(clearing)
     -- the teammate computes the same
-    assert.is_true(select(3, roles.assign(chaser, { keeper }, cfg(1, 2), near, GOAL_X, 'striker')))
+    assert.is_true(select(3, roles.assign(chaser, { keeper }, cfg(1, 2), near, GOAL_X, keeper_striker)))
     assert.is_nil(position.target('goalkeeper', near, rc, field, true))
     local x, y = position.target('striker', near, rc, field, true)
     assert.are.equal(near[1] + rc.receive_ahead, x)
@@ -101,13 +147,13 @@ describe('roles', function()
     local a_bit = r(2, GOAL_X + 1.0 + 0.5 * rc.striker_margin * rc.walk_speed + 0.5, 0.4, math.pi)
     local tk = roles.time_to_ball(keeper, near, rc)
     assert.is_true(roles.time_to_ball(a_bit, near, rc) < tk, 'the teammate is faster')
-    assert.is_true(select(3, roles.assign(keeper, { a_bit }, cfg(1, 2), near, GOAL_X, 'goalkeeper', true)))
+    assert.is_true(select(3, roles.assign(keeper, { a_bit }, cfg(1, 2), near, GOAL_X, keeper_striker, true)))
     -- a ball far from the goal is never the goalkeeper's
     clearing = select(3, roles.assign(keeper, { chaser }, cfg(1, 2), { 0, 0 }, GOAL_X))
     assert.is_false(clearing)
   end)
 
-  it('positions: goalkeeper on the goal-ball line, defender between, supporter behind and inside', function()
+  it('positions: goalkeeper on the goal-ball line, defender short of the ball, supporter behind and inside', function()
     local rc = rules.roles
     local x, y = position.target('goalkeeper', { -2.0, 2.0 }, rc, field)
     assert.is_true(x > GOAL_X and x < GOAL_X + rc.keeper_depth + 1e-9)
@@ -120,8 +166,15 @@ describe('roles', function()
       assert.is_near(GOAL_X + rc.keeper_min_depth, x, 1e-9)
     end
     assert.is_nil(position.target('striker', ball, rc, field))
+    -- the defender: on the goal-ball line, defender_gap short of the ball; near the goal no nearer
+    -- to it than keeper_depth
     x, y = position.target('defender', { 2.0, 1.0 }, rc, field)
-    assert.is_true(x <= rc.defender_max_x and x > GOAL_X and y > 0 and y < 1.0)
+    local bx, by = 2.0 - GOAL_X, 1.0
+    local d = math.sqrt(bx * bx + by * by)
+    assert.is_near(2.0 - rc.defender_gap * bx / d, x, 1e-9)
+    assert.is_near(1.0 - rc.defender_gap * by / d, y, 1e-9)
+    x, y = position.target('defender', { GOAL_X + 0.8, 0.6 }, rc, field)
+    assert.is_near(rc.keeper_depth, math.sqrt((x - GOAL_X) ^ 2 + y ^ 2), 1e-9)
     x, y = position.target('supporter', { 3.0, -2.7 }, rc, field)
     assert.are.equal(3.0 - rc.supporter_back, x)
     assert.is_true(y > -2.7 and y <= field.width / 2 - rc.field_margin)

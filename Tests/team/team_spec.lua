@@ -46,6 +46,7 @@ describe('team communication', function()
     assert.is_true(mb[1].ball_known)
     assert.are.same({ 2.0, -1.0, 0.5, 0 }, mb[1].ball)
     assert.is_true(math.abs(mb[1].pose[3] - 0.25) < 1e-6)
+    assert.is_nil(ma[1].target) -- none sent
     assert.are.equal(1, a.own) -- its own message came back on the broadcast
     assert.are.equal(1, a.received)
     assert.are.equal(1, a.sent)
@@ -63,6 +64,7 @@ describe('team communication', function()
     -- found by Tests/team/teamcomm_fuzz_test.sh: a NaN pose was taken into the table
     send(message.encode({ player_id = 5, team = 'blue', pose = { 0 / 0, 1, 0 } }))     -- not a number
     send(message.encode({ player_id = 6, team = 'blue', pose = { 1, 1, 0 }, ball = { math.huge, 0 } }))
+    send(message.encode({ player_id = 8, team = 'blue', pose = { 1, 1, 0 }, target = { pose = { 0 / 0, 0, 0 } } }))
     -- a NaN whose payload LuaJIT would read as a table at a wild address (the pose's x: 1.5's bytes
     -- replaced by the float ff900001): decoded as NaN, ignored
     local hostile = message.encode({ player_id = 7, team = 'blue', pose = { 1.5, 1, 0 } })
@@ -71,12 +73,26 @@ describe('team communication', function()
     send(message.encode({ player_id = 4, team = 'blue', pose = { 2, 2, 0 } }))  -- a teammate
     a:update(11.0, me(-1.0, nil))
     assert.are.equal(f0 + 1, a.foreign)
-    assert.are.equal(m0 + 8, a.malformed)
+    assert.are.equal(m0 + 9, a.malformed)
     assert.are.equal(r0 + 1, a.received)
     local players = {}
     for _, s in ipairs(a:mates(11.0)) do players[#players + 1] = s.player end
     table.sort(players)
     assert.are.same({ 2, 4 }, players)
+  end)
+
+  it('a teammate\'s target (where it goes) into the table, and gone when it sends none', function()
+    local target = { 1.0, -0.5, 0 }
+    local m = me(-3.0, { 1.0, -0.5, 0, 0 })
+    m.target = target
+    b:update(12.0, m)
+    a:update(12.0, me(-1.0, nil))
+    local mate = a:mates(12.0)[1]
+    assert.are.equal(2, mate.player)
+    assert.are.same(target, mate.target)
+    b:update(12.6, me(-3.0, nil))
+    a:update(12.6, me(-1.0, nil))
+    assert.is_nil(a:mates(12.6)[1].target)
   end)
 
   it('reads a flood in bounded steps and keeps a fixed table', function()
