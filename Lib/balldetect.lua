@@ -111,7 +111,7 @@ function Bd:settle(labels, wl, hl, scale, green, ball_r, c)
 end
 
 -- The centre of the ball chosen from its outline (bd_fit), tried from its centre and from (u0, v0)
--- (before settle); returns the outline points on the fitted circle, 0 when it was left as it was.
+-- (before settle); returns the edge points on the fitted outline, 0 when it was left as it was.
 function Bd:fit(labels, wl, hl, scale, green, ball_r, u0, v0, c)
   local n = C.bd_fit(labels, wl, hl, scale, green, self.top, self.view, ball_r, u0, v0, c)
   if n < 0 then error('balldetect: bad arguments to bd_fit', 2) end
