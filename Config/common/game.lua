@@ -59,6 +59,8 @@ return {
     turn_speed = 0.5,
     striker_margin = 1.5,      -- s: the striker keeps the ball until another is this much faster
     striking_radius = 0.3,     -- m: a teammate's target this near its ball: it says it goes for the ball
+    fallen_time = 8,           -- s a robot that is down needs before it walks again (time to the ball; in a
+                               -- session-12 match the OP3s lay 2-17 s, median 5.3 s, then stood up)
     keeper_depth = 0.5,        -- m out from the own goal's centre towards the ball
     keeper_min_depth = 0.3,    -- m: the goalkeeper's place never nearer its goal line (a ball lying on the
                                -- line walked into: an own goal in the session-10 league, seed 11)

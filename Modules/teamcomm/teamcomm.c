@@ -109,6 +109,7 @@ int tc_encode(const tc_message *m, uint8_t *buf, size_t cap, char *err, size_t e
     msg.kick_target = &kick;
   }
   msg.state = (Robocup__Humanoid__State)m->state;
+  msg.fallen = m->fallen != 0;
   size_t n = robocup__humanoid__message__get_packed_size(&msg);
   if (n > cap) return fail(err, errlen, TC_ERR_SPACE, "tc_encode: buffer too small");
   return (int)robocup__humanoid__message__pack(&msg, buf);
@@ -206,6 +207,7 @@ int tc_decode(const uint8_t *buf, size_t len, tc_message *m, char *err, size_t e
     m->kick_target[1] = canon(msg->kick_target->y);
   }
   m->state = known((int)msg->state, TC_STATE_PENALISED);
+  m->fallen = msg->fallen ? 1 : 0;
   tc_arena.used = 0; /* nothing of the arena is kept */
   return 0;
 }

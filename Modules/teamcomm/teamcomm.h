@@ -53,6 +53,7 @@ typedef struct {
   int32_t has_kick_target;
   float kick_target[2];
   int32_t state;           /* TC_STATE_* */
+  int32_t fallen;          /* 0/1: our extension field (101), the sender is down */
 } tc_message;
 
 /* Encodes m into buf (cap bytes); returns the length, or a negative code. */

@@ -51,6 +51,12 @@ function M.busy()
   return BUSY[s] or s:find('kick') ~= nil or s:find('stand_?up') ~= nil or s:find('fall') ~= nil
 end
 
+-- Whether the robot is down: falling, lying or getting up (its teammates are told: Team/roles.lua).
+function M.down()
+  local s = M.motion_state()
+  return s ~= nil and (s:find('fall') ~= nil or s:find('stand_?up') ~= nil)
+end
+
 local function set_velocity(vx, vy, va)
   last.vx, last.vy, last.va = vx, vy, va
   if Walk then Walk.set_velocity(vx, vy, va)

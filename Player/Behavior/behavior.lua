@@ -64,8 +64,8 @@ function M.new(opts)
     team = { enabled = 'boolean', port_base = 'number', broadcast = 'string', period = 'number',
       lost_after = 'number', max_per_step = 'number', max_players = 'number' },
     roles = { enabled = 'boolean', goalkeeper = 'number', walk_speed = 'number', turn_speed = 'number',
-      striker_margin = 'number', keeper_depth = 'number', keeper_clear = 'number', arrive = 'number',
-      receive_ahead = 'number', receive_inside = 'number' },
+      striker_margin = 'number', fallen_time = 'number', keeper_depth = 'number', keeper_clear = 'number',
+      arrive = 'number', receive_ahead = 'number', receive_inside = 'number' },
   })
   local port = opts.port or tonumber(os.getenv('HRP_GC_PORT') or '') or nil
   local return_port = opts.return_port or tonumber(os.getenv('HRP_GC_RETURN_PORT') or '') or nil
@@ -201,8 +201,9 @@ function Behavior:talk(t, m)
     local c, s = math.cos(p.a), math.sin(p.a)
     ball = { bx, by, c * w.ball.vx - s * w.ball.vy, s * w.ball.vx + c * w.ball.vy }
   end
+  self.ctx.down = act.down()
   if self.rules.team.enabled then
-    self.team:update(t, { pose = { p.x, p.y, p.a }, ball = ball, penalised = gc:penalized(),
+    self.team:update(t, { pose = { p.x, p.y, p.a }, ball = ball, penalised = gc:penalized(), fallen = self.ctx.down,
       colour = gc.gc_seen and gc.team_colour or nil, target = self:target(ball),
       walk = { m.walk_velocity[0], m.walk_velocity[1], m.walk_velocity[2] } })
     w.mates = self.team:mates(t)
@@ -235,7 +236,8 @@ function Behavior:assign_role()
   self.role_cfg = self.role_cfg or setmetatable({}, { __index = rc })
   self.role_cfg.goalkeeper = keeper
   local p = w.pose
-  ctx.role, ctx.roles, ctx.clearing = roles.assign({ player = self.cfg.player_number, pose = { p.x, p.y, p.a } },
+  ctx.role, ctx.roles, ctx.clearing = roles.assign({ player = self.cfg.player_number, pose = { p.x, p.y, p.a },
+    fallen = ctx.down },
     w.mates, self.role_cfg, ctx.team_ball, -w.cfg.field.length / 2, ctx.roles, ctx.clearing)
 end
 

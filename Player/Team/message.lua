@@ -3,7 +3,7 @@
 --
 --   local message = require('Team.message')
 --   local bytes = message.encode({ player_id = 2, team = 'red', pose = { x, y, a }, ball = { x, y },
---     ball_velocity = { vx, vy }, state = 'unpenalised', walk = { vx, vy, va }, stamp = { s, ns } })
+--     ball_velocity = { vx, vy }, state = 'unpenalised', fallen = false, walk = { vx, vy, va }, stamp = { s, ns } })
 --   local m, err = message.decode(bytes)   -- the same shape (absent parts nil); nil, err if malformed
 local ffi = require('ffi')
 local native = require('native')
@@ -23,6 +23,7 @@ typedef struct {
   int32_t has_target_pose; tc_robot target_pose;
   int32_t has_kick_target; float kick_target[2];
   int32_t state;
+  int32_t fallen;
 } tc_message;
 int tc_encode(const tc_message *m, uint8_t *buf, size_t cap, char *err, size_t errlen);
 int tc_decode(const uint8_t *buf, size_t len, tc_message *m, char *err, size_t errlen);
@@ -99,6 +100,7 @@ function M.encode(t)
     msg.has_kick_target = 1
     msg.kick_target[0], msg.kick_target[1] = t.kick_target[1], t.kick_target[2]
   end
+  msg.fallen = t.fallen and 1 or 0
   msg.state = M.STATE[t.state or 'unknown'] or error("Team.message: unknown state '" .. tostring(t.state) .. "'", 2)
   local n = lib.tc_encode(msg, buf, M.MAX_SIZE, err, 160)
   if n < 0 then error(ffi.string(err), 2) end
@@ -126,6 +128,7 @@ function M.decode(s)
   if msg.has_target_pose ~= 0 then t.target = get_robot(msg.target_pose) end
   if msg.has_kick_target ~= 0 then t.kick_target = { msg.kick_target[0], msg.kick_target[1] } end
   t.state = M.STATES[msg.state] or msg.state
+  t.fallen = msg.fallen ~= 0
   return t
 end
 

@@ -13,6 +13,10 @@
 --               striker takes the margin instead, so that two robots that disagree settle on one
 --   defender    the one nearest the own goal among the rest
 --   supporter   everyone else
+-- A robot that is down (falling, lying or getting up: its message's `fallen`, our extension field)
+-- reaches the ball `fallen_time` s later and keeps no margin, so an upright teammate near the ball
+-- takes it over: in a session-12 match the team's only striker lay on the ground 11% of the
+-- playing time while its defender waited a metre from the ball.
 -- A robot alone is the striker. Two (keeper_team = 3) are a striker and a defender: in the session-10
 -- league a goalkeeper of two lost to two lone strikers, and left the field from its poor pose belief
 -- near the goal line.
@@ -21,7 +25,7 @@
 -- clearance (Team/position.lua) instead of both going for the ball and blocking each other.
 --
 --   local role, assignment, clearing = roles.assign(me, mates, cfg, ball, own_goal_x, previous, was_clearing)
---   me / mates: { player, pose = {x, y, a}, [target = {x, y, a}, ball = {x, y}, ball_known] }
+--   me / mates: { player, pose = {x, y, a}, [target = {x, y, a}, ball = {x, y}, ball_known, fallen] }
 --   ball: {x, y} on the field or nil; cfg: game.lua roles
 --   previous: the last assignment ({ [player] = role }) or nil; its striker's margin counts only when
 --   the same robots play (one joins or is lost: a fresh choice, which every robot makes alike)
@@ -76,7 +80,7 @@ end
 
 -- Whether teammate r says it goes for the ball: the target in its message at its own ball.
 local function striking(r, cfg)
-  if not (r.target and r.ball_known) then return false end
+  if r.fallen or not (r.target and r.ball_known) then return false end
   local dx, dy = r.target[1] - r.ball[1], r.target[2] - r.ball[2]
   return dx * dx + dy * dy < cfg.striking_radius * cfg.striking_radius
 end
@@ -106,6 +110,7 @@ function M.assign(me, mates, cfg, ball, own_goal_x, previous, was_clearing)
   local function t_ball(r)
     local b = (r ~= me and r.ball_known and r.ball) or ball
     local tb = b and M.time_to_ball(r, b, cfg) or -r.pose[1]
+    if r.fallen then return tb + cfg.fallen_time end
     if r.player == kept then tb = tb - cfg.striker_margin end
     return tb
   end

@@ -10,9 +10,10 @@
 --   local team = require('Team.team').new(cfg, opts)   -- cfg: team_number, player_number, team (game.lua)
 --   team:update(t, me)        me = { pose = {x, y, a}, confidence, ball = {x, y, vx, vy} (field) or nil,
 --                             penalised = bool, colour = 0/1 (GameController's) or nil, walk = {vx, vy, va},
---                             target = {x, y, a} (where it goes: the ball for the striker) or nil }
+--                             target = {x, y, a} (where it goes: the ball for the striker) or nil,
+--                             fallen = bool (down: falling, lying, getting up; our extension field) }
 --   team:mates(t)             teammates heard within lost_after s: list of { player, age, pose, ball,
---                             target (nil: none sent), ... }
+--                             target (nil: none sent), fallen, ... }
 --   team:publish(block)       the `team` shm block
 local message = require('Team.message')
 local udp = require('GameFSM.udp')
@@ -37,7 +38,7 @@ function M.new(cfg, opts)
   }, Team)
   for k = 1, tc.max_players do
     self.slots[k] = { player = k, t = nil, pose = { 0, 0, 0 }, ball = { 0, 0, 0, 0 }, ball_known = false,
-      penalised = false, target = nil, target_xya = { 0, 0, 0 } }
+      penalised = false, fallen = false, target = nil, target_xya = { 0, 0, 0 } }
   end
   return self
 end
@@ -84,6 +85,7 @@ function Team:receive(data, t)
     s.ball[3], s.ball[4] = m.ball_velocity[1], m.ball_velocity[2]
   end
   s.penalised = m.state == 'penalised'
+  s.fallen = m.fallen
   local tp = m.target and m.target.pose
   if tp then s.target_xya[1], s.target_xya[2], s.target_xya[3] = tp[1], tp[2], tp[3] end
   s.target = tp and s.target_xya or nil
@@ -100,7 +102,7 @@ local function encode(self, me)
     pose = me.pose, ball = me.ball and { me.ball[1], me.ball[2], 0 } or nil,
     ball_velocity = me.ball and { me.ball[3], me.ball[4], 0 } or nil, walk = me.walk,
     target = me.target and { player_id = self.player, team = team, pose = me.target } or nil,
-    state = me.penalised and 'penalised' or 'unpenalised',
+    state = me.penalised and 'penalised' or 'unpenalised', fallen = me.fallen,
   })
 end
 

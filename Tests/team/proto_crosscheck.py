@@ -54,6 +54,7 @@ m.walk_command.x, m.walk_command.y, m.walk_command.z = 0.25, 0.05, -0.4
 m.target_pose.position.x, m.target_pose.position.y, m.target_pose.position.z = -1.0, 0.0, 3.14
 m.kick_target.x, m.kick_target.y = 4.5, 0.3
 m.state = pb.UNPENALISED
+m.fallen = True  # our extension field (101)
 path = os.path.join(WORK, 'from_python.bin')
 with open(path, 'wb') as f:
     f.write(m.SerializeToString())
@@ -72,6 +73,7 @@ ok(near(f32(d['walk']), [0.25, 0.05, -0.4]), 'python -> lua: walk command')
 ok(near(f32(d['target']), [-1.0, 0.0, 3.14]) and near(f32(d['kick_target']), [4.5, 0.3]),
    'python -> lua: target pose and kick target')
 ok(d['state'] == ['unpenalised'], 'python -> lua: state')
+ok(d['fallen'] == ['true'], 'python -> lua: fallen (extension field 101)')
 
 # 2. our encoder builds, Python reads
 path = os.path.join(WORK, 'from_lua.bin')
@@ -92,6 +94,7 @@ ok(near([p.walk_command.x, p.walk_command.y, p.walk_command.z], [0.2, -0.05, 0.3
 ok(p.HasField('target_pose') and near([p.kick_target.x, p.kick_target.y], [4.5, 0]),
    'lua -> python: target pose and kick target')
 ok(p.state == pb.PENALISED, 'lua -> python: state')
+ok(p.fallen, 'lua -> python: fallen (extension field 101)')
 
 for i, (good, name) in enumerate(results, 1):
     print(f"{'ok' if good else 'not ok'} {i} - {name}")

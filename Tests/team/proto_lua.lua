@@ -34,6 +34,7 @@ if mode == 'decode' then
   line('target', m.target.pose)
   line('kick_target', m.kick_target)
   print('state ' .. m.state)
+  print('fallen ' .. tostring(m.fallen))
 else
   local bytes = message.encode({
     stamp = { 1732400000, 123456789 }, player_id = 4, team = 'blue', pose = { -2.5, 1.25, -1.5 },
@@ -42,6 +43,7 @@ else
     others = { { player_id = 0, team = 'red', pose = { 1, 2, 0 } },
       { player_id = 2, team = 'blue', pose = { -1, 0, 3 } } },
     walk = { 0.2, -0.05, 0.3 }, target = { pose = { 0, 0, 0 } }, kick_target = { 4.5, 0 }, state = 'penalised',
+    fallen = true,
   })
   local f = assert(io.open(file, 'wb'))
   f:write(bytes)

@@ -121,6 +121,31 @@ describe('roles', function()
     assert.are.equal('striker', (roles.assign(two, { blind }, cfg(0), ball, GOAL_X, two_view)))
   end)
 
+  it('a striker that is down gives the ball to an upright teammate near it, not to one far away', function()
+    local rc = rules.roles
+    local striker = r(1, ball[1] - 0.1, 0.0)                    -- at the ball
+    local near = r(2, ball[1] - 1.0, 0.0)                       -- a metre short of it, facing it
+    local was = { [1] = 'striker', [2] = 'defender' }
+    assert.are.equal('defender', (roles.assign(near, { striker }, cfg(0), ball, GOAL_X, was)))
+    striker.fallen = true
+    -- both compute the same: the teammate takes the ball, the one lying down defends
+    assert.are.equal('striker', (roles.assign(near, { striker }, cfg(0), ball, GOAL_X, was)))
+    assert.are.equal('defender', (roles.assign(striker, { near }, cfg(0), ball, GOAL_X, was)))
+    -- its claim (target at its ball) does not count while it is down
+    striker.ball, striker.ball_known, striker.target = { ball[1], ball[2] }, true, { ball[1], ball[2], 0 }
+    assert.are.equal('striker', (roles.assign(near, { striker }, cfg(0), ball, GOAL_X, was)))
+    -- a teammate further than fallen_time's walk: the one lying at the ball keeps it
+    local far_x = ball[1] - (rc.fallen_time + 1.0) * rc.walk_speed
+    local far = r(2, far_x, 0.0)
+    assert.are.equal('defender', (roles.assign(far, { striker }, cfg(0), ball, GOAL_X, was)))
+    -- up again once the teammate has reached the ball: the new striker keeps it (the margin is its own)
+    striker.fallen = false
+    striker.target = { GOAL_X + 1.5, 0.0, 0 } -- it defends since it went down: its place, not the ball
+    near.pose[1] = ball[1] - 0.2
+    local now = { [1] = 'defender', [2] = 'striker' }
+    assert.are.equal('striker', (roles.assign(near, { striker }, cfg(0), ball, GOAL_X, now)))
+  end)
+
   it('the goalkeeper clears a ball near its goal only when first to it; the striker then waits upfield', function()
     -- a goalkeeper in a team of two (keeper_team 2: the rule, whatever the team size)
     local rc = rules.roles

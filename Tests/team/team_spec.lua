@@ -95,6 +95,17 @@ describe('team communication', function()
     assert.is_nil(a:mates(12.6)[1].target)
   end)
 
+  it('a teammate that is down says so (our extension field), and the table follows it', function()
+    local m = me(-3.0, nil)
+    m.fallen = true
+    b:update(14.0, m)
+    a:update(14.0, me(-1.0, nil))
+    assert.is_true(a:mates(14.0)[1].fallen)
+    b:update(14.6, me(-3.0, nil))
+    a:update(14.6, me(-1.0, nil))
+    assert.is_false(a:mates(14.6)[1].fallen)
+  end)
+
   it('reads a flood in bounded steps and keeps a fixed table', function()
     for k = 1, 200 do
       local m = message.encode({ player_id = 1 + k % 11, team = 'blue', pose = { k, 0, 0 } })
