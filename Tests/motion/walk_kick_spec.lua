@@ -85,7 +85,7 @@ for name, engine in pairs({ analytic = Walk, preview = WalkPreview }) do
         assert.is_true(t.y >= cfg.reach.y[1] - 1e-3)
         assert.same(rec.ticks[1].sup, t.sup)
       end
-      assert.is_true(minx < -0.05, 'wind-up behind the support ankle: ' .. minx)
+      assert.is_true(minx < -0.03, 'wind-up behind the support ankle: ' .. minx)
       -- the contact point (the ball's x, less the foot's face and the ball's depth) is passed
       local kick_step
       for _, s in ipairs(rec.steps) do if s.kick then kick_step = s end end
@@ -110,15 +110,35 @@ for name, engine in pairs({ analytic = Walk, preview = WalkPreview }) do
     end)
 
     it('drops a request no step honours in time and refuses bad kinds', function()
-      local _, k = new_walk(engine)
+      local _, k, p = new_walk(engine)
+      local expire = p.walkKick.expire
       assert.is_nil(k:request('volley', 'left'))
       assert.is_nil(k:request('forward', 'middle'))
       assert.is_true(k:request('side', 'right', nil, 1.0))
       assert.equal(1, k:phase())
-      k:expire(1.5, true)
+      k:expire(1.0 + expire - 0.1, true)
       assert.equal(1, k:phase())
-      k:expire(2.1, true)
+      k:expire(1.0 + expire + 0.1, true)
       assert.equal(0, k:phase())
+    end)
+
+    it('kicks a ball beyond ballMax from a later step of the foot, once the walk has brought it nearer', function()
+      local w0, _, p0 = new_walk(engine)
+      assert.is_not_nil(w0)
+      local far = p0.walkKick.forward.ballMax
+      assert.is_true(far ~= nil, 'the config sets walkKick.forward.ballMax')
+      -- the ball 0.1 m beyond it (robot frame, ahead of the left foot): at 0.12 m/s the walk needs
+      -- more than a step pair to bring it within
+      local rec, k = run(engine, 'forward', 'left', { far + 0.1, 0.06, 0 }, 2.0, 2.5)
+      assert.equal(1, k.count)
+      local kick_n
+      for _, s in ipairs(rec.steps) do if s.kick then kick_n = s.n end end
+      assert.is_true(kick_n - rec.asked_steps > 2, 'waited past the first step of the foot')
+      assert.is_true(rec.ball_rel[1] <= far, 'kicked from within ballMax: ' .. rec.ball_rel[1])
+      -- and a ball within it is kicked on the first step of the foot, as before
+      local near = run(engine, 'forward', 'left', { far - 0.03, 0.06, 0 }, 2.0, 1.5)
+      for _, s in ipairs(near.steps) do if s.kick then kick_n = s.n end end
+      assert.is_true(kick_n - near.asked_steps <= 2)
     end)
   end)
 end

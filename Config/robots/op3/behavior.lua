@@ -45,6 +45,10 @@ return {
     -- more (slowing for it, approach and align after it) than it gains over dribbling at 0.3 m/s.
     walk_kick = {
       enabled = true,
+      -- the zone the kick sends the ball 1.5 m or more from (Tests/motion/walk_kick_sweep.sh; the
+      -- walk waits for a step from which the ball is near enough: walk.lua walkKick.forward.ballMax)
+      x = { 0.17, 0.28 },
+      y = { 0.03, 0.09 },
       max_range = 1.4,         -- m: the kick sends the ball 1.05-1.4 m: a shot to finish, not a pass
       speed = 0.12,            -- m/s: the walk the kick was tuned at (walk_kick_tune.sh) ...
       max_vx = 0.14,           -- m/s: ... asked for below this (walk.lua walkKick.maxSpeed: 0.15)
