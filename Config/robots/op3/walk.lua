@@ -181,7 +181,8 @@ return {
   -- ball beyond `ballMax` (0.145 m ahead of the support ankle, the tuner's) at the kick step's start
   -- waits for the foot's next step (`expire` 2 s: two step pairs at 0.08 m/s). Over the kick zone
   -- (ball 0.17-0.28 m ahead of the torso, 0.03-0.09 m to the side, both feet, seeds 1-3, walking at
-  -- 0.12 and 0.08 m/s: Tests/motion/walk_kick_sweep.sh): 1.50-2.17 m, no fall, the robot walking on.
+  -- 0.12 m/s: Tests/motion/walk_kick_sweep.sh): 1.50-2.17 m, no fall, the robot walking on (at
+  -- 0.08 m/s: 1.48-2.06 m).
   -- The ball leaves the toe at about the toe's speed (~2 m/s) and keeps 3/5 of it once it rolls (a
   -- hollow ball sliding on the turf until it rolls).
   -- Found the hard way (session 8): a kick step whose single support
