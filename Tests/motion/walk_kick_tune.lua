@@ -44,11 +44,20 @@ local P = {
 }
 if kind == 'side' then
   P[4], P[9] = { 'phases.2.hipRoll', -0.4, 0.1 }, { 'phases.3.hipRoll', 0.0, 0.6 }
+  -- the side kick meets the ball beside the support foot, not ahead of it
+  for i, d in ipairs(P) do
+    if d[1] == 'contact.x' then P[i] = { 'contact.x', -0.04, 0.06 } end
+    if d[1] == 'ballMax' then P[i] = { 'ballMax', 0.0, 0.1 } end
+  end
 end
 
+-- the config's value at path, nil where the kind's config has none (a side kick's phase without a hip)
 local function get(path)
   local t = cfg
-  for part in path:gmatch('[^%.]+') do t = t[tonumber(part) or part] end
+  for part in path:gmatch('[^%.]+') do
+    if type(t) ~= 'table' then return nil end
+    t = rawget(t, tonumber(part) or part)
+  end
   return t
 end
 
@@ -123,7 +132,8 @@ end
 local CASES = kind == 'forward' and { { 'left', -0.06, -0.02 }, { 'left', -0.02, 0.02 }, { 'left', 0.02, -0.02 },
   { 'left', 0.06, 0.02 }, { 'right', -0.06, 0.02 }, { 'right', -0.02, -0.02 }, { 'right', 0.02, 0.02 },
   { 'right', 0.06, -0.02 } }
-  or { { 'left', 0, -0.02 }, { 'left', 0.03, 0.02 }, { 'right', 0, 0 } }
+  or { { 'left', -0.03, 0 }, { 'left', 0.03, 0.02 }, { 'left', 0, -0.02 }, { 'right', -0.03, 0.02 },
+    { 'right', 0.03, 0 }, { 'right', 0, -0.02 } }
 
 local function score(x)
   apply(x)

@@ -188,8 +188,10 @@ return {
   -- Found the hard way (session 8): a kick step whose single support
   -- lasts 0.4 s or more with the foot reaching 0.18 m ahead fell every time (the pendulum plan of a
   -- long single support is fragile), and a harder strike (hip -1.5, torso back 0.3 rad) fell after
-  -- the kick. side: set by hand (0.5-0.65 m sideways in its zone, not tuned; it misses a ball
-  -- 0.08 m ahead or 0.02 m off its line, and fell in 1-3 of 20 kicks of a wider sweep).
+  -- the kick. side: by the same search (six balls, both feet; was set by hand and missed a ball
+  -- 0.08 m ahead or 0.02 m off its line, and fell in 1-3 of 20 kicks of a wider sweep), its own
+  -- ballMax: over the ball 0.02-0.08 m ahead and +-0.02 m across its spot, seeds 1-2, 0.44-0.67 m
+  -- at 92-95 degrees walking at 0.12 m/s (0.37-0.66 m at 0.08 m/s), no miss, no fall.
   walkKick = {
     expire = 2.0,            -- s: a request no step honoured by then is dropped
     maxSpeed = { 0.15, 0.04, 0.3 }, -- m/s, m/s, rad/s: the walk no faster at the kick step's start
@@ -212,17 +214,20 @@ return {
       },
     },
     side = {
-      tStep = 0.7, phSingle = { 0.08, 0.92 },
+      tStep = 0.56, phSingle = { 0.08, 0.92 },
       ball = { x = 0.05, y = 0.13 },
-      contact = { x = 0.0, y = 0.12 },
-      reach = { x = { -0.06, 0.12 }, y = { 0.07, 0.2 } },
-      support = { x = 0.0, y = 0.0 },
+      ballMax = 0.0755,
+      contact = { x = 0.0118, y = 0.12 },
+      reach = { x = { -0.0971, 0.1167 }, y = { 0.07, 0.2 } },
+      support = { x = -0.002, y = 0.0022 },
       phases = {
         { duration = 0.06, y = -0.02, z = 0.04 },
-        { duration = 0.17, y = -0.06, z = 0.05, hipRoll = -0.2, knee = 0.0, ankle = 0.0 },
-        { duration = 0.04, y = 0.08, z = 0.05, hipRoll = 0.3, knee = 0.0, ankle = 0.0, tilt = 0.0 },
-        { duration = 0.1, y = 0.08, z = 0.05, hipRoll = 0.3, knee = 0.0, ankle = 0.0, tilt = 0.0 },
-        { duration = 0.12, y = 0.0, z = 0.04 },
+        { duration = 0.1351, y = -0.06, z = 0.0464, hip = 0.2618, hipRoll = -0.1101, knee = 0.0, ankle = -0.1058 },
+        { duration = 0.0434, y = 0.049, z = 0.0562, hip = -0.4019, hipRoll = 0.5134, knee = 0.0, ankle = 0.1045,
+          tilt = -0.0408, arms = 0.0492 },
+        { duration = 0.0646, y = 0.049, z = 0.0562, hip = -0.4019, hipRoll = 0.5134, knee = 0.0, ankle = 0.1045,
+          tilt = -0.0408, arms = 0.0492 },
+        { duration = 0.1077, y = 0.0, z = 0.04 },
       },
     },
   },
