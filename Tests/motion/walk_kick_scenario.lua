@@ -87,7 +87,7 @@ for _, sw in ipairs(sweeps) do
           r = Sim.truth()
           local phase, kicks = Walk.kick_status()
           if kicks > kicks0 and not kicked then kicked = Body.get_time() - t0 end
-          if trace and Body.get_time() - t0 < 1.5 then
+          if trace and Body.get_time() - t0 < 3.0 then -- a kick may wait up to walkKick.expire (2 s)
             local toe = ks.to_world(r, ks.toe_in_torso(foot, ks.leg(foot)))
             trace:write(string.format('%d %.3f %.4f %.4f %.4f %.4f %.4f %.4f %.4f %.4f %s\n', ncase,
               Body.get_time() - t0, toe[1], toe[2], toe[3], r.ball.x, r.ball.y, r.ball.z, r.x, r.y, phase))

@@ -6,7 +6,8 @@
 # OP3's kick zone: 1.50-2.17 m on seeds 1-3; WALK_KICK_MIN_SIDE 0.4 m: the side kick's 0.44-0.67 m)
 # while the robot walks on (no stop, no fall). Prints the distance per case
 # (Tests/motion/walk_kick_scenario.lua).
-#   Tests/motion/walk_kick_sweep.sh [SWEEPS] [FEET] [VX]     e.g. 'forward=-0.03,0.03/-0.02,0.02' left (default: the OP3's kick zone)
+#   Tests/motion/walk_kick_sweep.sh [SWEEPS] [FEET] [VX]     e.g. 'forward=-0.03,0.03/-0.02,0.02' left
+# (default: the OP3's forward kick zone and two side-kick balls, both feet, 0.12 m/s)
 # env: ROBOT_ID (default 9295), SIM_SEED, WALK_KICK_MIN_FORWARD, WALK_KICK_MIN_SIDE (m), WALK_KICK_TRACE=FILE (then plot it:
 # .venv/bin/python3 Tests/motion/plot_walk_kick.py FILE OUT.png)
 set -u

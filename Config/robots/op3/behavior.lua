@@ -43,9 +43,10 @@ return {
     -- 1.0-1.26 m kick 10/10, 54.8 s, no fall; with the 1.05-1.41 m kick 9/10, 57.8 s (the miss: a
     -- shot on a wrong pose; 3 falls in one run, while approaching). From further out the kick costs
     -- more (slowing for it, approach and align after it) than it gains over dribbling at 0.3 m/s.
-    -- With the 1.5-2.1 m kick (session 13, one run each, a league on the other core): max_range 1.4
-    -- 9/10, median 48.1 s; 1.9 9/10, 44.1 s and 10/10, 50.1 s; 2.2 7/10, 51.6 s (shots from 1.7 m
-    -- of the line went wide and out). Time still goes to dribbling (~25 s a run at 0.28 m/s).
+    -- With the 1.5-2.1 m kick (session 13, one run each; the first four beside a league): max_range
+    -- 1.4 9/10, median 48.1 s; 1.9 9/10 44.1 s, 10/10 50.1 s, then alone in make test 9/10 51.3 s
+    -- and 10/10 46.0 s; 2.2 7/10, 51.6 s (shots from 1.7 m of the line went wide and out). Time
+    -- still goes to dribbling (~24 s a run at 0.28 m/s).
     walk_kick = {
       enabled = true,
       -- the zone the kick sends the ball 1.5 m or more from (Tests/motion/walk_kick_sweep.sh; the

@@ -183,8 +183,8 @@ return {
   -- (ball 0.17-0.28 m ahead of the torso, 0.03-0.09 m to the side, both feet, seeds 1-3, walking at
   -- 0.12 m/s: Tests/motion/walk_kick_sweep.sh): 1.50-2.17 m, no fall, the robot walking on (at
   -- 0.08 m/s: 1.48-2.06 m).
-  -- The ball leaves the toe at about the toe's speed (~2 m/s) and keeps 3/5 of it once it rolls (a
-  -- hollow ball sliding on the turf until it rolls).
+  -- The ball leaves the toe at 2.0-2.1 m/s and rolls on at 1.2-1.3 m/s, 3/5 of it (a hollow ball
+  -- slides on the turf until it rolls; WALK_KICK_TRACE of the sweep, two near balls).
   -- Found the hard way (session 8): a kick step whose single support
   -- lasts 0.4 s or more with the foot reaching 0.18 m ahead fell every time (the pendulum plan of a
   -- long single support is fragile), and a harder strike (hip -1.5, torso back 0.3 rad) fell after
