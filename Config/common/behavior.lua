@@ -104,6 +104,7 @@ return {
 
   body = {
     search_turn_speed = 0.5,   -- rad/s
+    search_look_time = 0.0,    -- s standing while the head sweeps once before turning (0: turn at once)
     search_back_near = 0.5,    -- m: a ball lost nearer than this: step back first
     search_back_speed = 0.08,  -- m/s
     approach_behind = 0.30,    -- m: aim at this point behind the ball (away from the goal)
@@ -194,12 +195,15 @@ return {
       max_age = 0.5,           -- s: the ball seen this recently
       max_angle = 0.3,         -- rad: the goal's direction from the ball this near the heading ...
       margin = 0.3,            -- m: ... and within the goal's mouth less this margin each side
+      x_far = 0.0,             -- m: a ball up to this beyond x[2] is taken too (the body's walk
+                               -- kick waits for a step near enough: walkKick.<kind>.ballMax)
       max_range = 6.0,         -- m: the goal this near
       max_vy = 0.03,           -- m/s: the walk's sideways speed at most this ...
       max_va = 0.2,            -- rad/s: ... and its turning
       speed = 0.08,            -- m/s: walking on straight while the kick is asked for and made
       max_vx = 0.13,           -- m/s: the kick is asked for once the walk is this slow
       timeout = 2.0,           -- s waiting for the kick
+      close_gain = 0.0,        -- 1/s: the walk closes on a ball beyond x[2] before slowing (0: slows at once)
     },
     attack_depth = 0.5,        -- m behind the goal line: the point aimed at
     dribble_distance = 1.2,    -- m: nearer than this to the goal line, walk the ball in

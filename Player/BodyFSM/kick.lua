@@ -24,9 +24,15 @@ function M.update(ctx)
     -- walk on straight; the kick is asked for once the walk is as slow as the kick is made for
     -- (a kick step out of a faster walk throws the robot back), the walk takes it on its next step
     local wk = cfg.walk_kick
-    ctx.act.walk(wk.speed, 0, 0)
+    local b = ctx.world.ball
+    -- a ball rolling on ahead (pushed while dribbling) is closed on first: the walk slows to the
+    -- kick's speed as the ball comes back to the zone's far end (close_gain 1/s; 0: slow at once)
+    local vx = wk.speed
+    if not kicked then
+      vx = math.min(math.max(wk.speed + (wk.close_gain or 0) * (b.x - wk.x[2]), wk.speed), cfg.max_vx)
+    end
+    ctx.act.walk(vx, 0, 0)
     if not kicked and ctx.act.walk_velocity() <= wk.max_vx then
-      local b = ctx.world.ball
       kicked = ctx.act.walk_kick('forward', ctx.kick_side or (b.y >= 0 and 'left' or 'right'), b.x, b.y)
     end
     if ctx.act.walk_kicks() > kicks0 or ctx.t - t0 > wk.timeout then return 'done' end

@@ -1,8 +1,11 @@
 -- Turn on the spot (towards where the ball was last) until it is seen; then wander. A ball lost at
 -- the feet (below or behind the camera's view) is looked for by stepping back first: turning on
--- the spot would keep it there, and push it about.
+-- the spot would keep it there, and push it about. Any other is looked for standing first, for
+-- search_look_time s while the head sweeps its whole range once (HeadFSM/scan.lua, restarted by
+-- ctx.scan_restart): the turn sweeps only the view straight ahead, and a ball beside the robot
+-- the turn went away from was found only after a whole turn.
 local M = {}
-local t0, dir, back_until
+local t0, dir, back_until, look_until
 
 function M.entry(ctx)
   local cfg = ctx.cfg.body
@@ -11,6 +14,11 @@ function M.entry(ctx)
   dir = (b.y >= 0) and 1 or -1
   local near = b.seen and b.x * b.x + b.y * b.y < cfg.search_back_near ^ 2
   back_until = near and t0 + cfg.search_back_time or t0
+  look_until = back_until
+  if not near and (cfg.search_look_time or 0) > 0 then
+    look_until = t0 + cfg.search_look_time
+    ctx.scan_restart = t0
+  end
 end
 
 function M.exit(ctx) ctx.body_turning = nil end
@@ -20,11 +28,13 @@ function M.update(ctx)
   if ctx.world:ball_age() < 0.3 then return 'ball' end
   if ctx.t < back_until then
     ctx.act.walk(-cfg.search_back_speed, 0, 0)
+  elseif ctx.t < look_until then
+    ctx.act.walk(0, 0, 0)
   else
     ctx.act.walk(0, 0, dir * cfg.search_turn_speed)
     ctx.body_turning = true
   end
-  if ctx.t - back_until > cfg.search_turn_time then return 'timeout' end
+  if ctx.t - look_until > cfg.search_turn_time then return 'timeout' end
 end
 
 return M

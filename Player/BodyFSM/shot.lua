@@ -14,7 +14,10 @@ function M.foot(ctx)
   if not (wk and wk.enabled) or not ctx.world:ball_known() or localize.needed(ctx) then return nil end
   if ctx.world:ball_age() > wk.max_age then return nil end
   local bx, by, ux, uy, dist = nav.attack(ctx)
-  if bx < wk.x[1] or bx > wk.x[2] or math.abs(by) < wk.y[1] or math.abs(by) > wk.y[2] then return nil end
+  -- (a ball up to x_far further ahead is taken too: the walk waits for a step of the kicking foot
+  -- that starts near enough, walk.lua walkKick.<kind>.ballMax, while it walks on at the kick's speed)
+  local x_hi = wk.x[2] + (wk.x_far or 0)
+  if bx < wk.x[1] or bx > x_hi or math.abs(by) < wk.y[1] or math.abs(by) > wk.y[2] then return nil end
   if dist > wk.max_range then return nil end
   -- the kick is made for walking straight on: not while side-stepping or turning
   local _, vy, va = ctx.act.walk_velocity()

@@ -17,6 +17,8 @@ function M.update(ctx)
   local cfg = ctx.cfg.head
   local w = ctx.world
   if w:ball_age() < 0.2 then return 'ball' end
+  -- the body stands to look (BodyFSM/search.lua): a sweep from the start, on the far row first
+  if ctx.scan_restart and ctx.scan_restart > t_rows then t0, t_rows = ctx.scan_restart, ctx.scan_restart end
   local pan, tilt
   if ctx.t < t_rows then
     -- around the estimate, swinging +-scan_swing

@@ -42,7 +42,11 @@ describe('shot.foot', function()
   end)
 
   it('holds off with the ball out of the zone, centred, or the goal off to the side or too far', function()
-    assert.is_nil(shot.foot(ctx(2.0, 0, 0, 0.5, 0.06)))          -- too far ahead
+    local wk = cfg.body.walk_kick
+    local far = wk.x[2] + wk.x_far
+    assert.is_nil(shot.foot(ctx(2.0, 0, 0, far + 0.02, 0.06)))   -- too far ahead
+    assert.equal('left', shot.foot(ctx(2.0, 0, 0, far - 0.01, 0.06))) -- beyond the zone, the walk waits for a step
+    assert.is_nil(shot.foot(ctx(2.0, 0, 0, wk.x[1] - 0.01, 0.06))) -- too near
     assert.is_nil(shot.foot(ctx(2.0, 0, 0, 0.2, 0.0)))           -- between the feet
     assert.is_nil(shot.foot(ctx(2.0, 0, 0, 0.2, 0.2)))           -- beside the robot
     assert.is_nil(shot.foot(ctx(2.0, 0, 0.8, 0.2, 0.06)))        -- facing away from the goal
@@ -51,8 +55,10 @@ describe('shot.foot', function()
   end)
 
   it('holds off while turning or side-stepping, or when the pose is not trusted', function()
-    assert.is_nil(shot.foot(ctx(2.0, 0, 0, 0.2, 0.06, { va = 0.5 })))
-    assert.is_nil(shot.foot(ctx(2.0, 0, 0, 0.2, 0.06, { vy = 0.08 })))
+    local wk = cfg.body.walk_kick
+    assert.is_nil(shot.foot(ctx(2.0, 0, 0, 0.2, 0.06, { va = wk.max_va + 0.05 })))
+    assert.is_nil(shot.foot(ctx(2.0, 0, 0, 0.2, 0.06, { vy = wk.max_vy + 0.02 })))
+    assert.equal('left', shot.foot(ctx(2.0, 0, 0, 0.2, 0.06, { vy = wk.max_vy - 0.01, va = wk.max_va - 0.05 })))
     assert.is_nil(shot.foot(ctx(2.0, 0, 0, 0.2, 0.06, { confidence = 0.1 })))
   end)
 end)

@@ -17,6 +17,10 @@ return {
     approach_speed = 0.38,     -- m/s (was 0.32)
     max_vx = 0.38,             -- m/s (was 0.34)
     search_turn_speed = 0.8,   -- rad/s (the walk turns ~0.4 rad/s of it now: Player/Motion/walk.lua)
+    -- standing for one sweep of the head (scan_period / 2 = 2 s, the far row's +-1.4 rad: with the
+    -- camera's view, +-1.9 rad round the heading) before turning: a ball 3-4 m away at 0.6-1.2 rad
+    -- was seen at ~2 s in some runs and after a whole turn (~8 s) in others (score_test's seeds 1, 5, 7)
+    search_look_time = 2.3,    -- s
     kick_x = 0.17,             -- m: ball this far ahead of the torso when kicking
     kick_y = 0.06,             -- m: ball this far to the side (towards the kicking foot)
     -- walking the ball to the goal instead of kicking (the standing kick stops the walk)
@@ -53,6 +57,10 @@ return {
       -- walk waits for a step from which the ball is near enough: walk.lua walkKick.forward.ballMax)
       x = { 0.17, 0.28 },
       y = { 0.03, 0.09 },
+      x_far = 0.12,            -- m: a ball beyond x[2] by up to this is taken (the walk waits for a step)
+      close_gain = 1.5,        -- 1/s: closing on a ball that rolled on (BodyFSM/kick.lua)
+      timeout = 3.0,           -- s (a kick waits up to walkKick.expire = 2 s after it is asked)
+      max_vy = 0.08,           -- m/s (the kick state stops side-stepping before it asks)
       max_range = 1.9,         -- m: the ball within 1.4 m of the goal line (the kick: 1.5-2.1 m)
       speed = 0.12,            -- m/s: the walk the kick was tuned at (walk_kick_tune.sh) ...
       max_vx = 0.14,           -- m/s: ... asked for below this (walk.lua walkKick.maxSpeed: 0.15)
