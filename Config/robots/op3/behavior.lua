@@ -16,7 +16,7 @@ return {
     -- (0.38 m/s forward, 0.22 m/s sideways); the feet slip: 0.38 commanded walks ~0.30 m/s
     approach_speed = 0.38,     -- m/s (was 0.32)
     max_vx = 0.38,             -- m/s (was 0.34)
-    search_turn_speed = 0.8,   -- rad/s (the walk turns ~0.4 rad/s of it now: Player/Motion/walk.lua)
+    search_turn_speed = 1.1,   -- rad/s (was 0.8: a ball behind was first seen 0.8 s sooner, score_test)
     -- standing for one sweep of the head (scan_period / 2 = 2 s, the far row's +-1.4 rad: with the
     -- camera's view, +-1.9 rad round the heading) before turning: a ball 3-4 m away at 0.6-1.2 rad
     -- was seen at ~2 s in some runs and after a whole turn (~8 s) in others (score_test's seeds 1, 5, 7)
@@ -50,7 +50,10 @@ return {
     -- With the 1.5-2.1 m kick (session 13, one run each; the first four beside a league): max_range
     -- 1.4 9/10, median 48.1 s; 1.9 9/10 44.1 s, 10/10 50.1 s, then alone in make test 9/10 51.3 s
     -- and 10/10 46.0 s; 2.2 7/10, 51.6 s (shots from 1.7 m of the line went wide and out). Time
-    -- still goes to dribbling (~24 s a run at 0.28 m/s).
+    -- still goes to dribbling (~24 s a run at 0.28 m/s). Session 14 (one run each, beside a push
+    -- tuning run): as above 8/10, 45.9 s; closing on the ball, x_far, max_vy 0.08 and the search's
+    -- look 10/10, 44.5 s; and the search turning at 1.1 rad/s 10/10, 42.5 s; max_range 2.3 with
+    -- both 9/10, 46.1 s (shots from ~2 m of the line stopped short: a second kick).
     walk_kick = {
       enabled = true,
       -- the zone the kick sends the ball 1.5 m or more from (Tests/motion/walk_kick_sweep.sh; the
