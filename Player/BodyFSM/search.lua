@@ -1,9 +1,10 @@
 -- Turn on the spot (towards where the ball was last) until it is seen; then wander. A ball lost at
 -- the feet (below or behind the camera's view) is looked for by stepping back first: turning on
--- the spot would keep it there, and push it about. Any other is looked for standing first, for
--- search_look_time s while the head sweeps its whole range once (HeadFSM/scan.lua, restarted by
--- ctx.scan_restart): the turn sweeps only the view straight ahead, and a ball beside the robot
--- the turn went away from was found only after a whole turn.
+-- the spot would keep it there, and push it about. A ball never seen yet (nothing says which way
+-- to turn) is looked for standing first, for search_look_time s while the head sweeps its whole
+-- range once (HeadFSM/scan.lua, restarted by ctx.scan_restart): the turn sweeps only the view
+-- straight ahead, and a ball beside the robot the turn went away from was found only after a
+-- whole turn.
 local M = {}
 local t0, dir, back_until, look_until
 
@@ -15,7 +16,7 @@ function M.entry(ctx)
   local near = b.seen and b.x * b.x + b.y * b.y < cfg.search_back_near ^ 2
   back_until = near and t0 + cfg.search_back_time or t0
   look_until = back_until
-  if not near and (cfg.search_look_time or 0) > 0 then
+  if not b.seen and (cfg.search_look_time or 0) > 0 then
     look_until = t0 + cfg.search_look_time
     ctx.scan_restart = t0
   end

@@ -53,6 +53,17 @@ describe('search', function()
     search.exit(c)
   end)
 
+  it('turns at once towards a ball seen before (no look)', function()
+    local c = context(100, 2.0, -1.0, 5.0, true)
+    c.scan_restart = nil
+    search.entry(c)
+    assert.is_nil(c.scan_restart)
+    c.t = 100.1
+    search.update(c)
+    assert.equal(-cfg.body.search_turn_speed, c.walks[#c.walks][3]) -- to its side (right)
+    search.exit(c)
+  end)
+
   it('steps back at once for a ball lost at the feet (no look)', function()
     local c = context(100, 0.1, 0.0, 1.0, true)
     c.scan_restart = nil

@@ -17,9 +17,10 @@ return {
     approach_speed = 0.38,     -- m/s (was 0.32)
     max_vx = 0.38,             -- m/s (was 0.34)
     search_turn_speed = 1.1,   -- rad/s (was 0.8: a ball behind was first seen 0.8 s sooner, score_test)
-    -- standing for one sweep of the head (scan_period / 2 = 2 s, the far row's +-1.4 rad: with the
-    -- camera's view, +-1.9 rad round the heading) before turning: a ball 3-4 m away at 0.6-1.2 rad
-    -- was seen at ~2 s in some runs and after a whole turn (~8 s) in others (score_test's seeds 1, 5, 7)
+    -- a ball never seen: standing for one sweep of the head (scan_period / 2 = 2 s, the far row's
+    -- +-1.4 rad: with the camera's view, +-1.9 rad round the heading) before turning: a ball 3-4 m
+    -- away at 0.6-1.2 rad was seen at ~2 s in some runs and after a whole turn (~8 s) in others
+    -- (score_test's seeds 1, 5, 7)
     search_look_time = 2.3,    -- s
     kick_x = 0.17,             -- m: ball this far ahead of the torso when kicking
     kick_y = 0.06,             -- m: ball this far to the side (towards the kicking foot)
