@@ -4,14 +4,14 @@
 -- FORCES: N for 0.1 s on the torso, to the robot's left (comma list); MOMENTS: when in the gait
 -- cycle, k x tStep/2 after 3 s of walking at 0.2 m/s (comma list, 0..3, as the pushmax scenario);
 -- GAIN: stepAdjust.gain for the run (default: the config's). For each force and moment: survived or
--- fell, and the step adjustment's counts. OUT.csv (the last case): time, truth (x, y, yaw, roll),
+-- fell (how long after the push), the torso's turn since the push, and the step adjustment's counts. OUT.csv (the last case): time, truth (x, y, yaw, roll),
 -- the walk's COM and feet (its ground frame), the IMU's capture point error, support, swing height.
 -- luacheck: globals Sim Motion Walk wait Body
 package.path = os.getenv('HRP_ROOT') .. '/Tests/motion/?.lua;' .. package.path
 if not Sim then Sim = require('sim_shim') end -- luacheck: ignore Sim
 local ks = require('kick_setup')
 local sc = require('Tests.scenario_lib').new(wait, Body)
-local note = sc.note
+local note, wait_until = sc.note, sc.wait_until
 local motion = ks.wait_for_motion(wait)
 if not motion then print('not ok 1 - the motion process is not running') os.exit(1) end
 
@@ -30,7 +30,12 @@ local function one(f, k, csv)
   wait(0.2)
   Walk.set_velocity(0, 0, 0)
   Motion.request('stand')
-  wait(2.5)
+  -- after a fall the motion process stands up first (a fixed wait started the next push on a robot
+  -- still lying down: counted as a fall at once); then as sim_scenarios.lua's pushmax
+  if not wait_until(function() return Motion.state() == 'stance' end, 15) then
+    error('push_trace: the robot is not back in stance 15 s after a reset (state ' .. Motion.state() .. ')')
+  end
+  wait(1.5)
   Motion.request('walk')
   Walk.set_velocity(0.2, 0, 0)
   wait(3 + k * Walk.get('tStep') / 2)
@@ -38,7 +43,9 @@ local function one(f, k, csv)
   local falls0, adj0 = Motion.falls(), motion.steps_adjusted[0]
   local t0 = Body.get_time()
   Sim.push(-f * math.sin(a.yaw), f * math.cos(a.yaw), 0.1)
-  local fell = false
+  -- fell: s after the push; yaw: the torso's turn since the push until then (a late fall follows a
+  -- spin on the support foot)
+  local fell, yaw = false, 0
   local dt = require('Config').load('robot').period
   while Body.get_time() - t0 < 3 do
     local s = Sim.truth()
@@ -48,11 +55,13 @@ local function one(f, k, csv)
       csv:write(string.format(fmt, Body.get_time() - t0, s.x, s.y, s.yaw, s.roll, s.pitch, wc[0], wc[1],
         wf[0], wf[1], wf[2], wf[3], wf[4], wf[5], e[0], e[1]))
     end
-    if s.fallen or Motion.falls() > falls0 then fell = true if not csv then break end end
+    if not fell then yaw = (s.yaw - a.yaw + math.pi) % (2 * math.pi) - math.pi end
+    if not fell and (s.fallen or Motion.falls() > falls0) then fell = Body.get_time() - t0 end
+    if fell and not csv then break end
     wait(dt)
   end
-  note('push %.1f N x 0.1 s at moment %d: %s, landings moved %d', f, k, fell and 'FELL' or 'survived',
-    motion.steps_adjusted[0] - adj0)
+  note('push %.1f N x 0.1 s at moment %d: %s, turned %.2f rad, landings moved %d', f, k,
+    fell and string.format('FELL %.2f s after', fell) or 'survived', yaw, motion.steps_adjusted[0] - adj0)
   return not fell
 end
 
