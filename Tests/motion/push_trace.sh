@@ -3,7 +3,8 @@
 # logged tick by tick and plotted (truth, the walk's COM and feet, the capture point error):
 #   Tests/motion/push_trace.sh FORCES MOMENTS [GAIN] [OUTDIR]   e.g. push_trace.sh 20 0,1,2,3 1.0
 # FORCES, MOMENTS: comma lists (N for 0.1 s; k x tStep/2 into the gait cycle); GAIN: stepAdjust.gain
-# (0: off); writes OUTDIR/push.csv and OUTDIR/push.png (default build/test-logs/push).
+# (0: off); writes OUTDIR/push.csv, OUTDIR/push.png and OUTDIR/push_feet.png (the feet: plot_push_feet.py;
+# default build/test-logs/push).
 set -u
 source "$(dirname "$0")/kick_sim.sh"
 out=${4:-$HRP_ROOT/build/test-logs/push}
@@ -11,5 +12,7 @@ mkdir -p "$out"
 kick_sim_run "${ROBOT_ID:-9295}" "$out/main.log" \
   timeout 900 ./run_repl Tests/motion/push_trace.lua "$out/push.csv" "${1:-20}" "${2:-0,1,2,3}" ${3:+"$3"}
 rc=$?
-[ $rc -eq 0 ] && python3 Tests/motion/plot_push.py "$out/push.csv" "$out/push.png" "push ${1:-20} N x 0.1 s, moment ${2:-0,1,2,3}, gain ${3:-config}"
+title="push ${1:-20} N x 0.1 s, moment ${2:-0,1,2,3}, gain ${3:-config}"
+[ $rc -eq 0 ] && python3 Tests/motion/plot_push.py "$out/push.csv" "$out/push.png" "$title" &&
+  python3 Tests/motion/plot_push_feet.py "$out/push.csv" "$out/push_feet.png" "$title"
 exit $rc
