@@ -34,8 +34,10 @@ return {
   -- activateFull 0): with them on and gated (velocityLeak 0.6, capture = captureHip = { 2, 0 },
   -- activateFull { 0, 0.05 }, activateHold 1.0) the push sweep (8 moments, seeds 1, 2) survives
   -- 2.2 N s at 5/8 moments (1/8-0/8 off) and 1.0 N s at 8/8, but pushmax (all of 4 moments at each
-  -- force of a bisection) falls to 0.93-0.96 N s (1.34-1.41 off): each push is chaotic, and a fall
-  -- at one moment of a mid-sized push ends the bisection; the scoring scenario gave 8/10 with 0
+  -- force of a bisection) gave 0.93-0.96 N s then and 1.438 on seeds 1 and 2 in session 14 (1.343,
+  -- 1.407 off): a push at moment 0 (the far foot's step starting, the body swaying onto the near
+  -- foot) falls from 14-16 N whatever the gains, as only the near sole's edge can catch it (~1.4 N s
+  -- by the linear pendulum; a crossing step would be needed); the scoring scenario gave 8/10 with 0
   -- falls and 9/10 with 2 (off: 10/10, 1 fall). README: the pushes.
   stepAdjust = { gain = 1.0, deadband = { 0.03, 0.02 }, max = { 0.05, 0.08 }, switchError = 1,
     touchdownError = 1, touchdownTime = 0.05, level = { 0, 0 }, levelTime = 0.15, velocityLeak = 0,
