@@ -204,6 +204,8 @@ return {
       max_vx = 0.13,           -- m/s: the kick is asked for once the walk is this slow
       timeout = 2.0,           -- s waiting for the kick
       close_gain = 0.0,        -- 1/s: the walk closes on a ball beyond x[2] before slowing (0: slows at once)
+      follow = false,          -- the request asked again each tick with the ball's fresh place until its step
+      keep_ball = false,       -- the head stays on the ball meanwhile (no look at the goal)
     },
     attack_depth = 0.5,        -- m behind the goal line: the point aimed at
     dribble_distance = 1.2,    -- m: nearer than this to the goal line, walk the ball in

@@ -111,6 +111,12 @@ function M.walk_kicks()
   return n
 end
 
+-- The kick out of the walk: 'none', 'asked' (waiting for its step) or 'kicking'.
+function M.walk_kick_phase()
+  if not (Walk and Walk.kick_status) then return 'none' end
+  return (Walk.kick_status())
+end
+
 -- Head angles (rad): pan, tilt in the joint convention of Config/<platform>/robot.lua.
 function M.head(pan, tilt)
   motion.head_command[0], motion.head_command[1] = pan, tilt

@@ -4,6 +4,8 @@
 local M = {}
 local t0, kicked, seen_kick, walking, kicks0
 
+function M.exit(ctx) ctx.keep_ball = nil end
+
 function M.entry(ctx)
   local cfg = ctx.cfg.body
   t0 = ctx.t
@@ -13,6 +15,8 @@ function M.entry(ctx)
   if walking then
     kicks0 = ctx.act.walk_kicks()
     kicked = false
+    -- the head stays on the ball (no look at the goal): the strike is aimed at its place
+    ctx.keep_ball = wk.keep_ball
   else
     kicked = cfg.use_kick and ctx.act.kick(ctx.kick_side or 'left')
   end
@@ -32,8 +36,13 @@ function M.update(ctx)
       vx = math.min(math.max(wk.speed + (wk.close_gain or 0) * (b.x - wk.x[2]), wk.speed), cfg.max_vx)
     end
     ctx.act.walk(vx, 0, 0)
-    if not kicked and ctx.act.walk_velocity() <= wk.max_vx then
+    -- asked again each tick while the kick waits for its step, with the ball's place as last seen:
+    -- a dribbled ball rolls on and sways, and the strike is aimed where it was asked for
+    local fresh = ctx.world:ball_age() < wk.max_age
+    if ctx.act.walk_velocity() <= wk.max_vx
+      and (not kicked or (wk.follow and fresh and ctx.act.walk_kick_phase() == 'asked')) then
       kicked = ctx.act.walk_kick('forward', ctx.kick_side or (b.y >= 0 and 'left' or 'right'), b.x, b.y)
+        or kicked
     end
     if ctx.act.walk_kicks() > kicks0 or ctx.t - t0 > wk.timeout then return 'done' end
   elseif kicked then

@@ -22,10 +22,15 @@ function M.foot(ctx)
   -- the kick is made for walking straight on: not while side-stepping or turning
   local _, vy, va = ctx.act.walk_velocity()
   if math.abs(vy) > wk.max_vy or math.abs(va) > wk.max_va then return nil end
-  -- the goal's direction from the ball within the angle the goal's mouth (less a margin) allows
-  local gw = ctx.world.cfg.field.goal_width / 2 - wk.margin
-  local allowed = math.min(wk.max_angle, math.atan2(math.max(gw, 0), math.max(dist - (cfg.attack_depth or 0), 0.1)))
-  if math.abs(nav.wrap(math.atan2(uy, ux))) > allowed then return nil end
+  -- the aim's direction near the heading, and the heading's line from the ball into the goal's
+  -- mouth less a margin each side (the right post's end seen to the right of it, the left's to the left)
+  if math.abs(nav.wrap(math.atan2(uy, ux))) > wk.max_angle then return nil end
+  local f = ctx.world.cfg.field
+  local gw = f.goal_width / 2 - wk.margin
+  if gw <= 0 then return nil end
+  local rx, ry = ctx.world:to_robot(f.length / 2, -gw)
+  local lx, ly = ctx.world:to_robot(f.length / 2, gw)
+  if not (math.atan2(ry - by, rx - bx) < 0 and math.atan2(ly - by, lx - bx) > 0) then return nil end
   return by > 0 and 'left' or 'right'
 end
 

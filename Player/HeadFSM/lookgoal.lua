@@ -16,6 +16,8 @@ end
 function M.update(ctx)
   local cfg = ctx.cfg.head
   local dt = ctx.t - t0
+  -- the body aims a kick at the ball: back to it (its place goes stale while the head is away)
+  if ctx.keep_ball and not sweep then return 'done' end
   local pan, tilt
   if sweep then
     local u = math.min(1, dt / cfg.look_around_time)

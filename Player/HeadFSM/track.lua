@@ -1,6 +1,7 @@
 -- Keep the camera on the ball (the world model's estimate); every so often look for the goal:
 -- more often while the pose is not trusted, or near the opponent goal (where aiming needs it),
--- and at once when the body asks (ctx.look_around).
+-- and at once when the body asks (ctx.look_around); never while the body needs the ball's place
+-- fresh (ctx.keep_ball: a kick out of the walk aims its strike at it).
 local point = require('HeadFSM.point')
 
 local M = {}
@@ -26,7 +27,7 @@ function M.update(ctx)
     local gx, gy = w:goal_in_robot_frame()
     if gx * gx + gy * gy < cfg.near_goal ^ 2 then every = cfg.look_goal_every_near end
   end
-  if ctx.t - t0 > every then return 'timeout' end
+  if ctx.t - t0 > every and not ctx.keep_ball then return 'timeout' end
 end
 
 return M

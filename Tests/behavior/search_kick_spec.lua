@@ -5,6 +5,8 @@ local Config = require('Config')
 local search = require('BodyFSM.search')
 local scan = require('HeadFSM.scan')
 local kick = require('BodyFSM.kick')
+local track = require('HeadFSM.track')
+local lookgoal = require('HeadFSM.lookgoal')
 
 local cfg = Config.load('behavior', nil, { robot = 'op3', platform = 'Sim' })
 
@@ -78,13 +80,19 @@ end)
 
 describe('walking kick', function()
   local wk = cfg.body.walk_kick
+  -- the fake walk: requests are recorded; `made` kicks done, `phase` the request's state
   local function kick_ctx(bx, walk_vx)
     local c = context(10, bx, 0.06, 0.0, true)
-    c.kicks = {}
+    c.kicks, c.made, c.phase = {}, 0, 'none'
     c.act.motion_state = function() return 'walk' end
-    c.act.walk_kicks = function() return #c.kicks end
+    c.act.walk_kicks = function() return c.made end
+    c.act.walk_kick_phase = function() return c.phase end
     c.act.walk_velocity = function() return walk_vx, 0, 0 end
-    c.act.walk_kick = function(kind, foot) c.kicks[#c.kicks + 1] = { kind, foot } return true end
+    c.act.walk_kick = function(kind, foot, x, y)
+      c.kicks[#c.kicks + 1] = { kind, foot, x, y }
+      c.phase = 'asked'
+      return true
+    end
     c.kick_side = 'left'
     return c
   end
@@ -102,9 +110,55 @@ describe('walking kick', function()
     c.act.walk_velocity = function() return wk.max_vx - 0.01, 0, 0 end
     kick.update(c)
     assert.near(wk.speed, c.walks[#c.walks][1], 1e-9)
-    assert.same({ { 'forward', 'left' } }, c.kicks)
+    assert.same({ { 'forward', 'left', wk.x[2], 0.06 } }, c.kicks)
     -- done once the walk reports the kick
+    c.made = 1
     assert.equal('done', kick.update(c))
+    kick.exit(c)
+  end)
+
+  it('asks again with the ball\'s fresh place until the kick step starts, the head kept on it', function()
+    assert.is_true(wk.follow and wk.keep_ball) -- (the OP3's config turns both on)
+    local c = kick_ctx(wk.x[2], wk.max_vx - 0.01)
+    kick.entry(c)
+    assert.is_true(c.keep_ball)
+    kick.update(c)
+    assert.equal(1, #c.kicks)
+    -- the ball rolled on and sideways, seen again: asked again with its new place
+    c.world.ball.x, c.world.ball.y = wk.x[2] - 0.03, 0.08
+    kick.update(c)
+    assert.same({ 'forward', 'left', wk.x[2] - 0.03, 0.08 }, c.kicks[2])
+    -- not seen for longer than max_age: its old request stands
+    c.world.ball_age = function() return wk.max_age + 0.1 end
+    kick.update(c)
+    assert.equal(2, #c.kicks)
+    -- the kick step has begun: never asked again (a second request would kick twice)
+    c.world.ball_age = function() return 0 end
+    c.phase = 'kicking'
+    kick.update(c)
+    kick.update(c)
+    assert.equal(2, #c.kicks)
+    kick.exit(c)
+    assert.is_nil(c.keep_ball)
+  end)
+
+  it('keeps the head on the ball: no look at the goal while it waits (keep_ball)', function()
+    local c = kick_ctx(wk.x[2], wk.max_vx - 0.01)
+    c.world.localised = function() return true end
+    c.world.goal_in_robot_frame = function() return 1.0, 0.0 end -- near the goal: looks often
+    track.entry(c)
+    c.t = 10 + cfg.head.look_goal_every + 0.1
+    assert.equal('timeout', track.update(c)) -- (without the kick state: time to look at the goal)
+    kick.entry(c)
+    track.entry(c)
+    c.t = c.t + cfg.head.look_goal_every + 0.1
+    assert.is_nil(track.update(c))
+    -- a look at the goal already begun ends at once
+    lookgoal.entry(c)
+    assert.equal('done', lookgoal.update(c))
+    kick.exit(c)
+    lookgoal.entry(c)
+    assert.is_nil(lookgoal.update(c))
   end)
 
   it('gives up after its timeout when no kick was made', function()
@@ -115,5 +169,6 @@ describe('walking kick', function()
     assert.is_nil(kick.update(c))
     c.t = 10 + wk.timeout + 0.1
     assert.equal('done', kick.update(c))
+    kick.exit(c)
   end)
 end)

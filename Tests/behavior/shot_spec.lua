@@ -31,6 +31,11 @@ local function ctx(x, y, a, bx, by, opts)
     local c, s = math.cos(-p.a), math.sin(-p.a)
     return c * dx - s * dy, s * dx + c * dy
   end
+  function world.ball_field(w)
+    local p = w.pose
+    local c, s = math.cos(p.a), math.sin(p.a)
+    return p.x + c * w.ball.x - s * w.ball.y, p.y + s * w.ball.x + c * w.ball.y
+  end
   return { cfg = { body = body }, world = world, t = 10.1,
     act = { walk_velocity = function() return 0.1, opts.vy or 0, opts.va or 0 end } }
 end
@@ -51,6 +56,10 @@ describe('shot.foot', function()
     assert.is_nil(shot.foot(ctx(2.0, 0, 0, 0.2, 0.2)))           -- beside the robot
     assert.is_nil(shot.foot(ctx(2.0, 0, 0.8, 0.2, 0.06)))        -- facing away from the goal
     assert.is_nil(shot.foot(ctx(2.0, 2.5, 0, 0.2, 0.06)))        -- the goal's mouth off to the side
+    -- near the line, off to the side: the goal's centre within max_angle of the heading, but the
+    -- heading's line from the ball passes the post (the mouth seen at an angle)
+    assert.is_nil(shot.foot(ctx(4.0, 1.8, -0.9, 0.2, 0.06)))
+    assert.equal('left', shot.foot(ctx(4.0, 1.2, -0.9, 0.2, 0.06))) -- ... and inside it
     assert.is_nil(shot.foot(ctx(-3.0, 0, 0, 0.2, 0.06, { range = 2.5 }))) -- out of range
   end)
 

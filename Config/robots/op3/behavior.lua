@@ -65,6 +65,8 @@ return {
       y = { 0.03, 0.09 },
       x_far = 0.12,            -- m: a ball beyond x[2] by up to this is taken (the walk waits for a step)
       close_gain = 1.5,        -- 1/s: closing on a ball that rolled on (BodyFSM/kick.lua)
+      follow = true,           -- the strike aimed at the ball's place at the kick step's start ...
+      keep_ball = true,        -- ... seen then, not before a look at the goal
       timeout = 3.0,           -- s (a kick waits up to walkKick.expire = 2 s after it is asked)
       max_vy = 0.08,           -- m/s (the kick state stops side-stepping before it asks)
       max_range = 1.9,         -- m: the ball within 1.4 m of the goal line (the kick: 1.5-2.1 m)
