@@ -10,8 +10,9 @@
 #  - the motion tick's compute time (median, p99) in LuaJIT, robot-free
 # The engine is chosen through a site overlay (walk.lua: engine = ...) beside the venue's own files.
 # usage: [ROBOTS="op3 darwin hubo2plus"] [ENGINES="analytic preview"] [WALK_SIM_PARAMS="key=v;..."] \
-#          Tests/bench/walk_sim.sh [speed|push|tick]...
-# (WALK_SIM_PARAMS: walk parameters set first in every run, e.g. to measure a change against the config)
+#          [SIM_SEED=N] Tests/bench/walk_sim.sh [speed|push|pushside|tick]...
+# (WALK_SIM_PARAMS: walk parameters set first in every run, e.g. to measure a change against the config;
+# SIM_SEED: the sim's seed, default 1; pushside: only the side push as configured)
 set -u
 cd "$(dirname "$0")/../.."
 source Run/env.sh
@@ -27,8 +28,8 @@ run() {
   n=$((n + 1))
   local id=$((BASE_ID + n))
   Run/shm --robot "$id" remove >/dev/null 2>&1   # stale segments of an earlier run
-  ROBOT_ID=$id ./run_main --sim --quiet --no-restart --dcm-arg --lockstep-wait --dcm-arg 2 --dcm-arg --no-camera motion \
-    >"$LOG/main_$label.log" 2>&1 &
+  ROBOT_ID=$id ./run_main --sim --quiet --no-restart --dcm-arg --lockstep-wait --dcm-arg 2 \
+    --dcm-arg --seed --dcm-arg "${SIM_SEED:-1}" --dcm-arg --no-camera motion >"$LOG/main_$label.log" 2>&1 &
   local pid=$!
   for _ in $(seq 200); do grep -q 'motion started' "$LOG/main_$label.log" 2>/dev/null && break; sleep 0.1; done
   ROBOT_ID=$id WALK_PARAMS="${WALK_SIM_PARAMS:+$WALK_SIM_PARAMS;}$params" timeout 1800 ./run_repl Tests/motion/sim_scenarios.lua "$@" \
@@ -70,6 +71,8 @@ for robot in "${ROBOT_LIST[@]}"; do
           FIG[$k x]=$(run "${robot}_${engine}_speed_x" "${L[0]}" speed x ${L[1]} | awk '{print $3}')
           FIG[$k y]=$(run "${robot}_${engine}_speed_y" "${L[0]}" speed y ${L[2]} | awk '{print $3}')
           FIG[$k a]=$(run "${robot}_${engine}_speed_a" "${L[0]}" speed a ${L[3]} | awk '{print $3}') ;;
+        pushside)
+          FIG[$k ps]=$(run "${robot}_${engine}_push_side" "" pushmax gyro side | awk '{print $4}') ;;
         push)
           FIG[$k ps]=$(run "${robot}_${engine}_push_side" "" pushmax gyro side | awk '{print $4}')
           FIG[$k psn]=$(run "${robot}_${engine}_push_side_nostep" "$NOSTEP" pushmax nostep side | awk '{print $4}')
