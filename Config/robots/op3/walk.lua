@@ -37,7 +37,8 @@ return {
   -- force of a bisection) gave 0.93-0.96 N s then and 1.438 on seeds 1 and 2 in session 14 (1.343,
   -- 1.407 off): a push at moment 0 (the far foot's step starting, the body swaying onto the near
   -- foot) falls from 14-16 N whatever the gains, as only the near sole's edge can catch it (~1.4 N s
-  -- by the linear pendulum; a crossing step would be needed); the scoring scenario gave 8/10 with 0
+  -- by the linear pendulum; a crossing step, tried on branch cross, lands too late and too near to
+  -- help: README); the scoring scenario gave 8/10 with 0
   -- falls and 9/10 with 2 (off: 10/10, 1 fall). README: the pushes.
   stepAdjust = { gain = 1.0, deadband = { 0.03, 0.02 }, max = { 0.05, 0.08 }, switchError = 1,
     touchdownError = 1, touchdownTime = 0.05, level = { 0, 0 }, levelTime = 0.15, velocityLeak = 0,
