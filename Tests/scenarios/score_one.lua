@@ -65,18 +65,25 @@ local function log_step()
   if not trace then return end
   local T = Sim.truth()
   local ok, mstate = pcall(function() return require('Motion').state() end)
-  trace:write(string.format('%.2f %.3f %.3f %.3f %.3f %.3f %d %.3f %.3f %.3f %.3f %.3f %.1f %s %s %.2f %s\n',
+  local Walk = require('Walk')
+  local cx, cy, ca = Walk.get_velocity()
+  local wx, wy, wa = Walk.velocity()
+  trace:write(string.format('%.2f %.3f %.3f %.3f %.3f %.3f %d %.3f %.3f %.3f %.3f %.3f %.1f %s %s %.2f %s'
+    .. ' %.3f %.3f %.3f %.3f %.3f %.3f\n',
     Body.get_time() - t0, T.x, T.y, T.yaw, T.ball.x, T.ball.y, T.fallen and 1 or 0,
     world.pose[0], world.pose[1], world.pose[2], world.ball[0], world.ball[1],
     Body.get_time() - world.ball_time[0], body_names[game.body_state[0] + 1] or tostring(game.body_state[0]),
     ok and tostring(mstate) or '?', world.pose_confidence[0],
-    head_names[game.head_state[0] + 1] or tostring(game.head_state[0])))
+    head_names[game.head_state[0] + 1] or tostring(game.head_state[0]), cx, cy, ca, wx, wy, wa))
   for i = 0, math.min(2, vision.goal_posts[0]) - 1 do
     trace:write(string.format('post %.2f %.3f %.3f\n', Body.get_time() - t0, vision.goal_position[2 * i],
       vision.goal_position[2 * i + 1]))
   end
 end
-if trace then trace:write('# t x y yaw bx by fallen px py pyaw wbx wby ball_age body motion confidence head\n') end
+if trace then
+  trace:write('# t x y yaw bx by fallen px py pyaw wbx wby ball_age body motion confidence head'
+    .. ' cmd_vx cmd_vy cmd_va walk_vx walk_vy walk_va\n')
+end
 -- optional capture log ($CAPTURE_LOG): the walk's capture point error every motion tick, to see
 -- what normal play gives (Tests/motion/capture_stats.py): t ex ey walking motion-state
 local cap_path = os.getenv('CAPTURE_LOG') or ''

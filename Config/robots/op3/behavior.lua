@@ -39,7 +39,13 @@ return {
       slow_side = 0.05,        -- m and rad of dead band before slowing (the estimate's jitter and
       slow_angle = 0.15,       -- the push's sway kept the walk at ~0.75 of its speed)
     },
-    max_va = 0.8,              -- rad/s
+    max_va = 0.8,              -- rad/s (1.2 with nav.far_turn_gain 2.0: 10/10 39.6 s, then 8/10 with
+                               -- 6 falls, score_test)
+    max_vy = 0.13,             -- m/s (was the common 0.1: the align's circling, below)
+    -- aligning: circling the ball (0.17 m ahead) at up to 0.8 rad/s needs ~0.14 m/s of side-step
+    -- (sideways_per_turn ~ the ball's distance x the turn's gain); the common gains took 6.4 s a
+    -- run in score_test, these 4.4-4.9 s (Tests/scenarios/trace_stats.py)
+    align = { gain = { 0.9, 0.9, 1.2 }, sideways_per_turn = 0.2, max_va = 0.8 },
     -- shooting with a kick out of the walk (walk.lua's walkKick.forward: the ball ~0.19 m ahead of
     -- the support ankle, in line with the kicking foot) to finish: the ball within max_range of the
     -- point aimed at (0.5 m behind the goal line), i.e. within ~0.9 m of the line. Scoring
