@@ -111,6 +111,11 @@ function M.walk_kicks()
   return n
 end
 
+-- Drops a kick out of the walk still waiting for its step.
+function M.walk_kick_cancel()
+  if Walk and Walk.kick then Walk.kick(nil) end
+end
+
 -- The kick out of the walk: 'none', 'asked' (waiting for its step) or 'kicking'.
 function M.walk_kick_phase()
   if not (Walk and Walk.kick_status) then return 'none' end

@@ -4,7 +4,12 @@
 local M = {}
 local t0, kicked, seen_kick, walking, kicks0
 
-function M.exit(ctx) ctx.keep_ball = nil end
+-- A request still waiting for its step when the state ends (its timeout) is dropped: re-asked up to
+-- the last tick, it would otherwise stay live for walkKick.expire and strike later at a stale place.
+function M.exit(ctx)
+  ctx.keep_ball = nil
+  if walking and kicked and ctx.act.walk_kick_phase() == 'asked' then ctx.act.walk_kick_cancel() end
+end
 
 function M.entry(ctx)
   local cfg = ctx.cfg.body

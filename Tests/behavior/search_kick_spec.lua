@@ -93,6 +93,7 @@ describe('walking kick', function()
       c.phase = 'asked'
       return true
     end
+    c.act.walk_kick_cancel = function() c.phase, c.cancelled = 'none', true end
     c.kick_side = 'left'
     return c
   end
@@ -170,5 +171,25 @@ describe('walking kick', function()
     c.t = 10 + wk.timeout + 0.1
     assert.equal('done', kick.update(c))
     kick.exit(c)
+    assert.is_nil(c.cancelled) -- nothing was asked: nothing to drop
+  end)
+
+  it('drops a request still waiting for its step when it times out', function()
+    local c = kick_ctx(wk.x[2], wk.max_vx - 0.01)
+    kick.entry(c)
+    kick.update(c)
+    assert.equal('asked', c.phase)
+    c.t = 10 + wk.timeout + 0.1
+    assert.equal('done', kick.update(c))
+    kick.exit(c)
+    assert.is_true(c.cancelled)
+    -- a kick already made is not touched
+    local k = kick_ctx(wk.x[2], wk.max_vx - 0.01)
+    kick.entry(k)
+    kick.update(k)
+    k.phase, k.made = 'kicking', 1
+    assert.equal('done', kick.update(k))
+    kick.exit(k)
+    assert.is_nil(k.cancelled)
   end)
 end)
