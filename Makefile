@@ -2,6 +2,7 @@
 #   make        build every native part (runs `make deps` first if something is missing)
 #   make deps   install what Debian must provide (idempotent)
 #   make test   run every test; ends with one line "N passed, N failed"
+#   make check  the fast tier for the edit-test loop (lint, specs, C/C++ tests, fast scenarios; < 3 min)
 #   make league MATCHES=20 HALF=60   seeded 2v2 matches on Ray, with team play vs without: a table
 #   make soak   1 hour of play in the sim, memory/fd/shm growth per process (SOAK_SECONDS=600: 10 minutes)
 #   make sanitize  the C/C++ tests and DCM scenarios under ASan+UBSan (SANITIZE=thread: TSan)
@@ -20,7 +21,7 @@ export BUILD SANITIZE
 NATIVE_DIRS := $(sort $(dir $(wildcard Modules/*/Makefile Platforms/*/Makefile Run/*/Makefile)))
 DEPS_STAMP := $(BUILD)/.deps-ok
 
-.PHONY: all deps test clean bench sim match match4 league sanitize soak $(NATIVE_DIRS)
+.PHONY: all deps test check clean bench sim match match4 league sanitize soak $(NATIVE_DIRS)
 
 all: $(DEPS_STAMP) $(NATIVE_DIRS)
 
@@ -52,6 +53,10 @@ $(DEPS_STAMP): Run/install_deps.sh Run/requirements.txt
 
 test: all
 	@Tests/run_all.sh
+
+# The scenarios in the fast tier say so in their header ("# tier: check"); TESTS=regex narrows either.
+check: all
+	@TIER=check Tests/run_all.sh
 
 # One robot in the simulator, a status line per second until Ctrl-C (Run/main.lua --sim), and the live
 # view in a browser (./run_view: it prints the URL, http://127.0.0.1:8080/; VIEW_PORT= another port).

@@ -3,7 +3,12 @@
 #   luacheck over all Lua; busted specs (Tests/**/*_spec.lua) under LuaJIT; every C/C++ test
 #   program in build/tests/; every script Tests/**/*_test.sh (integration scenarios).
 # Test programs print TAP ("ok N - name" / "not ok N - name"); a program that prints no TAP
-# counts as one test judged by its exit status. TESTS=regex runs only the matching ones.
+# counts as one test judged by its exit status.
+#   TESTS=regex   only the tests whose name matches: luacheck, busted:Tests/<folder> (a whole folder of
+#                 specs) or busted:Tests/<folder>/<file>_spec.lua (one spec file, when the regex does not
+#                 match its folder's name), ctest:<program>, scenario:<folder>/<script>.sh
+#   TIER=check    the fast tier (make check): luacheck, the specs, the C/C++ test programs and only the
+#                 scenarios whose header has a line "# tier: check"
 set -u
 cd "$(dirname "$0")/.."
 TOP=$(pwd)
@@ -14,6 +19,8 @@ export LUA_PATH="$TOP/Lib/?.lua;$TOP/Player/?.lua;$TOP/?.lua;;"
 # takes ids up to ROBOT_ID+260, so runs sit 300 apart
 export ROBOT_ID="${ROBOT_ID:-$((20000 + ($$ % 300) * 300))}"
 FILTER="${TESTS:-.}"
+TIER="${TIER:-all}"
+case "$TIER" in all|check) ;; *) echo "run_all.sh: TIER must be 'all' or 'check', not '$TIER'" >&2; exit 2 ;; esac
 LOGDIR="$TOP/build/test-logs"
 mkdir -p "$LOGDIR"
 TIMEOUT="${TEST_TIMEOUT:-900}"
@@ -55,9 +62,17 @@ if [ "${#lua_files[@]}" -gt 0 ]; then
   run luacheck luacheck --codes --no-color "${lua_files[@]}"
 fi
 
-# 2. busted specs, one run per folder so a crash is easy to place
+# 2. busted specs, one run per folder so a crash is easy to place; a filter that names spec files
+#    but not their folder runs just those files
+BUSTED=(luajit /usr/bin/busted --helper=Tests/helper.lua -o TAP --pattern=_spec)
 for dir in $(find Tests -name '*_spec.lua' -printf '%h\n' | sort -u); do
-  run "busted:$dir" luajit /usr/bin/busted --helper=Tests/helper.lua -o TAP --pattern=_spec "$dir"
+  if echo "busted:$dir" | grep -Eq "$FILTER"; then
+    run "busted:$dir" "${BUSTED[@]}" "$dir"
+  else
+    for spec in $(find "$dir" -maxdepth 1 -name '*_spec.lua' | sort); do
+      run "busted:$spec" "${BUSTED[@]}" "$spec"
+    done
+  fi
 done
 
 # 3. C/C++ test programs (HRP_BUILD: those of another build, e.g. a sanitizer build: Tests/sanitize.sh)
@@ -65,8 +80,9 @@ for prog in $(find "${HRP_BUILD:-build}/tests" -maxdepth 1 -type f -executable 2
   run "ctest:$(basename "$prog")" "$prog"
 done
 
-# 4. integration scenarios
+# 4. integration scenarios (TIER=check: only those marked fast in their header)
 for script in $(find Tests -name '*_test.sh' | sort); do
+  if [ "$TIER" = check ] && ! grep -q '^# tier: check' "$script"; then continue; fi
   run "scenario:${script#Tests/}" bash "$script"
 done
 
