@@ -33,8 +33,7 @@ function M.target(role, ball, cfg, field, clearing)
     if not ball then return gx + cfg.defender_home, 0 end
     -- on the line from the own goal's centre to the ball, defender_gap m short of the ball (where a
     -- ball dribbled or bouncing towards the goal comes), never nearer the goal than keeper_depth.
-    -- Standing at a fixed fraction of the way instead (0.4, behind x = -1 m), a defender of two
-    -- watched opponents dribble past it in the session-11 league.
+    -- (A defender standing at a fixed fraction of the way lets opponents dribble past it.)
     local dx, dy = ball[1] - gx, ball[2]
     local d = sqrt(dx * dx + dy * dy)
     if d < 1e-6 then return gx + cfg.keeper_depth, 0 end

@@ -7,19 +7,18 @@
 --   striker     the one that reaches the ball first (distance / speed plus the turn); the previous
 --               assignment's striker keeps the role until another is faster by `striker_margin` s
 --               (the same for every robot: with the margin on "me", two robots that both were
---               strikers once, e.g. before they heard each other, both stayed strikers for good,
---               as in the first league of session 11); a teammate that says it goes for the ball
+--               strikers once, e.g. before they heard each other, would both stay strikers for
+--               good); a teammate that says it goes for the ball
 --               (its message's target_pose at its ball) with a lower player number than that
 --               striker takes the margin instead, so that two robots that disagree settle on one
 --   defender    the one nearest the own goal among the rest
 --   supporter   everyone else
 -- A robot that is down (falling, lying or getting up: its message's `fallen`, our extension field)
 -- reaches the ball `fallen_time` s later and keeps no margin, so an upright teammate near the ball
--- takes it over: in a session-12 match the team's only striker lay on the ground 11% of the
--- playing time while its defender waited a metre from the ball.
--- A robot alone is the striker. Two (keeper_team = 3) are a striker and a defender: in the session-10
--- league a goalkeeper of two lost to two lone strikers, and left the field from its poor pose belief
--- near the goal line.
+-- takes it over (a striker lying on the ground otherwise keeps the ball from a defender a metre away).
+-- A robot alone is the striker. Two (keeper_team = 3) are a striker and a defender: a goalkeeper of
+-- two leaves a lone striker against two, and its poor pose belief near the goal line walks it off
+-- the field.
 -- A ball within keeper_clear of the own goal's centre is the goalkeeper's to clear when it reaches
 -- it first (the striker's margin kept while it clears); the striker then waits upfield for the
 -- clearance (Team/position.lua) instead of both going for the ball and blocking each other.
