@@ -7,11 +7,9 @@
 -- goals, head across the range that keeps the horizon in view), and no goal in view (every post
 -- projects outside the image). Prints one line per scene and TAP results.
 --   luajit Tests/vision/goal_scenes.lua [NSCENES] [SEED]
-local shm = require('shm')
 local Config = require('Config')
 local camera = require('camera')
 local kinematics = require('kinematics')
-local lockstep = require('lockstep')
 local pipeline = require('Vision.pipeline')
 local project = require('Vision.project')
 
@@ -26,10 +24,8 @@ local vp = assert(pipeline.new(vcfg, ccfg, model))
 local cm = project.from_config(ccfg)
 local cam = assert(camera.open({ driver = 'sim', width = ccfg.width, height = ccfg.height }))
 
-local sensor, act, sim, sync = shm.open('dcm.sensor'), shm.open('dcm.actuator'), shm.open('sim'), shm.open('sync')
-local nj = #robot.joints
-local index = {}
-for i, n in ipairs(robot.joints) do index[n] = i - 1 end
+local world = require('Tests.vision.scene_lib').new(robot, cam)
+local sensor, sim, tick, request = world.sensor, world.sim, world.tick, world.request
 
 -- the four posts' axes (field frame) and their size
 local GX = scfg.field.length / 2
@@ -38,45 +34,6 @@ local HW = scfg.goal.width / 2 + DIA / 2
 local POST_H = scfg.goal.height
 local POSTS = { { GX, HW }, { GX, -HW }, { -GX, HW }, { -GX, -HW } }
 
--- a bent-knee stance (the sim's own test stance), head from the scene
-local function stance(pan, tilt)
-  local q = {}
-  for i = 0, nj - 1 do q[i] = 0 end
-  for _, side in ipairs({ 'l', 'r' }) do
-    local s = side == 'l' and 1 or -1
-    q[index[side .. '_hip_pitch']] = -s * 0.3
-    q[index[side .. '_knee']] = s * 0.6
-    q[index[side .. '_ank_pitch']] = s * 0.3
-    q[index[side .. '_sho_roll']] = s * 1.25
-    q[index[side .. '_el']] = s * 0.5
-  end
-  q[index.head_pan], q[index.head_tilt] = pan, tilt
-  act:begin_write()
-  for i = 0, nj - 1 do
-    act.command[i] = q[i]; act.hardness[i] = 1; act.torque_enable[i] = 1
-  end
-  act:end_write()
-end
-
-local participant = lockstep.join()
-local function tick()   -- finish the current tick and wait for the next
-  local t = sync.tick[0]
-  act.tick_ack[0] = sensor.tick[0]
-  participant:done(t)
-  while sync.tick[0] == t do shm.C.shm_futex_wait(sync.tick, t, 0.05) end
-end
-
-local function request(kind, a, b, c, d)
-  sim.request[0] = kind
-  sim.args[0], sim.args[1], sim.args[2], sim.args[3] = a or 0, b or 0, c or 0, d or 0
-  local seq = sim.request_seq[0] + 1
-  shm.C.shm_fetch_add_u32(sim.request_seq, 1)
-  for _ = 1, 200 do
-    if sim.done_seq[0] == seq then return end
-    tick()
-  end
-  error('sim request ' .. kind .. ' not applied')
-end
 
 math.randomseed(SEED)
 local function rnd(a, b) return a + (b - a) * math.random() end
@@ -97,7 +54,6 @@ local function post_view(pose, px, py)
   return 'partly'
 end
 
-local q = {}
 local st = { posts_in = 0, found = 0, range_n = 0, goal_scenes = 0, empty = 0, empty_false = 0,
              dets = 0, unmatched = 0 }
 local worst_range, sum_range, worst_bearing = 0, 0, 0
@@ -121,7 +77,7 @@ while scene < NSCENES do
     ryaw = math.atan2(-ry, gx - rx) + rnd(-0.5, 0.5)
     pan, tilt = rnd(-0.4, 0.4), rnd(-0.35, 0.15)
   end
-  stance(pan, tilt)
+  world.stance(pan, tilt)
   for _ = 1, 30 do tick() end                 -- head and legs reach the stance
   request(2, rx, ry, ryaw)
   -- the ball behind the robot, or in empty scenes at its feet (as when dribbling)
@@ -129,15 +85,7 @@ while scene < NSCENES do
   request(3, rx + ball_d * math.cos(ryaw + pan), ry + ball_d * math.sin(ryaw + pan), 0, 0)
   for _ = 1, 60 do tick() end                 -- settle ~0.5 s
   local t_x, t_y, t_yaw = sim.robot[0], sim.robot[1], sim.robot[3]
-  local frame
-  for _ = 1, 20 do
-    tick()
-    frame = cam:grab(0)
-    if frame then break end
-  end
-  assert(frame, 'no frame from the sim')
-  for _ = 1, 3 do frame = cam:grab(0) or frame; tick() end   -- a frame exposed after settling
-  for i = 1, nj do q[i] = sensor.position[i - 1] end
+  local frame, q = world.frame()
   local det = assert(vp:process(frame, q, { sensor.angle[0], sensor.angle[1] }))
   local goals = det.goals
   local pose = vp.pose
@@ -211,7 +159,7 @@ while scene < NSCENES do
     os.execute(string.format('build/bin/lut_tool render --shm -o /tmp/posts_%d.png >/dev/null', scene))
   end
 end
-participant:leave()
+world.leave()
 cam:close()
 
 local recall = st.found / math.max(1, st.posts_in)
