@@ -3,29 +3,12 @@
 -- sphere of 0.14 m, grey above the horizon) from the OP3's camera pose (Lib/kinematics), seeded
 -- random ball positions and head angles: the detector's range and bearing against the truth.
 local ffi = require('ffi')
-local kinematics = require('kinematics')
 local project = require('Vision.project')
 local pipeline = require('Vision.pipeline')
 
-local W, H = 640, 480
-local FOVY = math.rad(43.3)
+local rc = require('Tests.vision.raycast_camera')
+local W, H, vcfg, ccfg, model, cm, q0, pose_for = rc.W, rc.H, rc.vcfg, rc.ccfg, rc.model, rc.cm, rc.q0, rc.pose_for
 local R_BALL = 0.07
-
-local vcfg = require('Config').load('vision', nil, { robot = 'op3', platform = 'Sim' })
-local ccfg = { width = W, height = H, fovy = FOVY, head_joint = { 0, 1 } }
-
-local model = assert(kinematics.load({ robot = 'op3' }))
-local cm = project.camera(W, H, FOVY)
-local q0 = {}
-for i = 1, #model.joints do q0[i] = 0 end
-
--- camera pose for head angles (pan, tilt; negative tilt looks down), the rest at zero, torso level
-local function pose_for(pan, tilt)
-  local q = {}
-  for i = 1, #q0 do q[i] = q0[i] end
-  q[1], q[2] = pan, tilt
-  return (model:camera_pose(q, { 0, 0 }))
-end
 
 -- ray-cast a YUYV frame: ball at (bx, by) on the ground (nil: no ball)
 local function render(pose, bx, by)

@@ -5,28 +5,13 @@
 -- blue), seen from the OP3's camera pose: its foot point against the truth, its team, and no robot
 -- where there is none (the ball neither). The world model's obstacles come from these.
 local ffi = require('ffi')
-local kinematics = require('kinematics')
 local project = require('Vision.project')
 local pipeline = require('Vision.pipeline')
 
-local W, H = 640, 480
-local FOVY = math.rad(43.3)
+local rc = require('Tests.vision.raycast_camera')
+local W, H, vcfg, ccfg, model, cm, q0, pose_for = rc.W, rc.H, rc.vcfg, rc.ccfg, rc.model, rc.cm, rc.q0, rc.pose_for
 local RADIUS, HEIGHT = 0.1, 0.52
 local JERSEY = { [0] = { 72, 195, 98 }, [1] = { 83, 107, 212 } } -- blue, red (YUV)
-
-local vcfg = require('Config').load('vision', nil, { robot = 'op3', platform = 'Sim' })
-local ccfg = { width = W, height = H, fovy = FOVY, head_joint = { 0, 1 } }
-local model = assert(kinematics.load({ robot = 'op3' }))
-local cm = project.camera(W, H, FOVY)
-local q0 = {}
-for i = 1, #model.joints do q0[i] = 0 end
-
-local function pose_for(pan, tilt)
-  local q = {}
-  for i = 1, #q0 do q[i] = q0[i] end
-  q[1], q[2] = pan, tilt
-  return (model:camera_pose(q, { 0, 0 }))
-end
 
 -- a frame with a robot of `team` at (rx, ry) on the ground (nil: none), a ball at (bx, by) or none, and
 -- more robots ({ x, y, team } each)
