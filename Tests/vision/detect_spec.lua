@@ -12,27 +12,11 @@ local R_BALL = 0.07
 
 -- ray-cast a YUYV frame: ball at (bx, by) on the ground (nil: no ball)
 local function render(pose, bx, by)
-  local buf = ffi.new('uint8_t[?]', W * H * 2)
-  local ground = pose[3] - pose.height
-  local cx, cy, cz = pose[1], pose[2], pose[3]
-  for v = 0, H - 1 do
-    for u = 0, W - 1, 2 do
-      local dx, dy, dz = project.ray(cm, pose, u + 0.5, v + 0.5)
-      local Y, U, V = 150, 128, 128          -- grey wall
-      if dz < 0 then Y, U, V = 99, 95, 86 end -- green ground
-      if bx then
-        -- ray-sphere: |c + t d - b|^2 = r^2
-        local ox, oy, oz = cx - bx, cy - by, cz - (ground + R_BALL)
-        local a = dx * dx + dy * dy + dz * dz
-        local b = 2 * (ox * dx + oy * dy + oz * dz)
-        local c = ox * ox + oy * oy + oz * oz - R_BALL * R_BALL
-        if b * b - 4 * a * c >= 0 and b < 0 then Y, U, V = 147, 45, 205 end
-      end
-      local p = (v * W + u) * 2
-      buf[p], buf[p + 1], buf[p + 2], buf[p + 3] = Y, U, Y, V
-    end
-  end
-  return buf
+  return rc.render(pose, function(dx, dy, dz)
+    if bx and rc.ball_hit(pose, dx, dy, dz, bx, by, R_BALL) then return 147, 45, 205 end -- orange ball
+    if dz < 0 then return 99, 95, 86 end                                                  -- green ground
+    return 150, 128, 128                                                                  -- grey wall
+  end)
 end
 
 local function frame_of(buf, pan, tilt)

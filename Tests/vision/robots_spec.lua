@@ -5,11 +5,10 @@
 -- blue), seen from the OP3's camera pose: its foot point against the truth, its team, and no robot
 -- where there is none (the ball neither). The world model's obstacles come from these.
 local ffi = require('ffi')
-local project = require('Vision.project')
 local pipeline = require('Vision.pipeline')
 
 local rc = require('Tests.vision.raycast_camera')
-local W, H, vcfg, ccfg, model, cm, q0, pose_for = rc.W, rc.H, rc.vcfg, rc.ccfg, rc.model, rc.cm, rc.q0, rc.pose_for
+local W, H, vcfg, ccfg, model, q0, pose_for = rc.W, rc.H, rc.vcfg, rc.ccfg, rc.model, rc.q0, rc.pose_for
 local RADIUS, HEIGHT = 0.1, 0.52
 local JERSEY = { [0] = { 72, 195, 98 }, [1] = { 83, 107, 212 } } -- blue, red (YUV)
 
@@ -18,41 +17,29 @@ local JERSEY = { [0] = { 72, 195, 98 }, [1] = { 83, 107, 212 } } -- blue, red (Y
 local function render(pose, rx, ry, team, bx, by, more)
   local robots = { rx and { rx, ry, team } or nil }
   for _, r in ipairs(more or {}) do robots[#robots + 1] = r end
-  local buf = ffi.new('uint8_t[?]', W * H * 2)
   local cx, cy, cz = pose[1], pose[2], pose[3]
   local ground = cz - pose.height
-  for v = 0, H - 1 do
-    for u = 0, W - 1, 2 do
-      local dx, dy, dz = project.ray(cm, pose, u + 0.5, v + 0.5)
-      local Y, U, V = 150, 128, 128          -- grey wall
-      local t_hit = math.huge
-      if dz < 0 then Y, U, V = 99, 95, 86 t_hit = (ground - cz) / dz end -- green ground
-      for _, r in ipairs(robots) do -- the cylinder's side: |(c + t d - r)_xy| = RADIUS; the nearest hit
-        local ox, oy = cx - r[1], cy - r[2]
-        local a, b, c = dx * dx + dy * dy, 2 * (ox * dx + oy * dy), ox * ox + oy * oy - RADIUS * RADIUS
-        local disc = b * b - 4 * a * c
-        if disc >= 0 then
-          local t = (-b - math.sqrt(disc)) / (2 * a)
-          local z = cz + t * dz - ground
-          if t > 0 and t < t_hit and z >= 0 and z <= HEIGHT then
-            t_hit = t
-            if z > 0.25 and z < 0.38 then Y, U, V = JERSEY[r[3]][1], JERSEY[r[3]][2], JERSEY[r[3]][3]
-            else Y, U, V = 120, 128, 128 end
-          end
+  return rc.render(pose, function(dx, dy, dz)
+    local Y, U, V = 150, 128, 128          -- grey wall
+    local t_hit = math.huge
+    if dz < 0 then Y, U, V = 99, 95, 86 t_hit = (ground - cz) / dz end -- green ground
+    for _, r in ipairs(robots) do -- the cylinder's side: |(c + t d - r)_xy| = RADIUS; the nearest hit
+      local ox, oy = cx - r[1], cy - r[2]
+      local a, b, c = dx * dx + dy * dy, 2 * (ox * dx + oy * dy), ox * ox + oy * oy - RADIUS * RADIUS
+      local disc = b * b - 4 * a * c
+      if disc >= 0 then
+        local t = (-b - math.sqrt(disc)) / (2 * a)
+        local z = cz + t * dz - ground
+        if t > 0 and t < t_hit and z >= 0 and z <= HEIGHT then
+          t_hit = t
+          if z > 0.25 and z < 0.38 then Y, U, V = JERSEY[r[3]][1], JERSEY[r[3]][2], JERSEY[r[3]][3]
+          else Y, U, V = 120, 128, 128 end
         end
       end
-      if bx then
-        local ox, oy, oz = cx - bx, cy - by, cz - (ground + 0.07)
-        local a = dx * dx + dy * dy + dz * dz
-        local b = 2 * (ox * dx + oy * dy + oz * dz)
-        local c = ox * ox + oy * oy + oz * oz - 0.07 * 0.07
-        if b * b - 4 * a * c >= 0 and b < 0 then Y, U, V = 147, 45, 205 end
-      end
-      local p = (v * W + u) * 2
-      buf[p], buf[p + 1], buf[p + 2], buf[p + 3] = Y, U, Y, V
     end
-  end
-  return buf
+    if bx and rc.ball_hit(pose, dx, dy, dz, bx, by, 0.07) then Y, U, V = 147, 45, 205 end -- the ball
+    return Y, U, V
+  end)
 end
 
 local function detect(buf, pan, tilt)
