@@ -8,23 +8,14 @@
 -- projects outside the image). Prints one line per scene and TAP results.
 --   luajit Tests/vision/goal_scenes.lua [NSCENES] [SEED]
 local Config = require('Config')
-local camera = require('camera')
-local kinematics = require('kinematics')
-local pipeline = require('Vision.pipeline')
 local project = require('Vision.project')
 
 local NSCENES = tonumber(arg[1]) or 90
 local SEED = tonumber(arg[2]) or 1
 
-local robot = Config.load('robot')
 local scfg = Config.load('sim')
-local vcfg, ccfg = Config.load('vision'), Config.load('camera')
-local model = assert(kinematics.load())
-local vp = assert(pipeline.new(vcfg, ccfg, model))
-local cm = project.from_config(ccfg)
-local cam = assert(camera.open({ driver = 'sim', width = ccfg.width, height = ccfg.height }))
-
-local world = require('Tests.vision.scene_lib').new(robot, cam)
+local world = require('Tests.vision.scene_lib').new()
+local vp, cm = world.vp, world.cm
 local sensor, sim, tick, request = world.sensor, world.sim, world.tick, world.request
 
 -- the four posts' axes (field frame) and their size
@@ -160,7 +151,6 @@ while scene < NSCENES do
   end
 end
 world.leave()
-cam:close()
 
 local recall = st.found / math.max(1, st.posts_in)
 local false_rate = st.unmatched / math.max(1, st.dets)

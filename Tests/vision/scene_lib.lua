@@ -2,23 +2,33 @@
 -- of dcm_sim that holds the body in the sim's test stance (Tests/sim/stance.lua) with the head where
 -- a scene points it, places things through the sim block's requests, and grabs a rendered frame once
 -- the world has settled.
---   local world = require('Tests.vision.scene_lib').new(robot, cam)
+--   local world = require('Tests.vision.scene_lib').new()
+--   world.robot, world.ccfg (configs), world.vp (the vision pipeline), world.cm (its camera model)
 --   world.stance(pan, tilt); world.tick(); world.request(kind, a, b, c, d)
 --   local frame, q = world.frame()   -- a frame exposed after settling, the joint positions with it
 --   world.leave()                    -- the lockstep goes on without this participant
 local shm = require('shm')
+local Config = require('Config')
+local camera = require('camera')
+local kinematics = require('kinematics')
 local lockstep = require('lockstep')
+local pipeline = require('Vision.pipeline')
+local project = require('Vision.project')
 local stance = require('Tests.sim.stance')
 
 local M = {}
 
-function M.new(robot, cam)
+function M.new()
+  local robot = Config.load('robot')
+  local vcfg, ccfg = Config.load('vision'), Config.load('camera')
+  local cam = assert(camera.open({ driver = 'sim', width = ccfg.width, height = ccfg.height }))
   local sensor, act = shm.open('dcm.sensor'), shm.open('dcm.actuator')
   local sim, sync = shm.open('sim'), shm.open('sync')
   local nj = #robot.joints
   local pose = stance.pose()
   local participant = lockstep.join()
-  local scene = { sensor = sensor, sim = sim, nj = nj }
+  local scene = { sensor = sensor, sim = sim, nj = nj, robot = robot, ccfg = ccfg,
+    vp = assert(pipeline.new(vcfg, ccfg, assert(kinematics.load()))), cm = project.from_config(ccfg) }
 
   function scene.stance(pan, tilt)
     act:begin_write()
@@ -63,7 +73,7 @@ function M.new(robot, cam)
     return frame, q
   end
 
-  function scene.leave() participant:leave() end
+  function scene.leave() participant:leave(); cam:close() end
 
   return scene
 end

@@ -4,23 +4,13 @@
 -- rendered frame through the sim camera driver and the vision pipeline (Player/Vision), and
 -- compares the detection with the sim's truth. Prints one line per scene and TAP results.
 --   luajit Tests/vision/sim_scenes.lua [NSCENES] [SEED]
-local Config = require('Config')
-local camera = require('camera')
-local kinematics = require('kinematics')
-local pipeline = require('Vision.pipeline')
 local project = require('Vision.project')
 
 local NSCENES = tonumber(arg[1]) or 90
 local SEED = tonumber(arg[2]) or 1
 
-local robot = Config.load('robot')
-local vcfg, ccfg = Config.load('vision'), Config.load('camera')
-local model = assert(kinematics.load())
-local vp = assert(pipeline.new(vcfg, ccfg, model))
-local cm = project.from_config(ccfg)
-local cam = assert(camera.open({ driver = 'sim', width = ccfg.width, height = ccfg.height }))
-
-local world = require('Tests.vision.scene_lib').new(robot, cam)
+local world = require('Tests.vision.scene_lib').new()
+local vp, cm = world.vp, world.cm
 local sensor, sim, tick, request = world.sensor, world.sim, world.tick, world.request
 
 
@@ -105,7 +95,6 @@ for scene = 1, NSCENES do
   end
 end
 world.leave()
-cam:close()
 
 local recall = stats.inview > 0 and stats.found / stats.inview or 0
 local fp = stats.empty > 0 and stats.false_pos / stats.empty or 0
