@@ -54,7 +54,9 @@ return {
   turnToeIn = 0,
   turnStep = false,
   hipYawLead = 0,            -- s
-  swingYawRamp = false,      -- the swing foot turns over all of single support, ramps of this fraction (false: with the step)
+  -- the swing foot turns over all of single support at a near-constant rate, ramps of this
+  -- fraction at either end (false: it turns with the step's ground motion)
+  swingYawRamp = false,
   swingLead = 0.65,          -- fraction of single support in which the swing foot reaches its place
   swingDelay = 0.0,          -- fraction of single support the swing foot lifts before it moves
   -- velocity: limits and acceleration (per second)
