@@ -81,14 +81,9 @@ return {
   },
   -- the DCM's control period, s: hubo-ach's 200 Hz
   period = 0.005,
-  -- the kinematics' named chains (Lib/kinematics.lua): joints from the base to the tip (default:
-  -- the group of the same name) and the tip, a frame of hubo2plus.urdf. The arms and the head hang
-  -- from the waist (WST): their functions take the whole-body angles for it.
-  chains = {
-    lleg = { tip = 'l_sole' }, rleg = { tip = 'r_sole' },
-    larm = { tip = 'l_palm' }, rarm = { tip = 'r_palm' },
-    head = { tip = 'camera_link' },
-  },
+  -- the kinematics' chains (Config/common/robot.lua) with the palms as the arms' tips; the arms and
+  -- the head hang from the waist (WST): their functions take the whole-body angles for it
+  chains = { larm = { tip = 'l_palm' }, rarm = { tip = 'r_palm' } },
   -- massless frames Run/gen_urdf.py adds to hubo2plus.urdf: link, origin (xyz) and orientation
   -- (rpy) in the reference frame at the zero pose (soles on z = 0)
   frames = {
