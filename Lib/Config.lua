@@ -17,7 +17,9 @@
 -- The first two layers are defaults and may add keys; the platform and site layers only change
 -- keys the defaults have (an unknown key there is a typo: an error naming the file and the key),
 -- unless no default layer has the concern at all (sim.lua, dcm.lua). Tables merge key by key;
--- lists (tables with [1]) are replaced whole. Every error names the file, and reading a key that
+-- lists (tables with [1]) are replaced whole. A value keeps its type through the layers, except a
+-- default of `false` ("none": a feature a body may have, e.g. walk.lua's `sole`), which any value
+-- replaces. Every error names the file, and reading a key that
 -- no layer has fails naming the files consulted (Config.optional reads optional keys).
 local native = require('native')
 
@@ -163,9 +165,9 @@ local function merge(dst, src, file, prefix, open)
         error(string.format("%s: unknown key '%s' (no default layer has it)", file, name), 0)
       end
       dst[k] = copy(v)
-    elseif type(cur) ~= type(v) then
+    elseif type(cur) ~= type(v) and cur ~= false then
       error(string.format("%s: key '%s' must be a %s, got %s", file, name, type(cur), type(v)), 0)
-    elseif type(v) == 'table' and not is_list(v) and not is_list(cur) then
+    elseif type(v) == 'table' and type(cur) == 'table' and not is_list(v) and not is_list(cur) then
       merge(cur, v, file, name .. '.', open)
     else
       dst[k] = copy(v)

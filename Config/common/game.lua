@@ -54,16 +54,16 @@ return {
     goalkeeper = 0,            -- player number of the goalkeeper without a GameController (0: none;
                                -- with one, its goalKeeper flag decides)
     keeper_team = 3,           -- robots playing from which the goalkeeper keeps goal (fewer: striker and
-                               -- defender; 2v2 with a goalkeeper lost the session-10 league 2/10/8)
+                               -- defender; in 2v2 a goalkeeper loses more than it saves: tuning.md)
     walk_speed = 0.2,          -- m/s and rad/s a robot is assumed to walk and turn at (time to the ball)
     turn_speed = 0.5,
     striker_margin = 1.5,      -- s: the striker keeps the ball until another is this much faster
     striking_radius = 0.3,     -- m: a teammate's target this near its ball: it says it goes for the ball
-    fallen_time = 8,           -- s a robot that is down needs before it walks again (time to the ball; in a
-                               -- session-12 match the OP3s lay 2-17 s, median 5.3 s, then stood up)
+    fallen_time = 8,           -- s a robot that is down needs before it walks again (time to the ball;
+                               -- a fallen OP3 lies 2-17 s, median 5.3 s, before it stands up)
     keeper_depth = 0.5,        -- m out from the own goal's centre towards the ball
     keeper_min_depth = 0.3,    -- m: the goalkeeper's place never nearer its goal line (a ball lying on the
-                               -- line walked into: an own goal in the session-10 league, seed 11)
+                               -- line is walked into: an own goal)
     keeper_clear = 1.5,        -- m: a ball this near the own goal's centre: the goalkeeper clears it
                                -- (when it is first to it; the striker then waits upfield:)
     receive_ahead = 1.5,       -- m upfield of the ball ...

@@ -42,9 +42,7 @@ end
 local function gate(w, sa, e, dt)
   local g = w.cp_gate or { 1, 1 }
   w.cp_gate = g
-  local from, full = sa and rawget(sa, 'activateFrom'), sa and rawget(sa, 'activateFull')
-  if not from or not full then g[1], g[2] = 1, 1 return end
-  local hold = rawget(sa, 'activateHold') or 0
+  local from, full, hold = sa.activateFrom, sa.activateFull, sa.activateHold
   local l = w.cp_latch or { 0, 0 }
   w.cp_latch = l
   for i = 1, 2 do
@@ -71,8 +69,8 @@ function M.update(w, sensors, gyro, dt)
   -- positive pitch tips the top forward (+x), positive roll tips it to the right (-y)
   local px, py = h * sin(tp), -h * sin(tr)
   local vx, vy = h * gyro[2], -h * gyro[1]
-  local sa = rawget(p, 'stepAdjust')
-  local leak = sa and rawget(sa, 'velocityLeak') or 0
+  local sa = p.stepAdjust
+  local leak = sa.velocityLeak
   local acc = sensors.acc
   local v = w.cp_vel or { 0, 0 }
   w.cp_vel = v

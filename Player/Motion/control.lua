@@ -94,7 +94,7 @@ end
 -- The walk engine the walk config's `engine` names (read when the motion process starts).
 local ENGINES = { analytic = Walk, preview = WalkPreview }
 function M.walk_engine(params, files)
-  local name = rawget(params, 'engine') or 'analytic'
+  local name = params.engine
   local engine = ENGINES[name]
   if not engine then
     error(string.format("%s: key 'engine' must be 'analytic' or 'preview', got '%s'", files or 'walk config',
@@ -133,8 +133,8 @@ function M.new(opts)
   c.keyframes = {}
   local body = M.keyframe_body(robot, opts.model, c.ji)
   -- (a body that cannot stand itself up, walk config fallPolicy.standup = false, has no stand-ups)
-  local policy = rawget(params, 'fallPolicy')
-  local standup = not (policy and rawget(policy, 'standup') == false)
+  local policy = params.fallPolicy
+  local standup = not (policy and policy.standup == false)
   for _, name in ipairs(standup and { 'sit', 'standup_front', 'standup_back' } or { 'sit' }) do
     c.keyframes[name] = keyframe.load(name, body, robot.name)
   end

@@ -31,8 +31,8 @@ function M.bind(walk_module) walk = walk_module end
 
 -- The step adjustment's config, or nil when it is off.
 local function config(w)
-  local sa = rawget(w.p, 'stepAdjust')
-  if not sa or sa.gain <= 0 or not w.cp_err then return nil end
+  local sa = w.p.stepAdjust
+  if sa.gain <= 0 or not w.cp_err then return nil end
   return sa
 end
 
@@ -105,7 +105,7 @@ function M.tick(w, t, s)
   end
   -- the foot still travels: its landing point follows the error (from the nominal one), until
   -- `retarget` of its way (beyond it the foot would have to jump)
-  if s < (rawget(sa, 'retarget') or 0.85) and w.nominal2 then
+  if s < sa.retarget and w.nominal2 then
     local sup = left and w.uRight1 or w.uLeft1
     local target = landing(w, sa, sup, w.nominal2, left) or w.nominal2
     local cur2 = left and w.uLeft2 or w.uRight2

@@ -169,10 +169,10 @@ end
 
 -- The duration of a step at velocity v: tStep, shortened towards `turnStep.tStep` as the turning
 -- rate |v[3]| rises from turnStep.va[1] to turnStep.va[2] (rad/s; the feet's relative yaw is bounded
--- by the legs, so a faster turn takes more steps, not larger ones); no `turnStep`: tStep.
+-- by the legs, so a faster turn takes more steps, not larger ones); `turnStep` false: tStep.
 function M.step_period(p, v)
   local T = p.tStep
-  local ts = rawget(p, 'turnStep')
+  local ts = p.turnStep
   if ts and v then
     local f = clamp((abs(v[3]) - ts.va[1]) / (ts.va[2] - ts.va[1]), 0, 1)
     T = T + f * (ts.tStep - T)
@@ -221,7 +221,7 @@ function Walk:step_target(support_u, swing_left, v)
   -- so the feet's relative yaw swings about zero (the OP3's legs touch beyond about 0.5 rad toed out
   -- or in, Tests/motion/hip_yaw_clearance.py: opening from parallel alone met them at 1.1 rad/s)
   if v[3] ~= 0 then
-    local closing = (rawget(p, 'turnToeIn') or 0) * v[3] * T
+    local closing = p.turnToeIn * v[3] * T
     da = (v[3] > 0) == swing_left and 2 * v[3] * T - closing or closing
   end
   -- the support foot turned: keep forward steps along the mean heading
@@ -247,9 +247,9 @@ end
 -- from the other sole's inner edge. rel: the swing foot in the support foot's frame (changed in
 -- place), sgn: +1 for the left foot swinging. The soles from the walk config's `sole` (toe, heel:
 -- m ahead of and behind the ankle point; inner: m from the ankle point to the inner edge); a body
--- without them is not checked.
+-- with `sole` false is not checked.
 function M.clear_feet(p, rel, sgn)
-  local sole = rawget(p, 'sole')
+  local sole = p.sole
   if not sole then return end
   local c, s = cos(rel[3]), sin(rel[3])
   local need = sole.inner + p.footClearance
@@ -416,7 +416,7 @@ function Walk:advance(dt)
     local phs = clamp((ph - ph1) / (ph2 - ph1), 0, 1)
     -- the foot reaches its landing point a little before touch-down (servo lag)
     -- (after `swingDelay` of single support: the foot lifts before it moves, its toe clears an edge)
-    local delay = rawget(p, 'swingDelay') or 0
+    local delay = p.swingDelay
     local s = smooth(clamp((phs - delay) / (p.swingLead - delay), 0, 1))
     local lift = 16 * phs * phs * (1 - phs) * (1 - phs)
     self.swing_z = p.stepHeight * lift
@@ -432,7 +432,7 @@ function Walk:advance(dt)
     end
     -- the swing foot's turn over the whole single support at a near-constant rate: with the ground
     -- motion's profile a 1 rad turn (2 rad/s) asks the hip yaw for 12 rad/s, its servo gives 4.8
-    local ramp = rawget(p, 'swingYawRamp')
+    local ramp = p.swingYawRamp
     if ramp then
       local left = self.support ~= LEFT
       local a1 = left and self.uLeft1[3] or self.uRight1[3]
@@ -516,42 +516,43 @@ function Walk:bind(robot, files)
   end
   -- arms: side -> { pitch = index or nil, roll = index or nil, joints = { { index, name }, ... } }
   self.arms, self.arm_joints = {}, {}
-  local arms = rawget(self.p, 'arms') or {}
-  if type(arms) ~= 'table' then error(files .. ": key 'arms' must be a table", 2) end
-  for _, side in ipairs({ 'l', 'r' }) do
-    local a = rawget(arms, side)
-    if a ~= nil then
-      local key = 'arms.' .. side
-      local posture = type(a) == 'table' and rawget(a, 'posture')
-      if type(posture) ~= 'table' then
-        error(string.format("%s: key '%s.posture' must be a table of joint = rad", files, key), 2)
-      end
-      local arm = { joints = {} }
-      for name, v in pairs(posture) do
-        local i = ji[name]
-        if not i then
-          error(string.format("%s: key '%s.posture' names unknown joint '%s'", files, key, tostring(name)), 2)
-        end
-        if type(v) ~= 'number' or v ~= v or v == math.huge or v == -math.huge then
-          error(string.format("%s: key '%s.posture.%s' must be a finite number", files, key, name), 2)
-        end
-        arm.joints[#arm.joints + 1] = { i, name }
-        self.arm_joints[#self.arm_joints + 1] = i
-        axis_of(i, name)
-      end
-      table.sort(arm.joints, function(x, y) return x[1] < y[1] end)
-      for _, which in ipairs({ 'pitch', 'roll' }) do
-        local name = rawget(a, which)
-        if name ~= nil then
-          if rawget(posture, name) == nil then
-            error(string.format("%s: key '%s.%s' must name a joint of '%s.posture', got '%s'", files, key, which,
-              key, tostring(name)), 2)
-          end
-          arm[which] = ji[name]
-        end
-      end
-      self.arms[side] = arm
+  for side, a in pairs(self.p.arms) do
+    local key = 'arms.' .. tostring(side)
+    if side ~= 'l' and side ~= 'r' then
+      error(string.format("%s: key '%s' must be 'arms.l' or 'arms.r'", files, key), 2)
     end
+    local posture = type(a) == 'table' and a.posture
+    if type(posture) ~= 'table' then
+      error(string.format("%s: key '%s.posture' must be a table of joint = rad", files, key), 2)
+    end
+    local arm, named = { joints = {} }, {}
+    for name, v in pairs(posture) do
+      local i = ji[name]
+      if not i then
+        error(string.format("%s: key '%s.posture' names unknown joint '%s'", files, key, tostring(name)), 2)
+      end
+      if type(v) ~= 'number' or v ~= v or v == math.huge or v == -math.huge then
+        error(string.format("%s: key '%s.posture.%s' must be a finite number", files, key, name), 2)
+      end
+      arm.joints[#arm.joints + 1] = { i, name }
+      named[name] = true
+      self.arm_joints[#self.arm_joints + 1] = i
+      axis_of(i, name)
+    end
+    table.sort(arm.joints, function(x, y) return x[1] < y[1] end)
+    for which, name in pairs(a) do
+      if which ~= 'posture' then
+        if which ~= 'pitch' and which ~= 'roll' then
+          error(string.format("%s: unknown key '%s.%s' (posture, pitch, roll)", files, key, tostring(which)), 2)
+        end
+        if type(name) ~= 'string' or not named[name] then
+          error(string.format("%s: key '%s.%s' must name a joint of '%s.posture', got '%s'", files, key, which,
+            key, tostring(name)), 2)
+        end
+        arm[which] = ji[name]
+      end
+    end
+    self.arms[side] = arm
   end
   table.sort(self.arm_joints)
   M.check_turning(self.p, files)
@@ -560,21 +561,21 @@ function Walk:bind(robot, files)
   return self
 end
 
--- The turning keys of a walk config, when it has them (a bad one would only show as NaN steps):
--- turnToeIn (0..1), turnStep = { tStep = s > 0, va = { lo, hi } rad/s, 0 <= lo < hi }, hipYawLead (s >= 0).
+-- The turning keys of a walk config (a bad one would only show as NaN steps): turnToeIn (0..1),
+-- turnStep = false or { tStep = s > 0, va = { lo, hi } rad/s, 0 <= lo < hi }, hipYawLead (s >= 0).
 function M.check_turning(p, files)
   local function bad(key, what) error(string.format("%s: key '%s' must be %s", files, key, what), 3) end
   local function num(x) return type(x) == 'number' and x == x and x ~= math.huge and x ~= -math.huge end
-  local k = rawget(p, 'turnToeIn')
-  if k ~= nil and not (num(k) and k >= 0 and k <= 1) then bad('turnToeIn', 'a number in 0..1') end
-  local lead = rawget(p, 'hipYawLead')
-  if lead ~= nil and not (num(lead) and lead >= 0) then bad('hipYawLead', 'a number of s >= 0') end
-  local ts = rawget(p, 'turnStep')
-  if ts ~= nil then
-    local va = type(ts) == 'table' and rawget(ts, 'va')
-    if not (type(ts) == 'table' and num(rawget(ts, 'tStep')) and ts.tStep > 0 and type(va) == 'table'
+  local k = p.turnToeIn
+  if not (num(k) and k >= 0 and k <= 1) then bad('turnToeIn', 'a number in 0..1') end
+  local lead = p.hipYawLead
+  if not (num(lead) and lead >= 0) then bad('hipYawLead', 'a number of s >= 0') end
+  local ts = p.turnStep
+  if ts ~= false then
+    local va = type(ts) == 'table' and ts.va
+    if not (type(ts) == 'table' and num(ts.tStep) and ts.tStep > 0 and type(va) == 'table'
         and num(va[1]) and num(va[2]) and va[1] >= 0 and va[2] > va[1]) then
-      bad('turnStep', '{ tStep = s > 0, va = { lo, hi } } rad/s with 0 <= lo < hi')
+      bad('turnStep', 'false or { tStep = s > 0, va = { lo, hi } } rad/s with 0 <= lo < hi')
     end
   end
 end
@@ -583,7 +584,7 @@ end
 -- first-order servo with time constant tau follows q + tau q' without lag), so that a turning swing
 -- foot lands turned as planned. Only while stepping (the IK's rate from the previous tick).
 function Walk:lead_hip_yaw(q, dt)
-  local lead = rawget(self.p, 'hipYawLead') or 0
+  local lead = self.p.hipYawLead
   local prev = self.hip_yaw_prev
   if not prev then prev = {} self.hip_yaw_prev = prev end
   for side = LEFT, RIGHT do
@@ -617,8 +618,8 @@ function Walk:joint_angles(q, sensors, dt, support)
   -- arms: the posture by joint name (read live: Walk.set('arms.l.posture.l_el', 0.3) lands at once)
   local arms, larm, rarm = p.arms, self.arms.l, self.arms.r
   for side, arm in pairs(self.arms) do
-    local posture = rawget(rawget(arms, side) or {}, 'posture') or {}
-    for _, j in ipairs(arm.joints) do q[j[1]] = rawget(posture, j[2]) or q[j[1]] end
+    local posture = arms[side].posture
+    for _, j in ipairs(arm.joints) do q[j[1]] = posture[j[2]] end
   end
   -- arm swing against the legs: the arm opposite to the forward foot goes forward
   if p.armSwing ~= 0 then
@@ -654,14 +655,14 @@ function Walk:joint_angles(q, sensors, dt, support)
   -- on the ankles rocked the standing OP3 until it crept away, 1.6 m in 60 s) and beyond the step
   -- adjustment's dead band (the walk's own sway, on them, slowed the OP3's sideways walk by a third),
   -- times the activation (Motion.capture: 0 for the errors of normal walking, 1 for a push's)
-  local kc, kh, e, ga = rawget(fb, 'capture'), rawget(fb, 'captureHip'), self.cp_err, self.cp_gate
+  local kc, kh, e, ga = fb.capture, fb.captureHip, self.cp_err, self.cp_gate
   local thx, thy = 0, 0
-  local sa = rawget(p, 'stepAdjust')
-  if e and sa and not support and self.active then
+  local sa = p.stepAdjust
+  if e and not support and self.active then
     local ex, ey = deadband(e[1], sa.deadband[1]), deadband(e[2], sa.deadband[2])
     if ga then ex, ey = ga[1] * ex, ga[2] * ey end
-    if kc then tax, tay = tax - kc[1] * ey, tay + kc[2] * ex end
-    if kh then thx, thy = -kh[1] * ey, kh[2] * ex end
+    tax, tay = tax - kc[1] * ey, tay + kc[2] * ex
+    thx, thy = -kh[1] * ey, kh[2] * ex
   end
   local ankx, anky = clamp(fb.ankle[1] * gx + tax, -lim, lim), clamp(fb.ankle[2] * gy + tay, -lim, lim)
   local kny = clamp(fb.knee * gy, -lim, lim)
@@ -708,11 +709,11 @@ end
 -- The torso's tilt (IMU angle against the planned posture, low-passed) on the ankles, rad about the
 -- torso's x and y axes: a foot that lands on an edge tips the stiff body with it; turning the ankle
 -- by the tilt rights the leg over the foot (the foot's own ground, not the plan's). Config
--- feedback.tilt ({ roll, pitch }, rad per rad) and tiltTimeConstant (s); a body without them: none.
+-- feedback.tilt ({ roll, pitch }, rad per rad) and tiltTimeConstant (s); { 0, 0 }: off.
 function Walk:tilt_feedback(sensors, dt)
   local fb, angle = self.p.feedback, sensors.angle
-  local k = rawget(fb, 'tilt')
-  if not k or not angle or (k[1] == 0 and k[2] == 0) then return 0, 0 end
+  local k = fb.tilt
+  if not angle or (k[1] == 0 and k[2] == 0) then return 0, 0 end
   local tf = self.tilt_f or { 0, 0 }
   self.tilt_f = tf
   local a = clamp(dt / (dt + fb.tiltTimeConstant), 0, 1)

@@ -56,8 +56,8 @@ function Kick:request(kind, foot, ball, t)
   if foot ~= 'left' and foot ~= 'right' then
     return nil, "walk kick: foot must be 'left' or 'right', got " .. tostring(foot)
   end
-  local wk = rawget(self.p, 'walkKick')
-  if type(wk) ~= 'table' or type(rawget(wk, kind)) ~= 'table' then
+  local wk = self.p.walkKick
+  if not wk then
     return nil, "walk kick: the walk config has no 'walkKick." .. kind .. "'"
   end
   self.pending = { kind = kind, foot = foot, ball = ball, t = t or 0 }

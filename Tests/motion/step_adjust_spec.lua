@@ -9,8 +9,9 @@ local params, model, dt, copy = fixture.params, fixture.model, fixture.dt, fixtu
 -- a walk at 0.2 m/s with the step adjustment on, advanced until a step with `swing_left` begins
 local function walking(swing_left, sa)
   local p = copy(params)
-  p.stepAdjust = { gain = 1, deadband = { 0.02, 0.02 }, max = { 0.05, 0.08 }, switchError = 0.045,
-    touchdownError = 0.06, touchdownTime = 0.05, level = { 0, 0 }, levelTime = 0.15 }
+  -- over the body's (the keys not named here keep their defaults: Config/common/walk.lua)
+  for k, v in pairs({ gain = 1, deadband = { 0.02, 0.02 }, max = { 0.05, 0.08 }, switchError = 0.045,
+    touchdownError = 0.06, touchdownTime = 0.05, level = { 0, 0 }, levelTime = 0.15 }) do p.stepAdjust[k] = v end
   for k, v in pairs(sa or {}) do p.stepAdjust[k] = v end
   local w = Walk.new(p, model)
   w.cp_err = { 0, 0 }

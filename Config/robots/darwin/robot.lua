@@ -13,34 +13,18 @@
 -- Mass model: the reference's BODIES as they are. Its torso COM (Webots: 5.0 cm behind and 8.0 cm
 -- below the shoulder axis, -0.050 0 0.2617) is the largest uncertainty: ROBOTIS' URDF suggests
 -- (-0.0193, -0.0031, 0.3030); the reference keeps Webots' value and so does this description.
-local joints = {
-  'head_pan', 'head_tilt',
-  'l_sho_pitch', 'l_sho_roll', 'l_el',
-  'l_hip_yaw', 'l_hip_roll', 'l_hip_pitch', 'l_knee', 'l_ank_pitch', 'l_ank_roll',
-  'r_hip_yaw', 'r_hip_roll', 'r_hip_pitch', 'r_knee', 'r_ank_pitch', 'r_ank_roll',
-  'r_sho_pitch', 'r_sho_roll', 'r_el',
-}
-
--- { joint = model } for every joint
-local function every_joint(model)
-  local t = {}
-  for _, j in ipairs(joints) do t[j] = model end
-  return t
-end
+-- the ROBOTIS layout it shares with the OP3: the same joint names, bus order and groups
+local op3 = dofile(require('Config').robot_dir('op3') .. '/robot.lua')
+local actuator = {}
+for _, j in ipairs(op3.joints) do actuator[j] = 'MX-28' end
 
 return {
   name = 'darwin',
   -- the robot description the sim and the kinematics read (relative to this folder)
   description = 'darwin.urdf',
   -- joint order of every joint array in shm (dcm.sensor, dcm.actuator): the bus order
-  joints = joints,
-  groups = {
-    head = { 'head_pan', 'head_tilt' },
-    larm = { 'l_sho_pitch', 'l_sho_roll', 'l_el' },
-    lleg = { 'l_hip_yaw', 'l_hip_roll', 'l_hip_pitch', 'l_knee', 'l_ank_pitch', 'l_ank_roll' },
-    rleg = { 'r_hip_yaw', 'r_hip_roll', 'r_hip_pitch', 'r_knee', 'r_ank_pitch', 'r_ank_roll' },
-    rarm = { 'r_sho_pitch', 'r_sho_roll', 'r_el' },
-  },
+  joints = op3.joints,
+  groups = op3.groups,
   -- joint limits, rad { min, max }, in the convention above: the Webots model's motor limits
   -- (darwin_reference.txt, JOINTS), the only complete public set, taken as they are: each lies
   -- within the servo's 0..4095 counts and the mechanical range as that model has it. Left and
@@ -58,7 +42,7 @@ return {
     r_knee = { -0.02, 2.25 }, r_ank_pitch = { -1.24, 1.38 }, r_ank_roll = { -0.68, 1.04 },
   },
   -- each joint's actuator model (Config/common/actuators.lua): MX-28 at 11.1 V everywhere
-  actuator = every_joint('MX-28'),
+  actuator = actuator,
   -- the Dynamixel bus on the OP platform (Platforms/OP), in the form of ROBOTIS' .robot files: the
   -- buses (port, baud rate; `--port` overrides bus 1's), then one row per servo (the joint it drives)
   -- or board (IMU, buttons), in any order. ROBOTIS numbering (shared/robots/darwin_reference.txt
@@ -93,15 +77,6 @@ return {
     { joint = 'r_el',        bus = 1, id =  5, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
     { board = 'CM-730', bus = 1, id = 200, protocol = 1,
       gyro_axes = { '-x', '-y', 'z' }, accel_axes = { 'y', '-x', 'z' } },
-  },
-  -- the DCM's control period, s (125 Hz)
-  period = 0.008,
-  -- the kinematics' named chains (Lib/kinematics.lua): joints from the base to the tip (default:
-  -- the group of the same name) and the tip, a frame of darwin.urdf
-  chains = {
-    lleg = { tip = 'l_sole' }, rleg = { tip = 'r_sole' },
-    larm = { tip = 'l_hand' }, rarm = { tip = 'r_hand' },
-    head = { tip = 'camera_link' },
   },
   -- massless frames Run/gen_urdf.py adds to darwin.urdf (the URDF carries them; nothing else reads
   -- this table): link = the link it is fixed to; xyz = its origin and rpy its orientation (URDF

@@ -89,18 +89,9 @@ return {
     { board = 'OpenCR', bus = 1, id = 200, protocol = 2,
       gyro_axes = { 'x', 'y', 'z' }, accel_axes = { 'x', 'y', 'z' } },
   },
-  -- the DCM's control period, s
-  period = 0.008,
   -- each joint's actuator model (Config/common/actuators.lua): the sim drives every joint with its
   -- numbers, and Run/gen_urdf.py writes its torque, speed, damping and friction into op3.urdf
   actuator = every_joint('XM430-W350'),
-  -- the kinematics' named chains (Lib/kinematics.lua): joints from the base to the tip (default:
-  -- the group of the same name) and the tip, a frame of op3.urdf
-  chains = {
-    lleg = { tip = 'l_sole' }, rleg = { tip = 'r_sole' },
-    larm = { tip = 'l_hand' }, rarm = { tip = 'r_hand' },
-    head = { tip = 'camera_link' },
-  },
   -- massless frames Run/gen_urdf.py adds to op3.urdf (the URDF carries them; nothing else reads
   -- this table): link = the link it is fixed to; xyz = its origin and rpy its orientation (URDF
   -- roll, pitch, yaw), both in the reference frame at the zero pose (soles on z = 0, x forward,

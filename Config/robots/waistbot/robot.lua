@@ -14,12 +14,12 @@ local joints = {
   'waist_yaw',
 }
 
--- { joint = model } for every joint
-local function every_joint(model)
-  local t = {}
-  for _, j in ipairs(joints) do t[j] = model end
-  return t
-end
+-- the OP3 it is made from: its limits and frames are the OP3's, plus the waist and the wrists
+local op3 = dofile(require('Config').robot_dir('op3') .. '/robot.lua')
+local limits = { l_wrist = { -1.57, 1.57 }, r_wrist = { -1.57, 1.57 }, waist_yaw = { -1.2, 1.2 } }
+for j, range in pairs(op3.limits) do limits[j] = range end
+local actuator = {}
+for _, j in ipairs(joints) do actuator[j] = 'XM430-W350' end
 
 return {
   name = 'waistbot',
@@ -39,34 +39,15 @@ return {
     waist = { 'waist_yaw' },
   },
   -- joint limits, rad { min, max }: the OP3's; waist and wrists chosen for a test body
-  limits = {
-    head_pan = { -1.57, 1.57 }, head_tilt = { -1.2, 0.6 },
-    l_sho_pitch = { -3.14, 3.14 }, l_sho_roll = { -1.6, 1.6 }, l_el = { -2.6, 2.6 }, l_wrist = { -1.57, 1.57 },
-    r_sho_pitch = { -3.14, 3.14 }, r_sho_roll = { -1.6, 1.6 }, r_el = { -2.6, 2.6 }, r_wrist = { -1.57, 1.57 },
-    l_hip_yaw = { -1.2, 1.2 }, l_hip_roll = { -0.8, 0.8 }, l_hip_pitch = { -2.0, 2.0 },
-    l_knee = { -2.6, 2.6 }, l_ank_pitch = { -1.4, 1.4 }, l_ank_roll = { -0.8, 0.8 },
-    r_hip_yaw = { -1.2, 1.2 }, r_hip_roll = { -0.8, 0.8 }, r_hip_pitch = { -2.0, 2.0 },
-    r_knee = { -2.6, 2.6 }, r_ank_pitch = { -1.4, 1.4 }, r_ank_roll = { -0.8, 0.8 },
-    waist_yaw = { -1.2, 1.2 },
-  },
+  limits = limits,
   -- each joint's actuator model (Config/common/actuators.lua)
-  actuator = every_joint('XM430-W350'),
-  -- the DCM's control period, s
-  period = 0.008,
-  -- the kinematics' named chains (Lib/kinematics.lua): joints from the base to the tip (default:
-  -- the group of the same name) and the tip, a frame of waistbot.urdf. The arms and the head hang
-  -- from the waist: their functions take the whole-body angles for it.
-  chains = {
-    lleg = { tip = 'l_sole' }, rleg = { tip = 'r_sole' },
-    larm = { tip = 'l_hand' }, rarm = { tip = 'r_hand' },
-    head = { tip = 'camera_link' },
-  },
+  actuator = actuator,
+  -- the kinematics' chains (Config/common/robot.lua): the arms and the head hang from the waist,
+  -- so their functions take the whole-body angles for it
   -- massless frames Run/gen_urdf.py adds to waistbot.urdf: link, and origin (xyz) and orientation
   -- (rpy) in the reference frame at the zero pose; the OP3's, the hands at the hand links' ends
   frames = {
-    camera_link = { link = 'head_tilt_link' },
-    l_sole = { link = 'l_ank_roll_link', xyz = { 0.0001, 0.035, 0 } },
-    r_sole = { link = 'r_ank_roll_link', xyz = { 0.0001, -0.035, 0 } },
+    camera_link = op3.frames.camera_link, l_sole = op3.frames.l_sole, r_sole = op3.frames.r_sole,
     l_hand = { link = 'l_wrist_link', xyz = { -0.001, 0.3854, 0.3802 } },
     r_hand = { link = 'r_wrist_link', xyz = { -0.001, -0.3854, 0.3802 } },
   },

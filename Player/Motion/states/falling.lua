@@ -11,7 +11,7 @@ local M = {}
 -- every joint
 M.owns = { 'all' }
 
-local function policy_of(p) return rawget(p, 'fallPolicy') end
+local function policy_of(p) return p.fallPolicy end
 
 function M.entry(c)
   local p = c.p
