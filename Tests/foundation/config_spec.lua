@@ -3,13 +3,10 @@
 -- file and the key.
 local Config = require('Config')
 
+local files = require('Tests.files')
+
 local tmp
-local function write(path, text)
-  os.execute('mkdir -p "$(dirname ' .. tmp .. '/' .. path .. ')"')
-  local f = assert(io.open(tmp .. '/' .. path, 'w'))
-  f:write(text)
-  f:close()
-end
+local function write(path, text) files.write(tmp, path, text) end
 
 local T = { robot = 'bot', platform = 'Test' }
 

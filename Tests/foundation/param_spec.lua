@@ -4,12 +4,8 @@ local Config = require('Config')
 local save = require('param_save')
 local native = require('native')
 
-local function read(path)
-  local f = assert(io.open(path, 'rb'))
-  local s = f:read('*a')
-  f:close()
-  return s
-end
+local testfiles = require('Tests.files')
+local read = testfiles.read
 
 -- A fresh copy of Lib/param.lua: its own view of the changes, as another process has.
 local function fresh_param()
@@ -80,12 +76,7 @@ end)
 
 describe('param_save.write', function()
   local tmp
-  local function write(path, text)
-    os.execute('mkdir -p "$(dirname ' .. tmp .. '/' .. path .. ')"')
-    local f = assert(io.open(tmp .. '/' .. path, 'w'))
-    f:write(text)
-    f:close()
-  end
+  local function write(path, text) testfiles.write(tmp, path, text) end
   local T = { robot = 'bot', platform = 'Test' }
   setup(function()
     tmp = os.tmpname()

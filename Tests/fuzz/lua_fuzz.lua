@@ -25,12 +25,7 @@ end
 if not path then io.stderr:write('lua_fuzz: a seed folder or an input file is needed\n') os.exit(2) end
 local target = require(target_name)
 
-local function read(p)
-  local f = assert(io.open(p, 'rb'))
-  local s = f:read('*a')
-  f:close()
-  return s
-end
+local read = require('Tests.files').read
 
 local function is_dir(p) return os.execute('test -d "' .. p .. '"') == 0 end
 
