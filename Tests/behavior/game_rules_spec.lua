@@ -44,6 +44,14 @@ describe('behavior under the rules of a game', function()
     end
   end
 
+  -- the robot's button pressed for 0.1 s and released
+  local function press_button()
+    sensor.button[0] = 1
+    run(0.1)
+    sensor.button[0] = 0
+    run(0.1)
+  end
+
   local function send(state, o)
     o = o or {}
     number = (number + 1) % 256
@@ -232,10 +240,7 @@ describe('behavior under the rules of a game', function()
     for _, p in ipairs(r) do
       assert.are.same({ version = 2, team = TEAM, player = 1, message = packet.MSG.alive }, p)
     end
-    sensor.button[0] = 1
-    run(0.1)
-    sensor.button[0] = 0
-    run(0.1)
+    press_button()
     r = returns()
     assert.are.equal(packet.MSG.man_penalise, r[1].message)
     assert.are.equal(0, game.penalized[0]) -- asked, not penalized by itself
@@ -244,10 +249,7 @@ describe('behavior under the rules of a game', function()
     assert.are.equal(1, game.penalized[0])
     assert.are.equal(0, speed())
     returns()
-    sensor.button[0] = 1
-    run(0.1)
-    sensor.button[0] = 0
-    run(0.1)
+    press_button()
     r = returns()
     assert.are.equal(packet.MSG.man_unpenalise, r[1].message)
     assert.are.equal(1, game.penalized[0])
