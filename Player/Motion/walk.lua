@@ -10,7 +10,7 @@
 -- balance feedback's: Player/Motion/balance.lua); leg IK gives the angles.
 -- Feedback (all gains in the config): torso rate (gyro) on ankles, knees, hips and arms; torso
 -- angle estimated from the support leg's measured joint angles (proprioception) on the hips; the
--- feet's F/T sensors through `com_shift` (Player/Motion/balance.lua, called by the motion states).
+-- feet's F/T sensors through `com_shift` (Player/Motion/balance.lua, an extension: see below).
 --
 -- Frames: poses u = {x, y, a} in the walk's ground frame (odometry: starts at 0 where the walk
 -- was created). Feet are the foot frames of Lib/kinematics (sole point below the ankle).
