@@ -19,6 +19,12 @@
 --   body:event('stop', ctx) -- an event from outside (game state, button ...)
 --   body:state(), body:index(), body:since(t)
 --
+-- A state keeps what it needs from entry to exit in the context it is given, not in its module
+-- (two machines, or two robots in one process, would share a module's upvalues):
+--
+--   function M.entry(ctx) local d = fsm.fresh(ctx, 'BodyFSM.search') d.t0 = ctx.t end
+--   function M.update(ctx) local d = fsm.data(ctx, 'BodyFSM.search') ... end
+--
 -- A transition runs exit of the old state, then entry of the new one. An event no transition
 -- names is counted in machine.unhandled[event] and otherwise ignored. Mistakes in the declaration
 -- (unknown state, missing module) fail at new() with the machine and state named.
@@ -124,6 +130,24 @@ function Machine:set(s, ctx)
     if mod.exit then mod.exit(ctx) end
   end
   self:_enter(s, ctx, 'set')
+end
+
+-- The data of the activation of the state named `key` (by convention its module's name) that has
+-- begun: a new table in ctx.fsm_data (call it from entry).
+function M.fresh(ctx, key)
+  local all = ctx.fsm_data
+  if not all then all = {} ctx.fsm_data = all end
+  local d = {}
+  all[key] = d
+  return d
+end
+
+-- The data of the current activation of the state named `key` (an empty table before its entry).
+function M.data(ctx, key)
+  local all = ctx.fsm_data
+  local d = all and all[key]
+  if not d then d = M.fresh(ctx, key) end
+  return d
 end
 
 function Machine:state() return self.current or self.initial end

@@ -2,17 +2,20 @@
 local nav = require('BodyFSM.nav')
 local localize = require('BodyFSM.localize')
 local shot = require('BodyFSM.shot')
+local fsm = require('fsm')
 
 local M = {}
-local t0, good, side
 
+-- per activation (ctx): t0 (entry time), good (ticks lined up in a row), side (+1: the left foot kicks)
 function M.entry(ctx)
-  t0, good = ctx.t, 0
-  side = ctx.world.ball.y >= 0 and 1 or -1
+  local d = fsm.fresh(ctx, 'BodyFSM.align')
+  d.t0, d.good = ctx.t, 0
+  d.side = ctx.world.ball.y >= 0 and 1 or -1
 end
 
 function M.update(ctx)
   local cfg = ctx.cfg.body
+  local d = fsm.data(ctx, 'BodyFSM.align')
   if not ctx.world:ball_known() then return 'lost' end
   if localize.needed(ctx) then return 'unsure' end
   local foot = shot.foot(ctx)
@@ -21,10 +24,10 @@ function M.update(ctx)
   local dist = math.sqrt(bx * bx + by * by)
   if dist > cfg.align_distance + cfg.align_far then return 'far' end
   -- keep the kicking side unless the ball moved clearly to the other one
-  if by * side < -cfg.kick_side_switch then side = -side end
+  if by * d.side < -cfg.kick_side_switch then d.side = -d.side end
   local dribble = cfg.dribble.enabled
   -- dribbling: the ball centred between the feet; kicking: ahead of the kicking foot
-  local ex, ey = bx - cfg.kick_x, by - (dribble and 0 or side * cfg.kick_y)
+  local ex, ey = bx - cfg.kick_x, by - (dribble and 0 or d.side * cfg.kick_y)
   local ea = nav.wrap(math.atan2(uy, ux))
   -- turn around the ball: sideways motion couples with the turn
   local a = cfg.align
@@ -34,17 +37,17 @@ function M.update(ctx)
   ctx.act.walk(vx, vy, va)
   local ok = math.abs(ex) < cfg.kick_tolerance_x and math.abs(ey) < cfg.kick_tolerance_y
     and math.abs(ea) < cfg.kick_tolerance_angle
-  good = ok and good + 1 or 0
-  ctx.kick_side = side > 0 and 'left' or 'right'
+  d.good = ok and d.good + 1 or 0
+  ctx.kick_side = d.side > 0 and 'left' or 'right'
   if dribble then
-    local d = cfg.dribble
+    local dr = cfg.dribble
     -- (the ball just seen; lined up further out: dribble on at speed instead of creeping up to it)
-    if ctx.world:ball_age() < d.fresh_age and math.abs(ey) < d.start_side and math.abs(ea) < d.start_angle
-      and ex > -d.start_ahead and ex < d.start_far then
+    if ctx.world:ball_age() < dr.fresh_age and math.abs(ey) < dr.start_side and math.abs(ea) < dr.start_angle
+      and ex > -dr.start_ahead and ex < dr.start_far then
       return 'dribble'
     end
   end
-  if good >= 3 or ctx.t - t0 > cfg.align_timeout then return 'done' end
+  if d.good >= 3 or ctx.t - d.t0 > cfg.align_timeout then return 'done' end
 end
 
 return M

@@ -1,11 +1,13 @@
 -- The pose is not trusted (attacking by it could carry the ball anywhere): stand while the head
 -- looks for goal posts (ctx.look_around); turn on the spot after a while (posts out of the head's
 -- reach); give up after localize_timeout and go on with the best guess.
-local M = {}
-local t0
+local fsm = require('fsm')
 
+local M = {}
+
+-- per activation (ctx): t0 (entry time)
 function M.entry(ctx)
-  t0 = ctx.t
+  fsm.fresh(ctx, 'BodyFSM.localize').t0 = ctx.t
   ctx.look_around = true
 end
 
@@ -16,7 +18,7 @@ end
 function M.update(ctx)
   local cfg = ctx.cfg.body
   if ctx.world:localised() then return 'done' end
-  local dt = ctx.t - t0
+  local dt = ctx.t - fsm.data(ctx, 'BodyFSM.localize').t0
   if dt > cfg.localize_timeout then
     ctx.localize_gave_up = ctx.t
     return 'done'

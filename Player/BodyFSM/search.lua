@@ -5,19 +5,23 @@
 -- range once (HeadFSM/scan.lua, restarted by ctx.scan_restart): the turn sweeps only the view
 -- straight ahead, and a ball beside the robot the turn went away from was found only after a
 -- whole turn.
-local M = {}
-local t0, dir, back_until, look_until
+local fsm = require('fsm')
 
+local M = {}
+
+-- per activation (ctx): dir (+1: turn left), back_until and look_until (s: stepping back, then
+-- standing to look, until then)
 function M.entry(ctx)
   local cfg = ctx.cfg.body
-  t0 = ctx.t
+  local d = fsm.fresh(ctx, 'BodyFSM.search')
+  local t0 = ctx.t
   local b = ctx.world.ball
-  dir = (b.y >= 0) and 1 or -1
+  d.dir = (b.y >= 0) and 1 or -1
   local near = b.seen and b.x * b.x + b.y * b.y < cfg.search_back_near ^ 2
-  back_until = near and t0 + cfg.search_back_time or t0
-  look_until = back_until
+  d.back_until = near and t0 + cfg.search_back_time or t0
+  d.look_until = d.back_until
   if not b.seen and (cfg.search_look_time or 0) > 0 then
-    look_until = t0 + cfg.search_look_time
+    d.look_until = t0 + cfg.search_look_time
     ctx.scan_restart = t0
   end
 end
@@ -26,16 +30,17 @@ function M.exit(ctx) ctx.body_turning = nil end
 
 function M.update(ctx)
   local cfg = ctx.cfg.body
+  local d = fsm.data(ctx, 'BodyFSM.search')
   if ctx.world:ball_age() < 0.3 then return 'ball' end
-  if ctx.t < back_until then
+  if ctx.t < d.back_until then
     ctx.act.walk(-cfg.search_back_speed, 0, 0)
-  elseif ctx.t < look_until then
+  elseif ctx.t < d.look_until then
     ctx.act.walk(0, 0, 0)
   else
-    ctx.act.walk(0, 0, dir * cfg.search_turn_speed)
+    ctx.act.walk(0, 0, d.dir * cfg.search_turn_speed)
     ctx.body_turning = true
   end
-  if ctx.t - look_until > cfg.search_turn_time then return 'timeout' end
+  if ctx.t - d.look_until > cfg.search_turn_time then return 'timeout' end
 end
 
 return M

@@ -2,20 +2,25 @@
 -- otherwise one sweep across the head's whole range at the far row (the estimate's goal direction
 -- would be a guess), then back to the ball.
 local point = require('HeadFSM.point')
+local fsm = require('fsm')
 
 local M = {}
-local t0, sweep, from
 
+-- per activation (ctx): t0 (entry time), sweep (a sweep, not a look at the goal), from (+1: the
+-- sweep starts on the left)
 function M.entry(ctx)
-  t0 = ctx.t
-  sweep = not ctx.world:localised()
+  local d = fsm.fresh(ctx, 'HeadFSM.lookgoal')
+  d.t0 = ctx.t
+  d.sweep = not ctx.world:localised()
   -- sweep from the side the head is nearer to (the ball's side)
-  from = (ctx.world.ball.y >= 0) and 1 or -1
+  d.from = (ctx.world.ball.y >= 0) and 1 or -1
 end
 
 function M.update(ctx)
   local cfg = ctx.cfg.head
-  local dt = ctx.t - t0
+  local d = fsm.data(ctx, 'HeadFSM.lookgoal')
+  local sweep, from = d.sweep, d.from
+  local dt = ctx.t - d.t0
   -- the body aims a kick at the ball: back to it (its place goes stale while the head is away)
   if ctx.keep_ball and not sweep then return 'done' end
   local pan, tilt
@@ -27,10 +32,10 @@ function M.update(ctx)
     if dt > cfg.look_around_time then return 'done' end
   else
     local gx, gy = ctx.world:goal_in_robot_frame()
-    local d = math.sqrt(gx * gx + gy * gy)
+    local dist = math.sqrt(gx * gx + gy * gy)
     -- beyond the head's reach (goal behind): the side the goal is on
     local r = cfg.goal_look_distance
-    pan, tilt = point.ground(gx / d * r, gy / d * r, cfg)
+    pan, tilt = point.ground(gx / dist * r, gy / dist * r, cfg)
     if dt > cfg.look_goal_time then return 'done' end
   end
   ctx.act.head(pan, tilt)

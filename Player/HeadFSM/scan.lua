@@ -1,24 +1,28 @@
 -- Look for the ball: where it was last estimated first, when that is near (a ball at the feet is
 -- below the scan's rows), then sweep the head across the field in rows (far, near).
 local point = require('HeadFSM.point')
+local fsm = require('fsm')
 
 local M = {}
-local t0, t_rows
 
+-- per activation (ctx): t0 (the look around the estimate's start), t_rows (the rows' start)
 function M.entry(ctx)
-  t0 = ctx.t
+  local d = fsm.fresh(ctx, 'HeadFSM.scan')
+  d.t0 = ctx.t
   local w, cfg = ctx.world, ctx.cfg.head
   local b = w.ball
   local near = b.seen and w:ball_known() and b.x * b.x + b.y * b.y < cfg.scan_near_first ^ 2
-  t_rows = near and t0 + cfg.scan_near_time or t0
+  d.t_rows = near and d.t0 + cfg.scan_near_time or d.t0
 end
 
 function M.update(ctx)
   local cfg = ctx.cfg.head
   local w = ctx.world
+  local d = fsm.data(ctx, 'HeadFSM.scan')
   if w:ball_age() < 0.2 then return 'ball' end
   -- the body stands to look (BodyFSM/search.lua): a sweep from the start, on the far row first
-  if ctx.scan_restart and ctx.scan_restart > t_rows then t0, t_rows = ctx.scan_restart, ctx.scan_restart end
+  if ctx.scan_restart and ctx.scan_restart > d.t_rows then d.t0, d.t_rows = ctx.scan_restart, ctx.scan_restart end
+  local t0, t_rows = d.t0, d.t_rows
   local pan, tilt
   if ctx.t < t_rows then
     -- around the estimate, swinging +-scan_swing

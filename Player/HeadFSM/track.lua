@@ -3,15 +3,17 @@
 -- and at once when the body asks (ctx.look_around); never while the body needs the ball's place
 -- fresh (ctx.keep_ball: a kick out of the walk aims its strike at it).
 local point = require('HeadFSM.point')
+local fsm = require('fsm')
 
 local M = {}
-local t0
 
-function M.entry(ctx) t0 = ctx.t end
+-- per activation (ctx): t0 (entry time, or the last look at the goal's end)
+function M.entry(ctx) fsm.fresh(ctx, 'HeadFSM.track').t0 = ctx.t end
 
 function M.update(ctx)
   local cfg = ctx.cfg.head
   local w = ctx.world
+  local t0 = fsm.data(ctx, 'HeadFSM.track').t0
   -- (back from a look at the goal, the head needs a moment to find the ball again)
   if w:ball_age() > 1.5 and ctx.t - t0 > 0.8 and not ctx.look_around then return 'lost' end
   -- a body state that knows better where an unseen ball is (dribbling: ahead of the feet) says so

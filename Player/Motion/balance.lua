@@ -12,6 +12,9 @@
 --   b.shift  -- { x, y }: add it to the COM (torso) position the engine plans, ground frame
 --   b.zmp, b.err, b.contact -- the measured ZMP, its error, true when a foot carries weight
 --   b:reset()
+--   w:extend(b)  -- as a walk extension (Player/Motion/walk.lua's stage `shift_com`): each tick's
+--                -- w:update_com_shift(sensors, dt) updates it from sensors.ft and the walk's feet
+--                -- and planned ZMP, and sets the walk's COM shift
 -- Config (the walk config's `balance`): zmpGain, walkGain ({ x, y }, 1/s), leakTime, maxShift (per
 -- axis), maxRate (m/s), filterTime, walkFilterTime, minForce, sensorHeight; see the law below.
 --
@@ -137,6 +140,13 @@ function Balance:update(dt, ft, uL, uR, zmp_ref, walking)
   shift[1] = clamp(x + clamp(-x * decay - gx * ef[1] * dt, -step, step), -lim, lim)
   shift[2] = clamp(y + clamp(-y * decay - gy * ef[2] * dt, -step, step), -lim, lim)
   return shift
+end
+
+-- Stage `shift_com` of walk w: one update from the feet's F/T (sensors.ft) against the ZMP the
+-- walk planned for the tick just done; the shift into `shift`.
+function Balance:shift_com(w, sensors, dt, shift)
+  local s = self:update(dt, sensors.ft, w.uLeft, w.uRight, w.zmp, w:is_active())
+  shift[1], shift[2] = s[1], s[2]
 end
 
 M.Balance = Balance

@@ -1,5 +1,13 @@
 -- The capture point's error for the step adjustment (Player/Motion/step_adjust.lua): where the
--- robot's capture point is against where the walk plans it, heading frame (m), from the IMU.
+-- robot's capture point is against where the walk plans it, heading frame (m), from the IMU. A walk
+-- extension (Player/Motion/walk.lua's stages `sense` and `feedback`):
+--
+--   local cap = require('Motion.capture').new()
+--   w:extend(cap)      -- cap.err: the error { x, y } (nil until the IMU gave an angle), cap.gate:
+--                      -- the activation { x, y }
+--
+-- The error on the ankles and hips (the walk config's feedback.capture and captureHip, rad per m:
+-- { roll, pitch }) is this extension's feedback stage.
 --
 -- Two parts, the COM's position error and its velocity error times tZmp (the capture point of the
 -- linear inverted pendulum, c + tZmp c'):
@@ -14,7 +22,7 @@
 --    magnitude, per axis) counts: the tilt rate reacts first to a tip, the accelerometer to a shove.
 -- The integral rests while the walk stands (no plan to compare with).
 --
--- The activation (w.cp_gate, per axis 0..1): how much of the error the push recovery acts on (the
+-- The activation (cap.gate, per axis 0..1): how much of the error the push recovery acts on (the
 -- capture feedback on the ankles and hips, the step adjustment's landing). Normal walking, turning
 -- and dribbling have an error too (the plan's own mismatch, the sensors'): on the OP3 |ey| < 0.03 m
 -- in 99% of the ticks it walks in the scoring scenario and < 0.042 m in 99.9%, while a push of
@@ -26,8 +34,14 @@
 local sin, cos, abs = math.sin, math.cos, math.abs
 
 local M = {}
+local Capture = {}
+Capture.__index = Capture
 
 local G = 9.81
+
+-- The estimate's state lives here (err, gate; vel: the accelerometer's velocity error; latch: the
+-- hold's share per axis; plan_v, plan_ok: the planned COM velocity of the last tick).
+function M.new() return setmetatable({}, Capture) end
 
 -- The activation for an error's magnitude a (m) between from and full (m): 0 at or below from, 1 at
 -- or beyond full, a smoothstep between (no jolt to the joints as the push grows).
@@ -38,13 +52,13 @@ function M.activation(a, from, full)
   return u * u * (3 - 2 * u)
 end
 
--- w.cp_gate from w.cp_err and the config (w.cp_latch: the hold's share, per axis)
-local function gate(w, sa, e, dt)
-  local g = w.cp_gate or { 1, 1 }
-  w.cp_gate = g
+-- self.gate from the error e and the config (self.latch: the hold's share, per axis)
+local function gate(self, sa, e, dt)
+  local g = self.gate or { 1, 1 }
+  self.gate = g
   local from, full, hold = sa.activateFrom, sa.activateFull, sa.activateHold
-  local l = w.cp_latch or { 0, 0 }
-  w.cp_latch = l
+  local l = self.latch or { 0, 0 }
+  self.latch = l
   for i = 1, 2 do
     local gi = M.activation(abs(e[i]), from[i], full[i])
     if hold > 0 then
@@ -55,15 +69,15 @@ local function gate(w, sa, e, dt)
   end
 end
 
--- Updates w.cp_err (and w.cp_vel: the accelerometer's velocity error) from sensors (angle, acc)
--- and the gyro's rates (rad/s, torso frame) for one tick of dt s.
-function M.update(w, sensors, gyro, dt)
+-- Stage `sense` of walk w: updates self.err (and self.vel: the accelerometer's velocity error)
+-- from sensors (angle, acc) and the gyro's rates (rad/s, torso frame) for one tick of dt s.
+function Capture:sense(w, sensors, gyro, dt)
   local angle = sensors.angle
   if not angle then return end
   local p = w.p
   local h = p.tZmp * p.tZmp * G
-  local e = w.cp_err or { 0, 0 }
-  w.cp_err = e
+  local e = self.err or { 0, 0 }
+  self.err = e
   local roll, pitch = angle[1], angle[2]
   local tp, tr = pitch - p.bodyTilt, roll
   -- positive pitch tips the top forward (+x), positive roll tips it to the right (-y)
@@ -72,8 +86,8 @@ function M.update(w, sensors, gyro, dt)
   local sa = p.stepAdjust
   local leak = sa.velocityLeak
   local acc = sensors.acc
-  local v = w.cp_vel or { 0, 0 }
-  w.cp_vel = v
+  local v = self.vel or { 0, 0 }
+  self.vel = v
   if leak > 0 and acc and dt and dt > 0 and w.active then
     -- specific force into the world (R = Rz Ry Rx), gravity off; horizontal part in the heading frame
     local cr, sr, cp, sp = cos(roll), sin(roll), cos(pitch), sin(pitch)
@@ -83,25 +97,51 @@ function M.update(w, sensors, gyro, dt)
     local hy = y1
     -- the planned COM's velocity in the heading frame (the walk's ground frame turned by its heading)
     local comd = w.comd
-    local pv = w.cp_plan_v or { 0, 0 }
-    w.cp_plan_v = pv
+    local pv = self.plan_v or { 0, 0 }
+    self.plan_v = pv
     local c, s = cos(-w.uTorso[3]), sin(-w.uTorso[3])
     local qx, qy = c * comd[1] - s * comd[2], s * comd[1] + c * comd[2]
     -- the plan's acceleration from its velocity (the heading frame's turn over a tick is small)
     local pax, pay = (qx - pv[1]) / dt, (qy - pv[2]) / dt
-    if not w.cp_plan_ok then pax, pay = 0, 0 end
-    pv[1], pv[2], w.cp_plan_ok = qx, qy, true
+    if not self.plan_ok then pax, pay = 0, 0 end
+    pv[1], pv[2], self.plan_ok = qx, qy, true
     local k = dt / leak
     v[1] = v[1] + (hx - pax) * dt - k * v[1]
     v[2] = v[2] + (hy - pay) * dt - k * v[2]
     if abs(v[1]) > abs(vx) then vx = v[1] end
     if abs(v[2]) > abs(vy) then vy = v[2] end
   else
-    v[1], v[2], w.cp_plan_ok = 0, 0, false
+    v[1], v[2], self.plan_ok = 0, 0, false
   end
   e[1] = px + p.tZmp * vx
   e[2] = py + p.tZmp * vy
-  gate(w, sa, e, dt)
+  gate(self, sa, e, dt)
 end
 
+local function deadband(x, d)
+  if x > d then return x - d elseif x < -d then return x + d end
+  return 0
+end
+
+-- Stage `feedback` of walk w: the capture point's error on the ankles and hips (the ankle and hip
+-- strategies): a shove shows there before the torso tips (feedback.capture and captureHip, rad per
+-- m: { roll, pitch }; pushed left, the ZMP goes left); only while stepping (at stance the tilt's
+-- share of the error on the ankles rocked the standing OP3 until it crept away, 1.6 m in 60 s) and
+-- beyond the step adjustment's dead band (the walk's own sway, on them, slowed the OP3's sideways
+-- walk by a third), times the activation (0 for the errors of normal walking, 1 for a push's).
+-- extra: { ankle x, ankle y, hip x, hip y } (the ankles' added to, the hips' set).
+function Capture:feedback(w, support, extra)
+  local p = w.p
+  local fb = p.feedback
+  local kc, kh, e, ga = fb.capture, fb.captureHip, self.err, self.gate
+  local sa = p.stepAdjust
+  if e and not support and w.active then
+    local ex, ey = deadband(e[1], sa.deadband[1]), deadband(e[2], sa.deadband[2])
+    if ga then ex, ey = ga[1] * ex, ga[2] * ey end
+    extra[1], extra[2] = extra[1] - kc[1] * ey, extra[2] + kc[2] * ex
+    extra[3], extra[4] = -kh[1] * ey, kh[2] * ex
+  end
+end
+
+M.Capture = Capture
 return M

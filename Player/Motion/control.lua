@@ -26,6 +26,8 @@ local keyframe = require('Motion.keyframe')
 local Kick = require('Motion.kick')
 local WalkKick = require('Motion.walk_kick')
 local balance = require('Motion.balance')
+local capture = require('Motion.capture')
+local step_adjust = require('Motion.step_adjust')
 
 local abs = math.abs
 
@@ -103,6 +105,17 @@ function M.walk_engine(params, files)
   return engine
 end
 
+-- The walk's extensions (Player/Motion/walk.lua), in their order: the F/T balance's COM shift, the
+-- capture point's error, the step adjustment on it, the kick out of the walk. ext: { balance,
+-- capture, step_adjust, walk_kick } (any may be nil).
+function M.extend_walk(w, ext)
+  for _, e in ipairs({ ext.balance or false, ext.capture or false, ext.step_adjust or false,
+    ext.walk_kick or false }) do
+    if e then w:extend(e) end
+  end
+  return w
+end
+
 -- opts: robot (Config robot table), params (walk config, read live), model (kinematics),
 -- initial (state name, default 'stance'), walk_files (the walk config's files, for errors).
 function M.new(opts)
@@ -126,7 +139,9 @@ function M.new(opts)
   c.balance = balance.new(params, opts.walk_files)
   c.kick = Kick.new(c.walk)
   c.walk_kick = WalkKick.new(params)
-  c.walk.step_hook = c.walk_kick
+  c.capture = capture.new()
+  c.step_adjust = step_adjust.new(c.capture)
+  M.extend_walk(c.walk, c)
   c.ji = c.walk.ji
   c.roles = roles(c, robot)
   -- keyframe motions are checked at start: a bad file stops the process with the file named
@@ -232,9 +247,7 @@ end
 -- Balance feedback (Player/Motion/balance.lua) for the walk's next advance(): the feet's F/T
 -- (self.ft) against the ZMP the walk planned for the tick just done, into the walk's COM shift.
 function Ctl:balance_update()
-  local w = self.walk
-  local s = self.balance:update(self.dt, self.ft, w.uLeft, w.uRight, w.zmp, w:is_active())
-  w.com_shift[1], w.com_shift[2] = s[1], s[2]
+  self.walk:update_com_shift(self.sensors, self.dt)
 end
 
 -- Head angles requested by behavior (motion.head_command) into q: pan, tilt.

@@ -191,7 +191,7 @@ while true do
       m.walk_com[0], m.walk_com[1], m.walk_zmp[0], m.walk_zmp[1] = w.com[1], w.com[2], w.zmp[1], w.zmp[2]
       m.walk_feet[0], m.walk_feet[1], m.walk_feet[2] = w.uLeft[1], w.uLeft[2], w.uLeft[3]
       m.walk_feet[3], m.walk_feet[4], m.walk_feet[5] = w.uRight[1], w.uRight[2], w.uRight[3]
-      local e = w.cp_err
+      local e = ctl.capture.err
       m.capture_error[0], m.capture_error[1] = e and e[1] or 0, e and e[2] or 0
       m.walk_steps[0], m.steps_adjusted[0] = w.stats.steps, w.stats.adjusted or 0
       m.kick_phase[0], m.kicks[0] = ctl.walk_kick:phase(), ctl.walk_kick.count

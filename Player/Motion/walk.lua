@@ -10,14 +10,41 @@
 -- balance feedback's: Player/Motion/balance.lua); leg IK gives the angles.
 -- Feedback (all gains in the config): torso rate (gyro) on ankles, knees, hips and arms; torso
 -- angle estimated from the support leg's measured joint angles (proprioception) on the hips; the
--- feet's F/T sensors through `com_shift` (Player/Motion/balance.lua, called by the motion states).
+-- feet's F/T sensors through `com_shift` (Player/Motion/balance.lua, an extension: see below).
 --
 -- Frames: poses u = {x, y, a} in the walk's ground frame (odometry: starts at 0 where the walk
 -- was created). Feet are the foot frames of Lib/kinematics (sole point below the ankle).
 -- Every parameter is read from the params table at each step/tick, so a change lands while walking.
+--
+-- Extensions (Player/Motion/capture.lua, step_adjust.lua, walk_kick.lua, balance.lua; added in
+-- order by Player/Motion/control.lua) plug into the walk through named stages: a table with any of
+-- the stage functions below, added with w:extend(ext); each stage runs its extensions in the order
+-- they were added. A stage gets the extension, the walk (to read: p, vel, stopping, active, dt, T,
+-- ph1, ph2, com, comd, zmp, uTorso, uLeft, uRight, legs, ax, ay, arms; counters may be added to
+-- w.stats) and the outputs it may change; an extension writes no other field of the walk.
+--   shift_com(ext, w, sensors, dt, shift)  update_com_shift(), before advance(): shift = { x, y } (m,
+--                                          ground frame) added to the planned COM (Motion.balance)
+--   support(ext, w, support) -> support    a step begins: the foot that carries it (LEFT/RIGHT)
+--   begin_step(ext, w, step)               a step begins, its nominal plan made: may change
+--                                          step.target (the swing foot's landing), step.zmp (the
+--                                          single-support ZMP point), step.T, step.ph1, step.ph2
+--   retarget(ext, w, step, t, s)           each tick of a step before the swing foot moves (t: s into
+--                                          the step, s: the swing's progress 0..1): may replace
+--                                          step.start and step.target (the swing goes from one to the
+--                                          other), end the step early at step.t_end, set step.z
+--   swing(ext, w, step, t)                 each tick of a step after the swing foot moved: may move
+--                                          step.foot (its pose, in place) and set step.z
+--   pitch(ext, w) -> rad                   the torso's pitch added to bodyTilt (placement, tilt feedback)
+--   joints(ext, w, q)                      joint_angles(): offsets into q after the leg IK and the arms
+--   sense(ext, w, sensors, gyro, dt)       joint_angles() with sensors, before the feedback
+--   feedback(ext, w, support, extra)       then: extra = { ankle x, ankle y, hip x, hip y } (rad about
+--                                          the torso's axes) on the support leg's feedback
+--   level(ext, w, q, sensors, dt, sup)     after the feedback (not under a kick that names its support
+--                                          leg): offsets into q; sup: the support leg in single support
+-- step (w.step, the step under way): left (true: the left foot swings), stance (the support foot's
+-- pose), start and target (the swing foot's start and landing), foot (the swing foot's pose now),
+-- zmp, T, ph1, ph2, t_end (nil: T), z (the swing foot's height).
 local lipm = require('Motion.lipm')
-local step_adjust = require('Motion.step_adjust')
-local capture = require('Motion.capture')
 
 local sin, cos, atan2, asin = math.sin, math.cos, math.atan2, math.asin
 local abs, pi = math.abs, math.pi
@@ -118,8 +145,44 @@ function M.new(params, model)
   w.vel_eff = { 0, 0, 0 }
   w.va_correction = 0      -- rad/s added to the turning of each step (heading feedback)
   w.com_shift = { 0, 0 }   -- m, ground frame: added to the planned COM (balance feedback, Motion.balance)
+  w.step = {}              -- the step under way, as the extensions see it (see the header)
+  w.feedback_extra = { 0, 0, 0, 0 } -- the extensions' feedback of the tick (see the header)
+  w.extensions, w.stages = {}, {}
+  for _, stage in ipairs(M.STAGES) do w.stages[stage] = {} end
   w:reset()
   return w
+end
+
+M.STAGES = { 'shift_com', 'support', 'begin_step', 'retarget', 'swing', 'pitch', 'joints', 'sense', 'feedback',
+  'level' }
+
+-- Adds an extension (see the header): its stages run after those of the extensions added before.
+function Walk:extend(ext)
+  local any = false
+  for _, stage in ipairs(M.STAGES) do
+    local f = ext[stage]
+    if f ~= nil then
+      if type(f) ~= 'function' then error(string.format("walk extension: stage '%s' must be a function", stage), 2) end
+      local list = self.stages[stage]
+      list[#list + 1] = ext
+      any = true
+    end
+  end
+  if not any then error('walk extension: no stage (' .. table.concat(M.STAGES, ', ') .. ')', 2) end
+  self.extensions[#self.extensions + 1] = ext
+  return ext
+end
+
+-- The torso's pitch the extensions add to bodyTilt (rad; a kick out of the walk leans it on purpose).
+function Walk:extra_pitch()
+  local a = 0
+  for _, ext in ipairs(self.stages.pitch) do a = a + ext:pitch(self) end
+  return a
+end
+
+-- Before advance(): the COM shift of this tick from the extensions (sensors of the tick, dt s).
+function Walk:update_com_shift(sensors, dt)
+  for _, ext in ipairs(self.stages.shift_com) do ext:shift_com(self, sensors, dt, self.com_shift) end
 end
 
 -- Puts the walk at stance at the origin of its ground frame (feet at the nominal spacing).
@@ -199,7 +262,7 @@ function Walk:start()
     self.stepping = false
     self.support = nil
     self.steps_still = 0
-    self.touchdown = nil
+    self.step.t_end = nil
   end
   self.stopping = false
 end
@@ -297,13 +360,23 @@ function Walk:feet_together()
   return abs(rel[1]) < 1e-3 and abs(rel[2] - 2 * p.footY) < 1e-3 and abs(rel[3]) < 1e-3
 end
 
+-- The extensions' stages of a step's start (see the header): the swing foot's start and landing,
+-- the ZMP point and the timing of the step as they leave them.
+local function extend_step(self, step)
+  for _, ext in ipairs(self.stages.begin_step) do ext:begin_step(self, step) end
+  if step.left then self.uLeft1, self.uLeft2 = step.start, step.target
+  else self.uRight1, self.uRight2 = step.start, step.target end
+  self.uSupport = step.zmp
+end
+
 function Walk:begin_step()
   local p = self.p
+  local step = self.step
   self.uLeft1, self.uRight1 = self.uLeft2, self.uRight2
   self.uTorso1 = self.uTorso2
   -- a step ended early (step adjustment's touch-down): the next one starts from the COM's plan now
-  if self.touchdown then self.uTorso1 = { self.com[1], self.com[2], self.uTorso[3] } end
-  self.touchdown = nil
+  if step.t_end then self.uTorso1 = { self.com[1], self.com[2], self.uTorso[3] } end
+  step.t_end = nil
   self:update_velocity()
   local v = self.vel
   local still = abs(v[1]) < 1e-4 and abs(v[2]) < 1e-4 and abs(v[3]) < 1e-4
@@ -322,7 +395,7 @@ function Walk:begin_step()
     self.support = 1 - self.support
   end
   -- a push sideways: the foot on its side swings (Motion.step_adjust)
-  self.support = step_adjust.support(self, self.support)
+  for _, ext in ipairs(self.stages.support) do self.support = ext:support(self, self.support) end
   local sY = p.supportY
   -- heading correction from outside (IMU yaw against the commanded turning), rad/s
   local ve = self.vel_eff
@@ -338,15 +411,23 @@ function Walk:begin_step()
     self.uRight2 = self.uRight1
     self.uSupport = pose_global({ p.supportX, -sY, 0 }, self.uRight1)
   end
-  step_adjust.begin_step(self)
-  local mid = interp(0.5, self.uLeft2, self.uRight2)
-  self.uTorso2 = pose_global({ p.supportX, 0, 0 }, mid)
   -- the step keeps the duration and single-support phase it was planned with (its COM plan is only
   -- valid for them): a live change of tStep or phSingle (Lib/param.lua) lands at the next step;
-  -- a step hook (a kick out of the walk: Motion.walk_kick) may make this step its own
-  local ph1, ph2 = p.phSingle[1], p.phSingle[2]
-  if self.step_hook then T, ph1, ph2 = self.step_hook:begin_step(self, T, ph1, ph2) end
-  self.T, self.ph1, self.ph2 = T, ph1, ph2
+  -- an extension may move the landing (Motion.step_adjust) or make the step its own (a kick out of
+  -- the walk: Motion.walk_kick)
+  local left = self.support ~= LEFT
+  step.left = left
+  step.stance = left and self.uRight1 or self.uLeft1
+  step.start = left and self.uLeft1 or self.uRight1
+  step.target = left and self.uLeft2 or self.uRight2
+  step.foot = left and self.uLeft or self.uRight
+  step.zmp = self.uSupport
+  step.T, step.ph1, step.ph2 = T, p.phSingle[1], p.phSingle[2]
+  extend_step(self, step)
+  local mid = interp(0.5, self.uLeft2, self.uRight2)
+  self.uTorso2 = pose_global({ p.supportX, 0, 0 }, mid)
+  T = step.T
+  self.T, self.ph1, self.ph2 = T, step.ph1, step.ph2
   self:plan_com(T, self.ph1 * T, self.ph2 * T)
   self.stats.steps = self.stats.steps + 1
   return true
@@ -381,7 +462,7 @@ function Walk:advance(dt)
   if self.active then
     local T = self.T or self:step_time()
     -- a step the step adjustment put down early ends with its touch-down
-    local t_end = self.touchdown and self.touchdown.t_end or T
+    local t_end = self.step.t_end or T
     self.t = self.t + dt
     if self.t >= t_end - 1e-9 then
       self.t = self.t - t_end
@@ -421,8 +502,12 @@ function Walk:advance(dt)
     local lift = 16 * phs * phs * (1 - phs) * (1 - phs)
     self.swing_z = p.stepHeight * lift
     -- capture point stepping: the landing moves, or the swing foot is put down (Motion.step_adjust)
-    step_adjust.tick(self, t, s)
-    if self.touchdown then self.swing_z = step_adjust.touchdown_z(self, t) end
+    local step = self.step
+    step.z = self.swing_z
+    for _, ext in ipairs(self.stages.retarget) do ext:retarget(self, step, t, s) end
+    if step.left then self.uLeft1, self.uLeft2 = step.start, step.target
+    else self.uRight1, self.uRight2 = step.start, step.target end
+    self.swing_z = step.z
     if self.support == LEFT then
       interp_into(self.uRight, s, self.uRight1, self.uRight2)
       copy3(self.uLeft, self.uLeft1)
@@ -440,7 +525,9 @@ function Walk:advance(dt)
       local sw = left and self.uLeft or self.uRight
       sw[3] = wrap(a1 + M.trapezoid(phs, ramp) * wrap(a2 - a1))
     end
-    if self.step_hook then self.step_hook:swing(self, t) end
+    -- a kick out of the walk swings the foot its own way (Motion.walk_kick)
+    for _, ext in ipairs(self.stages.swing) do ext:swing(self, step, t) end
+    self.swing_z = step.z
     -- heading: turns at a constant rate over the whole step (no yaw jerk from the swing; a torso
     -- that followed the feet's mean yaw, so that both hips share the swing foot's turn, measured
     -- worse on the OP3: its stop and start in double support slipped the support foot)
@@ -467,7 +554,7 @@ function Walk:place_feet()
     if self.support == LEFT then rz = self.swing_z else lz = self.swing_z end
   end
   local tz, tp, tr = p.bodyHeight, p.bodyTilt, 0
-  if self.step_hook then tp = tp + self.step_hook.tilt end
+  for _, ext in ipairs(self.stages.pitch) do tp = tp + ext:pitch(self) end
   local uL, uR = self.uLeft, self.uRight
   foot_in_torso(self.lpose, uL[1], uL[2], lz, uL[3], tx, ty, tz, ta, tp, tr)
   foot_in_torso(self.rpose, uR[1], uR[2], rz, uR[3], tx, ty, tz, ta, tp, tr)
@@ -607,68 +694,83 @@ local function add_rot(self, q, i, rx, ry)
   q[i] = q[i] + self.ax[i] * rx + self.ay[i] * ry
 end
 
--- All joint angles of the walk into q (1-based robot order): legs by IK from the last advance(),
--- arms from the config, then feedback. sensors: { gyro = {3} rad/s, position = joint angles
--- (1-based, measured) } or nil (no feedback). dt: the tick. support: LEFT/RIGHT to name the leg that
--- carries the robot in single support when the walk is not stepping (kick). Returns the IK flags.
-function Walk:joint_angles(q, sensors, dt, support)
-  local p = self.p
+-- The stages of joint_angles(), in the order it calls them.
+
+-- Legs by IK from the last advance(), the hip yaw's lead added; returns the IK flags.
+local function leg_ik(self, q, dt)
   local flags = self.model:legs_ik(self.lpose, self.rpose, q)
   self:lead_hip_yaw(q, dt)
-  -- arms: the posture by joint name (read live: Walk.set('arms.l.posture.l_el', 0.3) lands at once)
-  local arms, larm, rarm = p.arms, self.arms.l, self.arms.r
+  return flags
+end
+
+-- Arms: the posture by joint name (read live: Walk.set('arms.l.posture.l_el', 0.3) lands at once).
+local function arm_posture(self, q)
+  local arms = self.p.arms
   for side, arm in pairs(self.arms) do
     local posture = arms[side].posture
     for _, j in ipairs(arm.joints) do q[j[1]] = posture[j[2]] end
   end
-  -- arm swing against the legs: the arm opposite to the forward foot goes forward
+end
+
+-- Arm swing against the legs: the arm opposite to the forward foot goes forward.
+local function arm_swing(self, q)
+  local p, larm, rarm = self.p, self.arms.l, self.arms.r
   if p.armSwing ~= 0 then
     local rel = pose_relative(self.uLeft, self.uRight)
     if larm and larm.pitch then add_rot(self, q, larm.pitch, 0, p.armSwing * rel[1]) end
     if rarm and rarm.pitch then add_rot(self, q, rarm.pitch, 0, -p.armSwing * rel[1]) end
   end
-  if self.step_hook then self.step_hook:joints(self, q) end
-  -- which leg carries the robot: the support leg while stepping, both at stance
+end
+
+-- The extensions' joint offsets (a kick out of the walk: Motion.walk_kick).
+local function extension_joints(self, q)
+  for _, ext in ipairs(self.stages.joints) do ext:joints(self, q) end
+end
+
+-- Which leg carries the robot: the support leg while stepping, both at stance. Returns the
+-- single-support weight and the support leg (nil: both).
+local function support_leg(self, support)
   local ss = support and 1 or self:single_support()
   local sup = support or (self.active and self.support or nil)
-  -- hip roll compensation of the sag in single support
+  return ss, sup
+end
+
+-- Hip roll compensation of the sag in single support.
+local function hip_roll_compensation(self, q, ss, sup)
   if sup ~= nil and ss > 0 then
-    local c = p.hipRollCompensation * (sup == LEFT and 1 or -1)
+    local c = self.p.hipRollCompensation * (sup == LEFT and 1 or -1)
     add_rot(self, q, self.legs[sup][2], c, 0)
   end
-  if not sensors then return flags end
-  local fb = p.feedback
-  -- gyro: filtered, dead band, then restoring corrections on the support leg (both at stance)
-  local g, gf = sensors.gyro, self.gyro_f
+end
+
+-- The gyro low-passed (self.gyro_f), then its dead band: the rates the feedback acts on.
+local function filter_gyro(self, g, dt)
+  local fb, gf = self.p.feedback, self.gyro_f
   local alpha = clamp(dt / (dt + fb.gyroTimeConstant), 0, 1)
   gf[1] = gf[1] + alpha * (g[1] - gf[1])
   gf[2] = gf[2] + alpha * (g[2] - gf[2])
-  local gx, gy = deadband(gf[1], fb.gyroDeadband[1]), deadband(gf[2], fb.gyroDeadband[2])
-  capture.update(self, sensors, g, dt)
-  local lim = fb.maxCorrection
-  -- (not under a kick that names its support leg: it tilts the torso on purpose, Motion.kick)
-  local tax, tay = 0, 0
-  if not support then tax, tay = self:tilt_feedback(sensors, dt) end
-  -- the capture point's error on the ankles and hips (the ankle and hip strategies): a shove shows
-  -- there before the torso tips (feedback.capture and captureHip, rad per m: { roll, pitch };
-  -- pushed left, the ZMP goes left); only while stepping (at stance the tilt's share of the error
-  -- on the ankles rocked the standing OP3 until it crept away, 1.6 m in 60 s) and beyond the step
-  -- adjustment's dead band (the walk's own sway, on them, slowed the OP3's sideways walk by a third),
-  -- times the activation (Motion.capture: 0 for the errors of normal walking, 1 for a push's)
-  local kc, kh, e, ga = fb.capture, fb.captureHip, self.cp_err, self.cp_gate
-  local thx, thy = 0, 0
-  local sa = p.stepAdjust
-  if e and not support and self.active then
-    local ex, ey = deadband(e[1], sa.deadband[1]), deadband(e[2], sa.deadband[2])
-    if ga then ex, ey = ga[1] * ex, ga[2] * ey end
-    tax, tay = tax - kc[1] * ey, tay + kc[2] * ex
-    thx, thy = -kh[1] * ey, kh[2] * ex
-  end
-  local ankx, anky = clamp(fb.ankle[1] * gx + tax, -lim, lim), clamp(fb.ankle[2] * gy + tay, -lim, lim)
-  local kny = clamp(fb.knee * gy, -lim, lim)
-  local hipx, hipy = clamp(fb.hip[1] * gx + thx, -lim, lim), clamp(fb.hip[2] * gy + thy, -lim, lim)
-  -- torso angle from proprioception: the support foot is flat, so its measured pose in the torso
-  -- frame gives the torso's real tilt; the difference from the commanded tilt goes to the hips
+  return deadband(gf[1], fb.gyroDeadband[1]), deadband(gf[2], fb.gyroDeadband[2])
+end
+
+-- The extensions' view of the sensors (the capture point's error: Motion.capture).
+local function extension_sense(self, sensors, g, dt)
+  for _, ext in ipairs(self.stages.sense) do ext:sense(self, sensors, g, dt) end
+end
+
+-- The extensions' feedback on the ankles (on top of tax, tay) and the hips (the capture point's
+-- error: Motion.capture). Returns ankle x, y and hip x, y (rad about the torso's axes).
+local function extension_feedback(self, support, tax, tay)
+  local extra = self.feedback_extra
+  extra[1], extra[2], extra[3], extra[4] = tax, tay, 0, 0
+  for _, ext in ipairs(self.stages.feedback) do ext:feedback(self, support, extra) end
+  return extra[1], extra[2], extra[3], extra[4]
+end
+
+-- Torso angle from proprioception: the support foot is flat, so its measured pose in the torso
+-- frame gives the torso's real tilt; the difference from the commanded tilt goes to the hips.
+-- Returns the hips' correction about x and y (0, 0 without measured joint angles).
+local function torso_estimate(self, sensors, sup, dt, lim)
+  local fb = self.p.feedback
   local tx, ty = 0, 0
   local pos = sensors.position
   if pos and fb.torso[1] + fb.torso[2] ~= 0 then
@@ -685,6 +787,17 @@ function Walk:joint_angles(q, sensors, dt, support)
     fs[2] = fs[2] + beta * (ep - fs[2])
     tx, ty = clamp(fb.torso[1] * fs[1], -lim, lim), clamp(fb.torso[2] * fs[2], -lim, lim)
   end
+  return tx, ty
+end
+
+-- The feedback on the support leg (both at stance): gyro rates (gx, gy), tilt and extensions on
+-- the ankles (tax, tay) and hips (thx, thy), the torso estimate on the hips (tx, ty); each term
+-- within lim.
+local function leg_feedback(self, q, sup, gx, gy, tax, tay, thx, thy, tx, ty, lim)
+  local fb = self.p.feedback
+  local ankx, anky = clamp(fb.ankle[1] * gx + tax, -lim, lim), clamp(fb.ankle[2] * gy + tay, -lim, lim)
+  local kny = clamp(fb.knee * gy, -lim, lim)
+  local hipx, hipy = clamp(fb.hip[1] * gx + thx, -lim, lim), clamp(fb.hip[2] * gy + thy, -lim, lim)
   for side = LEFT, RIGHT do
     local w = (sup == nil or sup == side) and 1 or 0
     if w > 0 then
@@ -696,13 +809,50 @@ function Walk:joint_angles(q, sensors, dt, support)
       add_rot(self, q, legi[6], ankx, 0)
     end
   end
-  -- the swing foot lands flat on a leaning robot (Motion.step_adjust)
-  if not support then step_adjust.level_swing(self, q, sensors, dt, ss > 0 and sup or nil) end
+end
+
+-- The extensions' corrections after the feedback (the swing foot lands flat on a leaning robot:
+-- Motion.step_adjust); sup: the support leg in single support, nil otherwise.
+local function extension_level(self, q, sensors, dt, sup)
+  for _, ext in ipairs(self.stages.level) do ext:level(self, q, sensors, dt, sup) end
+end
+
+-- The gyro rates on the arms' pitch and roll joints.
+local function arm_feedback(self, q, gx, gy, lim)
+  local fb = self.p.feedback
   local armx, army = clamp(fb.arm[1] * gx, -lim, lim), clamp(fb.arm[2] * gy, -lim, lim)
   for _, arm in pairs(self.arms) do
     if arm.pitch then add_rot(self, q, arm.pitch, 0, army) end
     if arm.roll then add_rot(self, q, arm.roll, armx, 0) end
   end
+end
+
+-- All joint angles of the walk into q (1-based robot order): legs by IK from the last advance(),
+-- arms from the config, then feedback. sensors: { gyro = {3} rad/s, position = joint angles
+-- (1-based, measured) } or nil (no feedback). dt: the tick. support: LEFT/RIGHT to name the leg that
+-- carries the robot in single support when the walk is not stepping (kick). Returns the IK flags.
+function Walk:joint_angles(q, sensors, dt, support)
+  local flags = leg_ik(self, q, dt)
+  arm_posture(self, q)
+  arm_swing(self, q)
+  extension_joints(self, q)
+  local ss, sup = support_leg(self, support)
+  hip_roll_compensation(self, q, ss, sup)
+  if not sensors then return flags end
+  local g = sensors.gyro
+  local gx, gy = filter_gyro(self, g, dt)
+  extension_sense(self, sensors, g, dt)
+  local lim = self.p.feedback.maxCorrection
+  -- the torso's tilt on the ankles (not under a kick that names its support leg: it tilts the
+  -- torso on purpose, Motion.kick)
+  local tax, tay = 0, 0
+  if not support then tax, tay = self:tilt_feedback(sensors, dt) end
+  local thx, thy
+  tax, tay, thx, thy = extension_feedback(self, support, tax, tay)
+  local tx, ty = torso_estimate(self, sensors, sup, dt, lim)
+  leg_feedback(self, q, sup, gx, gy, tax, tay, thx, thy, tx, ty, lim)
+  if not support then extension_level(self, q, sensors, dt, ss > 0 and sup or nil) end
+  arm_feedback(self, q, gx, gy, lim)
   return flags
 end
 
@@ -719,7 +869,7 @@ function Walk:tilt_feedback(sensors, dt)
   local a = clamp(dt / (dt + fb.tiltTimeConstant), 0, 1)
   tf[1] = tf[1] + a * (angle[1] - tf[1])
   -- the torso's pitch as planned: a kick out of the walk leans it on purpose (Motion.walk_kick)
-  local pitch = self.p.bodyTilt + (self.step_hook and self.step_hook.tilt or 0)
+  local pitch = self.p.bodyTilt + self:extra_pitch()
   tf[2] = tf[2] + a * (angle[2] - pitch - tf[2])
   return k[1] * tf[1], k[2] * tf[2]
 end
@@ -738,5 +888,4 @@ function Walk:update_com_offset(q, alpha)
 end
 
 M.Walk = Walk
-step_adjust.bind(M)
 return M

@@ -1,8 +1,8 @@
 -- A kick out of the walk: on the next step whose swing foot is the kicking foot, that foot's swing
 -- is replaced by a kick swing (lift, wind-up, a fast strike through the ball, retract, land where
--- the walk would have put it) while the support foot and the COM plan keep walking. Plugged into
--- either walk engine as its `step_hook` (Player/Motion/walk.lua calls begin_step at each step's
--- start, swing each tick, joints after the leg IK).
+-- the walk would have put it) while the support foot and the COM plan keep walking. A walk
+-- extension of either engine (Player/Motion/walk.lua's stages `begin_step` at each step's start,
+-- `swing` each tick, `pitch`, and `joints` after the leg IK): w:extend(require('Motion.walk_kick').new(p)).
 --
 -- Numbers from the walk config's `walkKick` (per body): `expire` (s a request waits at most),
 -- `maxSpeed` = { vx, vy, va } (a kick waits for a step begun no faster), and per kind:
@@ -97,39 +97,40 @@ local function waypoints(cfg, sgn, ball_rel)
   return pts
 end
 
--- Called by the walk at each step's start (its targets are set: uLeft2/uRight2, uSupport, support).
--- Returns the step's duration and single-support phase (a kick step's own, or those given).
-function Kick:begin_step(w, T, ph1, ph2)
+-- Stage `begin_step` (the step's targets are set: step.left, stance, start, target): a kick step
+-- has its own duration, single-support phase and ZMP point (step.T, ph1, ph2, zmp).
+function Kick:begin_step(w, step)
   if self.cur then self.cur = nil self.count = self.count + 1 end
   local req = self.pending
-  if not req or w.stopping then return T, ph1, ph2 end
-  local swing_left = w.support == walk.RIGHT
-  if (req.foot == 'left') ~= swing_left then return T, ph1, ph2 end
+  if not req or w.stopping then return end
+  local swing_left = step.left
+  if (req.foot == 'left') ~= swing_left then return end
   local cfg = self.p.walkKick[req.kind]
   -- a kick step out of a faster walk throws the robot (the step's COM plan starts from the walk's
   -- speed): the request waits for a slower step (or expires)
   local v = w.vel
   if math.abs(v[1]) > self.p.walkKick.maxSpeed[1] or math.abs(v[2]) > self.p.walkKick.maxSpeed[2]
     or math.abs(v[3]) > self.p.walkKick.maxSpeed[3] then
-    return T, ph1, ph2
+    return
   end
   local sgn = swing_left and 1 or -1
-  local sup = swing_left and w.uRight1 or w.uLeft1
+  local sup = step.stance
   local ball = req.ball and pose_relative({ req.ball[1], req.ball[2], 0 }, sup)
     or { cfg.ball.x, sgn * (2 * self.p.footY + cfg.ball.y), 0 }
   -- a ball further ahead than the strike is made for waits for the next step of this foot, the
   -- walk bringing it nearer: beyond it the foot met the ball at the end of its reach, slowing down
   -- (forward kicks of the OP3: 1.2 m against 1.8 m a few centimetres nearer)
   local far = rawget(cfg, 'ballMax')
-  if far and req.ball and ball[1] > far then return T, ph1, ph2 end
+  if far and req.ball and ball[1] > far then return end
   self.pending = nil
   -- the kick step lasts a whole number of ticks for an engine on a sample grid (walk_preview)
-  T = cfg.tStep
+  local T = cfg.tStep
   if w.dt then T = floor(T / w.dt + 0.5) * w.dt end
-  ph1, ph2 = cfg.phSingle[1], cfg.phSingle[2]
+  local ph1, ph2 = cfg.phSingle[1], cfg.phSingle[2]
+  step.T, step.ph1, step.ph2 = T, ph1, ph2
   local s = cfg.support
-  w.uSupport = pose_global({ s.x + self.p.supportX, -sgn * (s.y + self.p.supportY), 0 }, sup)
-  local start = swing_left and w.uLeft1 or w.uRight1
+  step.zmp = pose_global({ s.x + self.p.supportX, -sgn * (s.y + self.p.supportY), 0 }, sup)
+  local start = step.start
   local a0 = pose_relative(start, sup)
   self.cur = { kind = req.kind, foot = req.foot, sgn = sgn, sup = sup, cfg = cfg, t1 = ph1 * T, t2 = ph2 * T,
     from = { a0[1], sgn * a0[2], 0 }, pts = waypoints(cfg, sgn, ball), ball = ball }
@@ -137,12 +138,11 @@ function Kick:begin_step(w, T, ph1, ph2)
   if bx < cfg.reach.x[1] or bx > cfg.reach.x[2] or by < cfg.reach.y[1] or by > cfg.reach.y[2] then
     self.missed = self.missed + 1 -- the ball's contact point is outside the foot's reach
   end
-  return T, ph1, ph2
 end
 
--- Called by the walk each tick of a step after its own swing (t: time into the step): places the
--- kicking foot (w.uLeft or w.uRight, w.swing_z) and the joint offsets while a kick swing runs.
-function Kick:swing(w, t)
+-- Stage `swing`, each tick of a step after the walk's own swing (t: time into the step): places
+-- the kicking foot (step.foot, step.z) and sets the joint offsets while a kick swing runs.
+function Kick:swing(_, step, t)
   local k, j = self.cur, self.joint
   for key in pairs(j) do j[key] = 0 end
   self.tilt = 0
@@ -163,7 +163,7 @@ function Kick:swing(w, t)
       to, tj, dur = k.pts[i], phases[i], phases[i].duration
     else
       -- to the landing point by the end of single support
-      local land = pose_relative(k.foot == 'left' and w.uLeft2 or w.uRight2, k.sup)
+      local land = pose_relative(step.target, k.sup)
       to, tj = { land[1], k.sgn * land[2], 0 }, nil
       local used = 0
       for n = 1, #phases do used = used + phases[n].duration end
@@ -177,14 +177,18 @@ function Kick:swing(w, t)
     end
     self.tilt = j.tilt
   end
-  local foot = k.foot == 'left' and w.uLeft or w.uRight
+  local foot = step.foot
   local yaw = foot[3]
   local g = pose_global({ x, k.sgn * y, 0 }, k.sup)
   foot[1], foot[2], foot[3] = g[1], g[2], yaw
-  w.swing_z = z
+  step.z = z
 end
 
--- Adds the kick's joint offsets to the kicking leg (q: 1-based joint angles after the leg IK).
+-- Stage `pitch`: the torso's pitch the kick adds (rad, forward positive).
+function Kick:pitch() return self.tilt end
+
+-- Stage `joints`: the kick's joint offsets on the kicking leg (q: 1-based joint angles after the
+-- leg IK).
 function Kick:joints(w, q)
   local k = self.cur
   if not k then return end

@@ -194,7 +194,7 @@ end
 -- Called by begin_step(): this step's ZMP and the planned steps' over the preview window.
 function Preview:plan_com()
   local K = self:gains()
-  -- this step's samples (a step hook may have made it longer than tStep: Motion.walk_kick)
+  -- this step's samples (an extension may have made it longer than tStep: Motion.walk_kick)
   local n = max(1, floor(self.T / self.dt + 0.5))
   local N = K.N
   -- the step begins at the next tick's sample, or after the lead-in of a walk that starts

@@ -31,7 +31,9 @@ describe('search', function()
     search.entry(c)
     assert.equal(100, c.scan_restart)
     -- the head's scan, entered earlier, starts a sweep again at the look's start
-    scan.entry(context(90, 0, 0, 50, false))
+    c.t = 90
+    scan.entry(c)
+    c.t = 100
     local pans = {}
     for k = 0, math.floor(look / 0.1) - 1 do
       c.t = 100 + k * 0.1

@@ -9,12 +9,14 @@ local params, model, dt, copy = fixture.params, fixture.model, fixture.dt, fixtu
 
 local G = 9.81
 
--- a walk standing upright at the origin (not stepping) with velocityLeak `leak`
+-- a walk standing upright at the origin (not stepping) with velocityLeak `leak`, and its capture
+-- extension
 local function walk(leak)
   local p = copy(params)
   p.stepAdjust.velocityLeak = leak
   local w = Walk.new(p, model)
-  return w, p
+  local cap = w:extend(capture.new())
+  return w, p, cap
 end
 
 -- sensors of an upright torso with pitch bodyTilt, accelerating by (ax, ay) in the heading frame
@@ -30,15 +32,15 @@ end
 
 describe('capture point error', function()
   it('is the tilt times the COM height plus its rate times tZmp, without the accelerometer', function()
-    local w, p = walk(0)
+    local w, p, cap = walk(0)
     local h = p.tZmp * p.tZmp * G
-    capture.update(w, sensors(p, 0, 0, -0.1), { -0.5, 0.2, 0 }, dt)
-    assert.is_near(h * math.sin(0.1) + p.tZmp * h * 0.5, w.cp_err[2], 1e-9) -- rolled left: +y
-    assert.is_near(p.tZmp * h * 0.2, w.cp_err[1], 1e-9)
+    cap:sense(w, sensors(p, 0, 0, -0.1), { -0.5, 0.2, 0 }, dt)
+    assert.is_near(h * math.sin(0.1) + p.tZmp * h * 0.5, cap.err[2], 1e-9) -- rolled left: +y
+    assert.is_near(p.tZmp * h * 0.2, cap.err[1], 1e-9)
   end)
 
   it('sees a shove sideways (the accelerometer integrated against the plan) while walking', function()
-    local w, p = walk(0.6)
+    local w, p, cap = walk(0.6)
     w:set_velocity(0.2, 0, 0)
     w:start()
     w:advance(dt)
@@ -47,24 +49,24 @@ describe('capture point error', function()
       local v0 = { w.comd[1], w.comd[2] }
       w:advance(dt)
       local a = sensors(p, (w.comd[1] - v0[1]) / dt, (w.comd[2] - v0[2]) / dt)
-      capture.update(w, a, { 0, 0, 0 }, dt)
+      cap:sense(w, a, { 0, 0, 0 }, dt)
     end
-    assert.is_true(math.abs(w.cp_err[2]) < 1e-3)
+    assert.is_true(math.abs(cap.err[2]) < 1e-3)
     -- 0.1 s of 5 m/s^2 to the left on top of the plan: 0.5 m/s less the leak
     for _ = 1, math.floor(0.1 / dt + 0.5) do
       local v0 = { w.comd[1], w.comd[2] }
       w:advance(dt)
-      capture.update(w, sensors(p, (w.comd[1] - v0[1]) / dt, (w.comd[2] - v0[2]) / dt + 5), { 0, 0, 0 }, dt)
+      cap:sense(w, sensors(p, (w.comd[1] - v0[1]) / dt, (w.comd[2] - v0[2]) / dt + 5), { 0, 0, 0 }, dt)
     end
-    assert.is_near(0.5 * p.tZmp, w.cp_err[2], 0.1 * 0.5 * p.tZmp)
-    assert.is_true(math.abs(w.cp_err[1]) < 0.01)
+    assert.is_near(0.5 * p.tZmp, cap.err[2], 0.1 * 0.5 * p.tZmp)
+    assert.is_true(math.abs(cap.err[1]) < 0.01)
     -- and forgets it with the leak (an offset of the sensor winds nothing up)
     for _ = 1, math.floor(3 / dt) do
       local v0 = { w.comd[1], w.comd[2] }
       w:advance(dt)
-      capture.update(w, sensors(p, (w.comd[1] - v0[1]) / dt, (w.comd[2] - v0[2]) / dt), { 0, 0, 0 }, dt)
+      cap:sense(w, sensors(p, (w.comd[1] - v0[1]) / dt, (w.comd[2] - v0[2]) / dt), { 0, 0, 0 }, dt)
     end
-    assert.is_true(math.abs(w.cp_err[2]) < 0.01 * 0.5 * p.tZmp)
+    assert.is_true(math.abs(cap.err[2]) < 0.01 * 0.5 * p.tZmp)
   end)
 
   -- One step of a walk (standing: not started) tipped left by `roll`, with capture gains kc (ankle)
@@ -72,7 +74,7 @@ describe('capture point error', function()
   -- and the walk.
   local function capture_angles(kc, kh, roll, stand, gate)
     local robot = fixture.robot
-    local w, p = walk(0)
+    local w, p, cap = walk(0)
     for k, v in pairs(gate or {}) do p.stepAdjust[k] = v end
     p.feedback.capture, p.feedback.captureHip = { kc, 0 }, { kh, 0 }
     p.feedback.ankle, p.feedback.hip, p.feedback.tilt = { 0, 0 }, { 0, 0 }, { 0, 0 }
@@ -84,7 +86,7 @@ describe('capture point error', function()
     local s = sensors(p, 0, 0, -roll)
     s.gyro, s.position = { 0, 0, 0 }, nil
     w:joint_angles(q, s, dt)
-    return q, w
+    return q, w, cap
   end
 
   it('turns the ankles and hips against it (feedback.capture, captureHip)', function()
@@ -94,8 +96,8 @@ describe('capture point error', function()
     -- walking, tipped left by 0.2 rad: the capture point's error is +y, beyond the dead band; the
     -- same sensors with and without the gains (standing: none)
     local function angles(kc, kh, stand)
-      local q, w = capture_angles(kc, kh, 0.2, stand)
-      return q, w.cp_err[2], w.support == Walk.LEFT and 'l_' or 'r_'
+      local q, w, cap = capture_angles(kc, kh, 0.2, stand)
+      return q, cap.err[2], w.support == Walk.LEFT and 'l_' or 'r_'
     end
     local q0, e, sup = angles(0, 0)
     local q1 = angles(2, 3)
@@ -140,12 +142,12 @@ describe('capture point error', function()
     local function change(roll, from, full)
       local gate = { activateFrom = { 0, from }, activateFull = { 0, full } }
       local q0 = capture_angles(0, 0, roll, false, gate)
-      local q1, w = capture_angles(2, 3, roll, false, gate)
+      local q1, _, cap = capture_angles(2, 3, roll, false, gate)
       local d = 0
       for _, n in ipairs({ 'l_ank_roll', 'r_ank_roll', 'l_hip_roll', 'r_hip_roll' }) do
         d = d + math.abs(q1[ji[n]] - q0[ji[n]])
       end
-      return d, w.cp_err[2], w.cp_gate[2]
+      return d, cap.err[2], cap.gate[2]
     end
     local h = params.tZmp * params.tZmp * G
     local db = params.stepAdjust.deadband[2]
@@ -164,30 +166,30 @@ describe('capture point error', function()
   end)
 
   it('holds the activation for activateHold after the error reached activateFull, fading', function()
-    local w, p = walk(0)
+    local w, p, cap = walk(0)
     p.stepAdjust.activateFrom, p.stepAdjust.activateFull = { 0, 0.03 }, { 0, 0.05 }
     local h = p.tZmp * p.tZmp * G
     local big, small = -math.asin(0.06 / h), -math.asin(0.01 / h) -- errors of 0.06 and 0.01 m
     -- without a hold the gate follows the error at once
     p.stepAdjust.activateHold = 0
-    capture.update(w, sensors(p, 0, 0, big), { 0, 0, 0 }, dt)
-    assert.are.equal(1, w.cp_gate[2])
-    capture.update(w, sensors(p, 0, 0, small), { 0, 0, 0 }, dt)
-    assert.are.equal(0, w.cp_gate[2])
+    cap:sense(w, sensors(p, 0, 0, big), { 0, 0, 0 }, dt)
+    assert.are.equal(1, cap.gate[2])
+    cap:sense(w, sensors(p, 0, 0, small), { 0, 0, 0 }, dt)
+    assert.are.equal(0, cap.gate[2])
     -- with a hold of 0.5 s: 1 - t / 0.5 after the push's error, 0 from then on
     p.stepAdjust.activateHold = 0.5
-    capture.update(w, sensors(p, 0, 0, big), { 0, 0, 0 }, dt)
+    cap:sense(w, sensors(p, 0, 0, big), { 0, 0, 0 }, dt)
     local n = math.floor(0.25 / dt + 0.5)
-    for _ = 1, n do capture.update(w, sensors(p, 0, 0, small), { 0, 0, 0 }, dt) end
-    assert.is_near(1 - n * dt / 0.5, w.cp_gate[2], 1e-9)
-    for _ = 1, n + 2 do capture.update(w, sensors(p, 0, 0, small), { 0, 0, 0 }, dt) end
-    assert.are.equal(0, w.cp_gate[2])
-    assert.are.equal(1, w.cp_gate[1]) -- x: activateFull 0, no gate
+    for _ = 1, n do cap:sense(w, sensors(p, 0, 0, small), { 0, 0, 0 }, dt) end
+    assert.is_near(1 - n * dt / 0.5, cap.gate[2], 1e-9)
+    for _ = 1, n + 2 do cap:sense(w, sensors(p, 0, 0, small), { 0, 0, 0 }, dt) end
+    assert.are.equal(0, cap.gate[2])
+    assert.are.equal(1, cap.gate[1]) -- x: activateFull 0, no gate
   end)
 
   it('rests while the walk stands', function()
-    local w, p = walk(0.6)
-    for _ = 1, 50 do capture.update(w, sensors(p, 0, 3), { 0, 0, 0 }, dt) end
-    assert.are.equal(0, w.cp_err[2])
+    local w, p, cap = walk(0.6)
+    for _ = 1, 50 do cap:sense(w, sensors(p, 0, 3), { 0, 0, 0 }, dt) end
+    assert.are.equal(0, cap.err[2])
   end)
 end)

@@ -2,6 +2,8 @@
 -- The step adjustment (Player/Motion/step_adjust.lua) on the walk generator alone: a capture point
 -- error (as the IMU would give it) moves the landing, chooses the swing foot, puts a swing foot down.
 local Walk = require('Motion.walk')
+local capture = require('Motion.capture')
+local step_adjust = require('Motion.step_adjust')
 local fixture = require('Tests.motion.walk_fixture')
 
 local params, model, dt, copy = fixture.params, fixture.model, fixture.dt, fixture.copy
@@ -14,12 +16,15 @@ local function walking(swing_left, sa)
     touchdownError = 0.06, touchdownTime = 0.05, level = { 0, 0 }, levelTime = 0.15 }) do p.stepAdjust[k] = v end
   for k, v in pairs(sa or {}) do p.stepAdjust[k] = v end
   local w = Walk.new(p, model)
-  w.cp_err = { 0, 0 }
+  -- the capture estimate's error, set by the tests (no IMU here)
+  local cap = capture.new()
+  cap.err = { 0, 0 }
+  w:extend(step_adjust.new(cap))
   w:set_velocity(0.2, 0, 0)
   w:start()
   for _ = 1, 400 do
     w:advance(dt)
-    if w.stats.steps >= 4 and w.t < dt / 2 and (w.support == Walk.RIGHT) == swing_left then return w, p end
+    if w.stats.steps >= 4 and w.t < dt / 2 and (w.support == Walk.RIGHT) == swing_left then return w, p, cap end
   end
   error('no step began')
 end
@@ -32,41 +37,41 @@ end
 
 describe('step adjustment', function()
   it('lands the swing foot further out by gain x the error beyond the dead band, within the step limit', function()
-    local w, p = walking(true)
+    local w, p, cap = walking(true)
     local nominal = rel_y(w, true)
-    w.cp_err[2] = 0.05 -- pushed left while the left foot swings
+    cap.err[2] = 0.05 -- pushed left while the left foot swings
     for _ = 1, 10 do w:advance(dt) end
     assert.is_near(nominal + 0.03, rel_y(w, true), 1e-6)
-    w.cp_err[2] = 0.5
+    cap.err[2] = 0.5
     for _ = 1, 2 do w:advance(dt) end
     assert.is_near(p.stepLimitY[2], rel_y(w, true), 1e-6)
   end)
 
   it('keeps the landing nominal while the activation is 0 (the errors of normal walking)', function()
-    local w = walking(true)
+    local w, _, cap = walking(true)
     local nominal = rel_y(w, true)
-    w.cp_err[2], w.cp_gate = 0.05, { 1, 0 }
+    cap.err[2], cap.gate = 0.05, { 1, 0 }
     for _ = 1, 10 do w:advance(dt) end
     assert.is_near(nominal, rel_y(w, true), 1e-9)
     -- half on: half the move
-    w.cp_gate[2] = 0.5
+    cap.gate[2] = 0.5
     for _ = 1, 2 do w:advance(dt) end
     assert.is_near(nominal + 0.015, rel_y(w, true), 1e-6)
   end)
 
   it('moves the landing without a jump of the swing foot', function()
-    local w = walking(true)
+    local w, _, cap = walking(true)
     for _ = 1, 10 do w:advance(dt) end
     local y0 = w.uLeft[2]
-    w.cp_err[2] = 0.06
+    cap.err[2] = 0.06
     w:advance(dt)
     -- one tick of the swing, not the 4 cm of the new landing
     assert.is_true(math.abs(w.uLeft[2] - y0) < 0.01)
   end)
 
   it('swings the foot on the side of the push at a step start, even twice in a row', function()
-    local w = walking(false) -- the right foot swings now; the left would be next
-    w.cp_err[2] = -0.06       -- pushed right: the right foot must swing again
+    local w, _, cap = walking(false) -- the right foot swings now; the left would be next
+    cap.err[2] = -0.06       -- pushed right: the right foot must swing again
     for _ = 1, 40 do
       w:advance(dt)
       if w.t < dt / 2 then break end
@@ -76,12 +81,12 @@ describe('step adjustment', function()
   end)
 
   it('puts a swing foot on the far side of the push down where it is and ends the step early', function()
-    local w = walking(false) -- the right foot swings
+    local w, _, cap = walking(false) -- the right foot swings
     for _ = 1, 10 do w:advance(dt) end
     local steps = w.stats.steps
-    w.cp_err[2] = 0.08        -- pushed left: the right foot cannot catch it
+    cap.err[2] = 0.08        -- pushed left: the right foot cannot catch it
     w:advance(dt)
-    assert.is_truthy(w.touchdown)
+    assert.is_truthy(w.step.t_end)
     local landed = { w.uRight[1], w.uRight[2] }
     local ticks = 0
     repeat w:advance(dt) ticks = ticks + 1 until w.stats.steps > steps or ticks > 40
@@ -93,9 +98,9 @@ describe('step adjustment', function()
   end)
 
   it('does nothing with gain 0', function()
-    local w = walking(true, { gain = 0 })
+    local w, _, cap = walking(true, { gain = 0 })
     local nominal = rel_y(w, true)
-    w.cp_err[2] = 0.1
+    cap.err[2] = 0.1
     for _ = 1, 30 do w:advance(dt) end
     assert.is_near(nominal, rel_y(w, true), 1e-9)
     assert.is_nil(w.stats.adjusted)

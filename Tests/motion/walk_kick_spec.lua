@@ -12,8 +12,7 @@ local robot, model, dt = fixture.robot, fixture.model, fixture.dt
 local function new_walk(engine)
   local p = fixture.copy(fixture.params)
   local w = engine.new(p, model, dt):bind(robot)
-  local k = WalkKick.new(p)
-  w.step_hook = k
+  local k = w:extend(WalkKick.new(p))
   return w, k, p
 end
 

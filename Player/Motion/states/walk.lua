@@ -36,7 +36,7 @@ function M.update(c)
   c:balance_update()
   local active = w:advance(c.dt)
   -- a kick out of the walk may throw the torso back on purpose: the fall detection allows for it
-  c.tilt = w.step_hook and w.step_hook.tilt or 0
+  c.tilt = w:extra_pitch()
   w:joint_angles(c.q, c.sensors, c.dt)
   c:head_angles(c.q)
   w:update_com_offset(c.q)
