@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Hardware in the loop, Dynamixel: the unchanged OP DCM (PLATFORM=OP, robot ROBOT_ID+1) drives the
-# simulated OP3 (the sim DCM's robot ROBOT_ID, real time) through Run/dxl_emulator --sim-id: the
+# simulated OP3 (the sim DCM's robot ROBOT_ID, real time) through Platforms/OP/emulator/dxl_emulator --sim-id: the
 # motion process walks it 30 s at 0.2 m/s without a fall (from the sim's truth). The same walk on the
 # sim DCM directly first, for the leg joints' tracking error (command vs simulated position) of both.
 #   [ROBOT_ID=N] [HIL_SECONDS=30] Tests/hil/dxl_sim_walk.sh
@@ -27,7 +27,7 @@ build/bin/dxl_emulator --link "$T/dxl" --sim-id "$SIM_ID" --realtime --quiet >"$
 PIDS+=($!)
 for _ in $(seq 100); do [ -e "$T/dxl" ] && break; sleep 0.05; done
 ok "$([ -e "$T/dxl" ]; echo $?)" "dxl_emulator --sim-id serves the simulated OP3's bus"
-Run/shm --robot "$OP_ID" remove >/dev/null 2>&1
+Tools/shm/shm --robot "$OP_ID" remove >/dev/null 2>&1
 PLATFORM=OP ROBOT_ID=$OP_ID ./run_dcm --port "$T/dxl" --quiet >"$LOGDIR/dcm_op.log" 2>&1 &
 PIDS+=($!)
 start_motion OP "$OP_ID" hil

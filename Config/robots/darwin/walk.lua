@@ -84,7 +84,7 @@ return {
   -- kick (Player/Motion/kick.lua): the body's and the kicking leg's phases side by side; the
   -- OP3's structure (torso back and arms back through a short swing at the servos' speed limit, the
   -- foot lifted before it draws back, the ball met while the leg heads for the return phase's
-  -- targets), retuned for this body in the sim (Tests/motion/kick_tune.sh, ROBOT=darwin: 8
+  -- targets), retuned for this body in the sim (Tools/tune/kick_tune.sh, ROBOT=darwin: 8
   -- generations from the OP3-derived set, then 6 more at spread 0.6; both feet, ball gaps 0.08/0.12 m,
   -- lateral +-0.025 m, penalised for a fall, a capture point beyond 5 cm and a turn): 1.28-1.45 m
   -- over the tuner's 6 kicks (was 0.9-1.4), 1.30-1.38 m in the kick scenario (seeds 1-3), no fall.

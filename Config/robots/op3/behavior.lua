@@ -29,7 +29,7 @@ return {
     -- runs each: with the speeds, dribbling and search as they were 10/10 and 10/10, medians 54.9
     -- and 57.4 s, 0 and 1 falls, walking 0.23 m/s while dribbling; these: 10/10 and 9/10, 45.6
     -- and 46.1 s, 1 and 3 falls (2 in the miss: the ball on the goal line by a post, the pose
-    -- lost there), 0.27 m/s; Tests/scenarios/trace_stats.py for the time per state)
+    -- lost there), 0.27 m/s; Tools/plot/trace_stats.py for the time per state)
     dribble = {
       speed = 0.36,            -- m/s forward (was 0.3; at 0.32 one run of 10 once fell dribbling;
                                -- at 0.36, in 13 runs of 10: 2 falls while dribbling)
@@ -44,7 +44,7 @@ return {
     max_vy = 0.13,             -- m/s (was the common 0.1: the align's circling, below)
     -- aligning: circling the ball (0.17 m ahead) at up to 0.8 rad/s needs ~0.14 m/s of side-step
     -- (sideways_per_turn ~ the ball's distance x the turn's gain); the common gains took 6.4 s a
-    -- run in score_test, these 4.4-4.9 s (Tests/scenarios/trace_stats.py)
+    -- run in score_test, these 4.4-4.9 s (Tools/plot/trace_stats.py)
     align = { gain = { 0.9, 0.9, 1.2 }, sideways_per_turn = 0.2, max_va = 0.8 },
     -- shooting with a kick out of the walk (walk.lua's walkKick.forward: the ball ~0.19 m ahead of
     -- the support ankle, in line with the kicking foot) to finish: the ball within max_range of the

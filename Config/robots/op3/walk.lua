@@ -26,7 +26,7 @@ return {
   -- The activation (Player/Motion/capture.lua) gates feedback.capture/captureHip and the landing by
   -- the error's size: 0 below activateFrom (m, { x, y }), 1 beyond activateFull (full 0: no gate),
   -- held after a push, fading over activateHold (s). Measured in the scoring scenario with the
-  -- accelerometer on (Tests/motion/capture_stats.py): |ey| < 0.030 m in 99% of the walking ticks,
+  -- accelerometer on (Tools/plot/capture_stats.py): |ey| < 0.030 m in 99% of the walking ticks,
   -- < 0.037-0.042 m in 99.9%; pushes of 1.0-2.0 N s pass 0.05 m in 0.05-0.1 s. With { 0, 0.03 },
   -- { 0, 0.05 } and hold 1.0 the gate averaged 0.0005 and 0.010 in two scoring runs and the
   -- sideways walk kept 0.116-0.117 m/s with the hips on (0.118-0.119 without the terms).
@@ -57,7 +57,7 @@ return {
   stepHeight = 0.035,        -- m, swing foot lift
   -- turning (Player/Motion/walk.lua step_target, step_period, lead_hip_yaw): the legs touch
   -- (op3.urdf's boxes: hip roll links, knees) once the feet's relative yaw passes 0.52 rad toed out
-  -- or 0.45 toed in at the stance's spacing (Tests/motion/hip_yaw_clearance.py; a toed-in foot
+  -- or 0.45 toed in at the stance's spacing (Tools/tune/hip_yaw_clearance.py; a toed-in foot
   -- lands wider, and walking measured -0.50 .. +0.52): stepLimitA. The feet turn by that much per
   -- step at most: so the closing foot lands toed in by a step's turn (turnToeIn: the relative yaw
   -- swings about zero, not from zero to twice it), and a fast turn takes shorter steps (turnStep:
@@ -130,9 +130,9 @@ return {
     sensorHeight = 0.0305,   -- m: the sensor's origin (the ankle roll axis) above the sole
   },
   -- kick (Player/Motion/kick.lua): the body's and the kicking leg's phases side by side.
-  -- Tuned in the sim (Tests/motion/kick_tune.sh: cross-entropy search over both feet, ball gaps
+  -- Tuned in the sim (Tools/tune/kick_tune.sh: cross-entropy search over both feet, ball gaps
   -- 0.08/0.12 m and lateral offsets, penalised for a fall, a capture point beyond 5 cm of the
-  -- support ankle and a turn; checked with Tests/motion/kick_sweep.sh): the hip, knee and ankle
+  -- support ankle and a turn; checked with Tools/tune/kick_sweep.sh): the hip, knee and ankle
   -- swing at the servos' speed limit while the torso leans back (0.34 rad over 0.17 s: the leg
   -- swings faster in the world) and both arms swing back against the torso's pitch momentum. The
   -- foot lifts before it draws back (dragging it turned the robot). The ball is met while the leg
@@ -173,7 +173,7 @@ return {
   -- outward; the ball's radius 0.07 m, met about 0.06 m above the ground (contact x, y: face +
   -- the ball's depth at that height). The strike is a short phase: the servos run at their speed
   -- limit (4.8 rad/s) through it. Way-points relative to the contact point (see walk_kick.lua).
-  -- forward: from the cross-entropy search of Tests/motion/walk_kick_tune.sh (walking at 0.12 m/s,
+  -- forward: from the cross-entropy search of Tools/tune/walk_kick_tune.sh (walking at 0.12 m/s,
   -- both feet, eight ball positions across the zone, scored by the mean and the shortest distance,
   -- penalised for a fall or a stop), over the torso thrown back through the strike, the knee
   -- straightened past the IK's pose, a short wind-up and the strike aimed past the contact point and
