@@ -132,4 +132,4 @@ for g = 1, generations do
   print(string.format('gen %d: best %.3f, generation best %.3f', g, best, pop[1].score))
   save(mean, string.format('mean after generation %d (not yet scored)', g), (out:gsub('%.lua$', '')) .. '_mean.lua')
 end
-save(best_x, string.format('score %.3f', best))
+if best_x then save(best_x, string.format('score %.3f', best)) end   -- GENERATIONS 0: nothing scored

@@ -197,4 +197,4 @@ for it = 1, iters do
     mean[i], sd[i] = m, math.max(math.sqrt(v / ne), (P[i][3] - P[i][2]) / 40)
   end
 end
-print(string.format('best %.3f: %s', best, fmt(bestx)))
+if bestx then print(string.format('best %.3f: %s', best, fmt(bestx))) end   -- ITERS 0: nothing scored
