@@ -1,6 +1,7 @@
-# Sourced by the walk-kick scenario (walk_kick_sweep.sh) and the tuning tools (Tools/tune/kick_trace.sh, kick_sweep.sh, ...): moves to the
-# project's root, sets up its environment and KICK_LOGS (build/test-logs/kick); kick_sim_run runs a
-# command for one robot while its motion process runs alone with the sim in lockstep, then stops both.
+# Sourced by the walk-kick scenario (walk_kick_sweep.sh) and the tuning tools (Tools/tune: kick_trace.sh,
+# kick_sweep.sh, ...): moves to the project's root, sets up its environment and KICK_LOGS
+# (build/test-logs/kick); kick_sim_run runs a command for one robot while its motion process runs
+# alone with the sim in lockstep, then stops both.
 #   kick_sim_run ID LOG COMMAND...     (SIM_SEED: the sim's seed, default 1; returns COMMAND's status)
 cd "$(dirname "${BASH_SOURCE[0]}")/../.." || exit 1
 source Run/env.sh

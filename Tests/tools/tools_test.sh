@@ -46,8 +46,10 @@ EXPECT="$OUT/colors.lut" check "lut: lut_tool builds a table from the colour box
 
 # ---- Tools/tune and the plots of their traces (the sim in lockstep, the motion process alone)
 EXPECT="$OUT/walk.csv $OUT/walk.png" check "tune: walk_trace.lua (the walk generator alone) and plot_walk.py" \
-  bash -c "luajit Tools/tune/walk_trace.lua '$OUT/walk.csv' 0.1 0 0 2 && python3 Tools/plot/plot_walk.py '$OUT/walk.csv' '$OUT/walk.png'"
-EXPECT="$OUT/kick_left.csv $OUT/kick_left.png" check "tune: kick_trace.sh, one kick traced (kick_measure.lua) and plotted (plot_kick.py)" \
+  bash -c "luajit Tools/tune/walk_trace.lua '$OUT/walk.csv' 0.1 0 0 2 &&
+           python3 Tools/plot/plot_walk.py '$OUT/walk.csv' '$OUT/walk.png'"
+EXPECT="$OUT/kick_left.csv $OUT/kick_left.png" \
+  check "tune: kick_trace.sh, one kick traced (kick_measure.lua) and plotted (plot_kick.py)" \
   env ROBOT_ID=$B Tools/tune/kick_trace.sh left 0.1 "$OUT"
 GREP='^sweep n=1 ' check "tune: kick_sweep.sh over one ball placement" \
   env ROBOT_ID=$((B + 1)) Tools/tune/kick_sweep.sh left 0.1 0
@@ -115,16 +117,20 @@ EOF
 EXPECT="$OUT/score/trace_1.png" check "plot: plot_paths.py" python3 Tools/plot/plot_paths.py "$OUT/score/trace_1.txt"
 GREP='approach' check "plot: trace_stats.py" python3 Tools/plot/trace_stats.py "$OUT/score"
 EXPECT="$OUT/match_trace.png" check "plot: plot_match.py" python3 Tools/plot/plot_match.py "$OUT/match_trace.txt"
-EXPECT="$OUT/terrain.png" check "plot: plot_terrain.py" python3 Tools/plot/plot_terrain.py "$OUT/terrain.csv" "$OUT/terrain.png"
+EXPECT="$OUT/terrain.png" check "plot: plot_terrain.py" \
+  python3 Tools/plot/plot_terrain.py "$OUT/terrain.csv" "$OUT/terrain.png"
 EXPECT="$OUT/walk_kick.png" check "plot: plot_walk_kick.py" \
   python3 Tools/plot/plot_walk_kick.py "$OUT/walk_kick.txt" "$OUT/walk_kick.png"
-EXPECT="$OUT/capture.png" GREP='^play: 200 walking ticks' check "plot: capture_stats.py (play and push_trace.sh's push)" \
+EXPECT="$OUT/capture.png" GREP='^play: 200 walking ticks' \
+  check "plot: capture_stats.py (play and push_trace.sh's push)" \
   python3 Tools/plot/capture_stats.py "$OUT/capture.png" "$OUT/capture" "$OUT/push.csv"
 
 # ---- Tools/match: a 1v1 match of two 2 s halves (READY 1 s) and the league's table of its log
-GREP='^result: team 1 [0-9]+ : [0-9]+ team 2' check "match: match.sh, 1v1, refereed (referee.lua, rules.lua, tally.lua)" \
+GREP='^result: team 1 [0-9]+ : [0-9]+ team 2' \
+  check "match: match.sh, 1v1, refereed (referee.lua, rules.lua, tally.lua)" \
   env ROBOT_ID=$((B + 10 - 270)) HRP_MATCH_TRACE="$OUT/match_real.txt" Tools/match/match.sh 1 2 1 1
-EXPECT="$OUT/match_real.png" check "match: plot_match.py on the match's trace" python3 Tools/plot/plot_match.py "$OUT/match_real.txt"
+EXPECT="$OUT/match_real.png" check "match: plot_match.py on the match's trace" \
+  python3 Tools/plot/plot_match.py "$OUT/match_real.txt"
 GREP='matches' check "match: league.py tabulates a referee log" \
   bash -c "python3 Tools/match/league.py --tabulate build/match/$((B + 10))/referee.log"
 
@@ -152,7 +158,8 @@ GREP='^# seed 1' check "bench: score_given_pose.sh, one seed of 5 s" \
   env ROBOT_ID=$((B + 30)) SCORE_LIMIT=5 SCORE_NEED=0 Tools/bench/score_given_pose.sh 1
 GREP='^# seed 1' check "bench: white_score.sh (site_white), one seed of 5 s" \
   env ROBOT_ID=$((B + 40 - 400)) SCORE_LIMIT=5 SCORE_NEED=0 Tools/bench/white_score.sh 1
-GREP='falls: [0-9]+ of 1' check "bench: catch_falls.sh, one run" env ROBOT_ID=$((B + 50 - 97)) CATCH_RUNS=1 Tools/bench/catch_falls.sh
+GREP='falls: [0-9]+ of 1' check "bench: catch_falls.sh, one run" \
+  env ROBOT_ID=$((B + 50 - 97)) CATCH_RUNS=1 Tools/bench/catch_falls.sh
 
 echo "1..$k"
 [ "$failed" -eq 0 ]
