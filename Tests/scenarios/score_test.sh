@@ -9,7 +9,7 @@
 # env: SCORE_LIMIT (s), SCORE_NEED (goals needed per 10 runs, default 9), SKIP_KILL=1, SCORE_LOGDIR,
 # CAPTURE_LOGS=1 (each run also logs the walk's capture point error per tick: capture_SEED.txt),
 # SCORE_BEHAVIOR=FILE (run FILE as the behavior process: Tools/bench/score_given_pose.sh,
-# Tests/scenarios/behavior_record.lua), ROBOT_ID (the runs use ROBOT_ID+1.. and ROBOT_ID+50)
+# Tools/tune/behavior_record.lua), ROBOT_ID (the runs use ROBOT_ID+1.. and ROBOT_ID+50)
 # TAP output; logs in build/test-logs/scenarios/.
 set -u
 cd "$(dirname "$0")/../.."

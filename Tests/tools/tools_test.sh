@@ -66,6 +66,12 @@ GREP='^pushsweep config side ' check "tune: push_sweep.sh, one moment and one fo
   env ROBOT_ID=$((B + 6)) Tools/tune/push_sweep.sh side 1 10
 GREP='^front [0-9]+/1 back [0-9]+/1' check "tune: standup_stats.sh, one trial a side" \
   env ROBOT_ID=$((B + 7)) N=1 WS=2.0 Tools/tune/standup_stats.sh
+mkdir -p "$OUT/world"
+EXPECT="$OUT/world/record_1.txt" check "tune: behavior_record.lua records a 10 s scoring run" \
+  env ROBOT_ID=$((B + 8)) SCORE_BEHAVIOR=Tools/tune/behavior_record.lua WORLD_RECORD_DIR="$OUT/world" SCORE_LIMIT=10 \
+  SCORE_NEED=0 SKIP_KILL=1 SCORE_LOGDIR="$OUT/score_record" bash Tests/scenarios/score_test.sh 1
+GREP='steps= *[0-9]+ bad=' check "tune: replay_world.lua replays the world model over it" \
+  luajit Tools/tune/replay_world.lua "$OUT/world/record_1.txt"
 GREP='standup_tune.py NAME' check "tune: standup_tune.py prints its usage" \
   bash -c "python3 Tools/tune/standup_tune.py 2>&1; [ \$? -ne 0 ]"
 GREP='toed' check "tune: hip_yaw_clearance.py" python3 Tools/tune/hip_yaw_clearance.py
@@ -158,6 +164,8 @@ GREP='^# seed 1' check "bench: score_given_pose.sh, one seed of 5 s" \
   env ROBOT_ID=$((B + 30)) SCORE_LIMIT=5 SCORE_NEED=0 Tools/bench/score_given_pose.sh 1
 GREP='^# seed 1' check "bench: white_score.sh (site_white), one seed of 5 s" \
   env ROBOT_ID=$((B + 40 - 400)) SCORE_LIMIT=5 SCORE_NEED=0 Tools/bench/white_score.sh 1
+GREP='^ok .*dxl_emulator --sim-id serves' check "bench: dxl_sim_walk.sh, 2 s through the emulated bus" \
+  env ROBOT_ID=$((B + 60)) HIL_SECONDS=2 bash Tools/bench/dxl_sim_walk.sh
 GREP='falls: [0-9]+ of 1' check "bench: catch_falls.sh, one run" \
   env ROBOT_ID=$((B + 50 - 97)) CATCH_RUNS=1 Tools/bench/catch_falls.sh
 

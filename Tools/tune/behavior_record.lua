@@ -1,8 +1,8 @@
 -- DIAGNOSTIC, never for play: the behavior process, unchanged, that also writes every world-model
 -- input (odometry, IMU yaw, the vision detections, the game state) and the sim's truth at the same
--- step to $WORLD_RECORD, so that Tests/scenarios/replay_world.lua can run changed world models over
+-- step to $WORLD_RECORD, so that Tools/tune/replay_world.lua can run changed world models over
 -- the same inputs offline and measure their pose error. Run as the behavior of a scoring run:
---   SCORE_BEHAVIOR=Tests/scenarios/behavior_record.lua WORLD_RECORD_DIR=DIR Tests/scenarios/score_test.sh ...
+--   SCORE_BEHAVIOR=Tools/tune/behavior_record.lua WORLD_RECORD_DIR=DIR Tests/scenarios/score_test.sh ...
 -- One line per step:
 --   s t game odom_x odom_y odom_a imu_yaw frame ball(0|1) bx by nposts [px py]... true_x true_y true_yaw
 local behavior = require('Behavior.behavior')

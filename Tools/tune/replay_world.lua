@@ -1,7 +1,7 @@
 -- DIAGNOSTIC: runs the world model (Player/World, Config/<platform>/behavior.lua's `world`) over
--- inputs recorded by Tests/scenarios/behavior_record.lua and compares its pose with the recorded
+-- inputs recorded by Tools/tune/behavior_record.lua and compares its pose with the recorded
 -- truth. Open loop (the robot's path is the recorded one), so it measures the localisation alone.
---   luajit Tests/scenarios/replay_world.lua RECORD... (after `source Run/env.sh`)
+--   luajit Tools/tune/replay_world.lua RECORD... (after `source Run/env.sh`)
 -- Per record: the share of playing time (from 3 s on) the pose is off by > 0.7 m or > 0.4 rad
 -- ("bad"), the share it is that far off while claiming confidence >= 0.5 ("sure+bad"), the mean
 -- position error, the share of time World:localised() holds and the share it holds while bad.

@@ -3,7 +3,7 @@
 # simulated OP3 (the sim DCM's robot ROBOT_ID, real time) through Platforms/OP/emulator/dxl_emulator --sim-id: the
 # motion process walks it 30 s at 0.2 m/s without a fall (from the sim's truth). The same walk on the
 # sim DCM directly first, for the leg joints' tracking error (command vs simulated position) of both.
-#   [ROBOT_ID=N] [HIL_SECONDS=30] Tests/hil/dxl_sim_walk.sh
+#   [ROBOT_ID=N] [HIL_SECONDS=30] Tools/bench/dxl_sim_walk.sh
 # In `make bench` (hil_walk_op3), not `make test`: in real time the walk through the bus lasted the 30 s
 # in 3 of 5 runs (and directly on the sim in 4 of 5): the real-time walk's margin is thin on a loaded
 # machine, so this prints its figures and outcome rather than gating CI.
