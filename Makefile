@@ -17,38 +17,46 @@ else
 BUILD := $(CURDIR)/build-$(subst $(comma),-,$(SANITIZE))
 endif
 export BUILD SANITIZE
-# Every folder with a Makefile under Modules/, Platforms/ and Run/ is a native part.
-NATIVE_DIRS := $(sort $(dir $(wildcard Modules/*/Makefile Platforms/*/Makefile Run/*/Makefile)))
+# Every folder with a Makefile under Modules/, Platforms/ (and a platform's emulator/), Run/ and Tools/
+# is a native part.
+NATIVE_DIRS := $(sort $(dir $(wildcard Modules/*/Makefile Platforms/*/Makefile Platforms/*/emulator/Makefile \
+                                       Run/*/Makefile Tools/*/Makefile)))
 DEPS_STAMP := $(BUILD)/.deps-ok
+
+# C and C++ tests live beside the code they test, in that part's tests/ folder (Modules/<m>/tests/,
+# Platforms/<p>/tests/, Run/recorder/tests/), built by its Makefile into build/tests/, where
+# Tests/run_all.sh runs every program; the libFuzzer targets sit there too. Tests/ holds the Lua specs,
+# the scenario scripts (*_test.sh, fuzz runs included) and their fixtures.
 
 .PHONY: all deps test check clean bench sim match match4 league sanitize soak $(NATIVE_DIRS)
 
 all: $(DEPS_STAMP) $(NATIVE_DIRS)
 
-# Modules/shm first: others link against it. The DCMs stand on Modules/dcm (and the OP's on dynamixel).
+# Modules/shm first: others link against it. The DCMs stand on Modules/dcm, the OP's on the Dynamixel
+# protocol and device table, the Hubo's on the CAN protocol; each emulator on its DCM's libraries.
 $(filter-out Modules/shm/,$(NATIVE_DIRS)): Modules/shm/
 $(filter Platforms/%,$(NATIVE_DIRS)): Modules/dcm/
-Platforms/OP/: Modules/dynamixel/
-# the Hubo emulator speaks the Hubo platform's protocol library
-Run/hubo_emulator_src/: Platforms/Hubo/ Modules/dcm/
-# the Dynamixel emulator reads the body through the OP DCM's device reader (--sim-id)
-Run/dxl_emulator_src/: Modules/dynamixel/ Modules/dcm/
+Modules/op_devices/ Modules/hubo_can/: Modules/dcm/
+Platforms/OP/ Platforms/OP/emulator/: Modules/dynamixel/ Modules/op_devices/
+Platforms/Hubo/ Platforms/Hubo/emulator/: Modules/hubo_can/
 # the robot description parser: linked by the kinematics and the sim
 Modules/kinematics/ Platforms/Sim/: Modules/description/
 # the recorder and the Replay DCM: MCAP files of shm blocks
 Run/recorder/: Modules/dcm/ Modules/mcap/ Modules/shmlog/
 Platforms/Replay/: Modules/mcap/ Modules/shmlog/
+# the LUT tool and the pipeline benchmark: the vision pipeline's library
+Tools/lut/ Tools/bench/: Modules/imageproc/
 
 $(NATIVE_DIRS): $(DEPS_STAMP)
 	@$(MAKE) --no-print-directory -C $@ all
 
 deps:
-	@Run/install_deps.sh
+	@Tools/deps/install_deps.sh
 	@mkdir -p $(BUILD) && touch $(DEPS_STAMP)
 
 # Only re-checked when the dependency list changes or on a new clone.
-$(DEPS_STAMP): Run/install_deps.sh Run/requirements.txt
-	@Run/install_deps.sh
+$(DEPS_STAMP): Tools/deps/install_deps.sh Tools/deps/requirements.txt
+	@Tools/deps/install_deps.sh
 	@mkdir -p $(BUILD) && touch $@
 
 test: all
@@ -64,25 +72,25 @@ VIEW_PORT ?= 8080
 sim: all
 	@./run_main --sim --view $(VIEW_PORT)
 
-# A whole match in the sim, refereed (Run/referee.lua): 2v2 (match4: 4v4), 2 x HALF s (default 300),
+# A whole match in the sim, refereed (Tools/match/referee.lua): 2v2 (match4: 4v4), 2 x HALF s (default 300),
 # e.g. `make match HALF=60`; prints the result, the real-time factor and the CPU per process.
 HALF ?= 300
 SEED ?= 1
 match: all
-	@Tests/bench/match.sh 2 $(HALF) $(SEED)
+	@Tools/match/match.sh 2 $(HALF) $(SEED)
 
 match4: all
-	@Tests/bench/match.sh 4 $(HALF) $(SEED)
+	@Tools/match/match.sh 4 $(HALF) $(SEED)
 
-# The league (Run/league.py): MATCHES seeded 2v2 matches (2 x HALF s) as Ray tasks, our team with team play
+# The league (Tools/match/league.py): MATCHES seeded 2v2 matches (2 x HALF s) as Ray tasks, our team with team play
 # against the same robots alone; a table of the results. RAY_ADDRESS=host:port: on that Ray cluster.
 MATCHES ?= 20
 league: all
-	@.venv/bin/python Run/league.py --matches $(MATCHES) --half $(HALF) --seed $(SEED) \
+	@.venv/bin/python Tools/match/league.py --matches $(MATCHES) --half $(HALF) --seed $(SEED) \
 	  $(if $(RAY_ADDRESS),--address $(RAY_ADDRESS))
 
 bench: all
-	@Tests/run_benchmarks.sh
+	@Tools/bench/run_all.sh
 
 # One robot playing in the sim (lockstep, camera on) for SOAK_SECONDS of robot time (1 hour; 600: the
 # 10-minute version), game restarts every 3 minutes: memory, fds and shm segments per process.

@@ -9,7 +9,7 @@
 --   Sim.push(fx, fy, duration)       N on the torso, field frame, for duration s of robot time
 --   Sim.press_button(i [, duration]) button i (1 or 2) held for duration s (default 0.1)
 --   Sim.score()  --> goals into the goal at +x, goals into the goal at -x
---   Sim.of(id)   --> the same functions for robot `id` of this world (a referee: Run/referee.lua)
+--   Sim.of(id)   --> the same functions for robot `id` of this world (a referee: Tools/match/referee.lua)
 --   Sim.use_robot(id)                Sim.* for robot `id` from now on (hardware in the loop: the
 --                                    simulated robot behind a bus emulator has its own id)
 --

@@ -24,7 +24,7 @@ fuzz_init() {
 }
 
 fuzz_build() {
-  if ! command -v clang >/dev/null; then nok "clang missing (Run/install_deps.sh)"; fuzz_done; fi
+  if ! command -v clang >/dev/null; then nok "clang missing (Tools/deps/install_deps.sh)"; fuzz_done; fi
   if make -s "$@" >"$WORK/build.log" 2>&1; then ok "fuzz targets build ($*)"
   else sed 's/^/# /' "$WORK/build.log" | tail -20; nok "fuzz targets build ($*)"; fuzz_done; fi
 }

@@ -57,7 +57,7 @@ run() {
 }
 
 # 1. luacheck
-mapfile -t lua_files < <(find Lib Player Run Tests Config Platforms -name '*.lua' 2>/dev/null | sort)
+mapfile -t lua_files < <(find Lib Player Run Tests Tools Config Platforms -name '*.lua' 2>/dev/null | sort)
 if [ "${#lua_files[@]}" -gt 0 ]; then
   run luacheck luacheck --codes --no-color "${lua_files[@]}"
 fi

@@ -1,7 +1,7 @@
 -- Actuator models: what a joint's servo can do. A robot names one per joint in robot.lua
 -- (`actuator = { l_knee = 'MX-28', ... }`); a robot with a servo not listed here adds its model in
 -- Config/robots/<robot>/actuators.lua (same fields). Used by:
---   Run/gen_urdf.py   writes torque, speed, damping and friction into the robot's URDF (<limit>
+--   Tools/urdf/gen_urdf.py   writes torque, speed, damping and friction into the robot's URDF (<limit>
 --                     effort/velocity, <dynamics> damping/friction), so the URDF carries them;
 --   the sim (Platforms/Sim/world.cpp)   drives each joint as an ODE hinge velocity motor:
 --                     target speed = gain * (command - position), clamped to the URDF velocity,

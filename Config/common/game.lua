@@ -38,7 +38,7 @@ return {
   },
   team = {
     enabled = true,            -- false: no messages sent or read (with roles.enabled = false: each
-                               -- robot plays alone; Tests/bench/match.sh's ALONE, Run/league.py)
+                               -- robot plays alone; Tools/match/match.sh's ALONE, Tools/match/league.py)
     port_base = 10000,         -- UDP: each team broadcasts on port_base + its team number
     broadcast = '255.255.255.255',
     interface = 'wlan0',       -- the team network (as gamecontroller.interface)
@@ -79,7 +79,7 @@ return {
     -- behavior.lua's ready_pose); supporters by player number: even ones at y, odd ones at -y
     ready = { defender = { -3.0, 0.0, 0.0 }, supporter = { -2.0, 1.5, 0.0 }, goalkeeper = { -4.2, 0.0, 0.0 } },
   },
-  -- the automatic referee in the simulator (Run/referee.lua, a GameController: Tests/bench/match.sh).
+  -- the automatic referee in the simulator (Tools/match/referee.lua, a GameController: Tools/match/match.sh).
   -- Humanoid League KidSize numbers where the rules have one; s are simulated seconds.
   referee = {
     half_time = 300,           -- s of PLAYING per half (HL: 10 min; match.sh passes shorter ones)

@@ -5,7 +5,7 @@ return {
   -- the DCM's control period, s (125 Hz: the Dynamixel bodies' bus cycle)
   period = 0.008,
   -- the kinematics' named chains (Lib/kinematics.lua): joints from the base to the tip (default:
-  -- the group of the same name) and the tip, a frame of the body's URDF (Run/gen_urdf.py adds the
+  -- the group of the same name) and the tip, a frame of the body's URDF (Tools/urdf/gen_urdf.py adds the
   -- frames a body's `frames` names)
   chains = {
     lleg = { tip = 'l_sole' }, rleg = { tip = 'r_sole' },

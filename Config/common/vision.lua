@@ -1,5 +1,5 @@
--- Vision: colour classes, lookup table, detection thresholds (Player/Vision, Run/lut_tool).
--- Colours are boxes in YUV (BT.601 full range, 0..255) that Run/lut_tool and the vision process
+-- Vision: colour classes, lookup table, detection thresholds (Player/Vision, Tools/lut).
+-- Colours are boxes in YUV (BT.601 full range, 0..255) that Tools/lut and the vision process
 -- turn into a lookup table when no trained table is given. The sim renders a green carpet, white
 -- lines and goals, and an orange ball (U 52, V 214); orange's U ends at 92 so that the red team's
 -- jerseys (U 107, Config/platforms/Sim/sim.lua `teams`) are not taken for the ball. White starts at
@@ -14,7 +14,7 @@ return {
   -- The camera's pose tilts with the torso's roll and pitch from the IMU as they were at the frame's
   -- capture (the frame's angle: dcm.sensor's angle at the exposure, as its head angles); false: the
   -- torso taken as upright (the seed's way, for a body without an IMU). Walking, the OP3's torso
-  -- pitches by up to 5 deg: upright, its ball range was off by 30% on average (Tests/bench/walk_eye.sh);
+  -- pitches by up to 5 deg: upright, its ball range was off by 30% on average (Tools/bench/walk_eye.sh);
   -- with the angles 32 ms late (at the frame's delivery) by 1.8%, at the exposure by 1.0%.
   imu_tilt = true,
   -- bit: the colour's label bit; y/u/v: {min, max}; display: RGB for label renderings
@@ -33,7 +33,7 @@ return {
     kind = 'orange',            -- 'orange': the colour table's ball (below); 'white': the FIFA ball, found
                                 -- by candidates and a classifier (white, below)
     white = {
-      model = 'Config/common/ball_white.mlp', -- the classifier (trained by Run/ball_train/train.sh)
+      model = 'Config/common/ball_white.mlp', -- the classifier (trained by Tools/ball_train/train.sh)
       green = 8,                -- label bits of the field
       boundary_run = 4,         -- label rows of field that start the field in a column
       step = 2,                 -- label px between candidate positions

@@ -117,7 +117,7 @@ return {
   },
   -- kick (Player/Motion/kick.lua): the body's and the kicking leg's phases side by side (durations
   -- in s; shift: fraction of the way over the support foot; height, lean, x, z in m; tilt, arms,
-  -- hip, knee, ankle, arm in rad). The OP3's, tuned in the sim (Tests/motion/kick_tune.sh): the hip,
+  -- hip, knee, ankle, arm in rad). The OP3's, tuned in the sim (Tools/tune/kick_tune.sh): the hip,
   -- knee and ankle swing at the servos' speed limit while the torso leans back (the leg swings
   -- faster in the world) and both arms swing back against the torso's pitch momentum; the foot
   -- lifts before it draws back (dragging it turns the robot); the ball is met while the leg

@@ -17,7 +17,7 @@
 
 #include "dcm/dcm.h"
 #include "hubo_io.h"
-#include "hubo_table.h"
+#include "hubo_can/hubo_table.h"
 
 typedef struct hubo_settings {
   double compliant_below;   /* hardness below which a joint's reference follows its position */

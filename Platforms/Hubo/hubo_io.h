@@ -7,7 +7,7 @@
 
 #include <stdint.h>
 
-#include "can_proto.h"
+#include "hubo_can/can_proto.h"
 
 #define HIO_TXQ 256
 

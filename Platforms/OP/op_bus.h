@@ -7,7 +7,7 @@
 #define HRP_OP_BUS_H
 
 #include "dynamixel/dynamixel.h"
-#include "op_devices.h"
+#include "op_devices/op_devices.h"
 
 /* What the buses read: per joint (shm order) and from the board. */
 typedef struct op_state {

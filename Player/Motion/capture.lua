@@ -26,7 +26,7 @@
 -- capture feedback on the ankles and hips, the step adjustment's landing). Normal walking, turning
 -- and dribbling have an error too (the plan's own mismatch, the sensors'): on the OP3 |ey| < 0.03 m
 -- in 99% of the ticks it walks in the scoring scenario and < 0.042 m in 99.9%, while a push of
--- 1.0-2.0 N s passes 0.05 m within 0.05-0.1 s (Tests/motion/capture_stats.py). The gate is 0 below
+-- 1.0-2.0 N s passes 0.05 m within 0.05-0.1 s (Tools/plot/capture_stats.py). The gate is 0 below
 -- `stepAdjust.activateFrom` (m, { x, y }), 1 beyond `activateFull`, smooth between; a body without
 -- them, or with activateFull 0 on an axis: 1 (the dead bands alone). With `activateHold` (s) > 0,
 -- once the error has reached activateFull the gate stays at least at 1 - (time since) / hold: the

@@ -282,7 +282,7 @@ function Walk:step_target(support_u, swing_left, v)
   -- turning: each step turns the swing foot by the turn of two steps against the support foot; the
   -- closing foot lands toed in by `turnToeIn` x a step's turn (the opening one opens that much less),
   -- so the feet's relative yaw swings about zero (the OP3's legs touch beyond about 0.5 rad toed out
-  -- or in, Tests/motion/hip_yaw_clearance.py: opening from parallel alone met them at 1.1 rad/s)
+  -- or in, Tools/tune/hip_yaw_clearance.py: opening from parallel alone met them at 1.1 rad/s)
   if v[3] ~= 0 then
     local closing = p.turnToeIn * v[3] * T
     da = (v[3] > 0) == swing_left and 2 * v[3] * T - closing or closing

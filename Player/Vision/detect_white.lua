@@ -1,6 +1,6 @@
 -- The white ball (FIFA size 1, mostly white with a pattern): spots inside the field boundary that
 -- are not field, as large as a ball at the range the ground projection gives, checked by a small
--- classifier on the frame's pixels (Modules/balldetect; the model trained by Run/ball_train).
+-- classifier on the frame's pixels (Modules/balldetect; the model trained by Tools/ball_train).
 --
 --   local detect_white = require('Vision.detect_white')
 --   detect_white.ball(bd, mlp, p, cm, pose, frame, cfg.ball, out)

@@ -4,7 +4,7 @@ the robots named by --ids as Server-Sent Events; camera frames as JPEG and the c
 
     ./run_view [--ids 1,2] [--port 8080] [--bind 127.0.0.1] [--rate 30] [--fps 10] [--max-clients 8]
 
-Blocks are read through their own field tables (Run/shm_read.py), so a field added to
+Blocks are read through their own field tables (Run/view/shm_read.py), so a field added to
 Config/shm.schema reaches the page with no code. Only blocks that changed since the last sample are
 sent. Each client has its own pending set (the newest value of each changed block): a slow or gone
 client loses intermediate samples and never slows the sampler, let alone a robot process (the
@@ -25,8 +25,8 @@ from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
 import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.dirname(HERE))
-import shm_read  # noqa: E402  (Run/shm_read.py)
+sys.path.insert(0, HERE)
+import shm_read  # noqa: E402  (Run/view/shm_read.py)
 import camera    # noqa: E402  (Run/view/camera.py)
 
 WWW = os.path.join(HERE, "www")

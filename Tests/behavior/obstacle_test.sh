@@ -17,7 +17,7 @@ MAIN=
 cleanup() {
   [ -n "$MAIN" ] && kill -TERM "$MAIN" 2>/dev/null
   sleep 1; kill -TERM "$DCM" 2>/dev/null; wait "$DCM" 2>/dev/null
-  Run/shm --robot "$ID" remove >/dev/null 2>&1; Run/shm --robot $((ID + 1)) remove >/dev/null 2>&1
+  Tools/shm/shm --robot "$ID" remove >/dev/null 2>&1; Tools/shm/shm --robot $((ID + 1)) remove >/dev/null 2>&1
 }
 trap cleanup EXIT
 wait_for_clock "$ID"

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The OP DCM drives the virtual servo bus (Run/dxl_emulator) end to end:
+# The OP DCM drives the virtual servo bus (Platforms/OP/emulator/dxl_emulator) end to end:
 #   a command set from ./run_repl becomes the emulated servo's goal and comes back as position;
 #   IMU and buttons read back; DARwIn-OP (1.0) and OP3 (2.0); 1% corrupt answers are counted and
 #   cost only the readings hit; a dead servo is reported while the others go on; the watchdog

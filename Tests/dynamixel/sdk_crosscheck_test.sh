@@ -4,7 +4,7 @@
 set -u
 cd "${HRP_ROOT:-$(dirname "$0")/../..}"
 export HRP_ROOT=$PWD
-python3 -c 'import dynamixel_sdk' 2>/dev/null || { echo "not ok 1 - dynamixel_sdk missing (Run/install_deps.sh)"; exit 1; }
+python3 -c 'import dynamixel_sdk' 2>/dev/null || { echo "not ok 1 - dynamixel_sdk missing (Tools/deps/install_deps.sh)"; exit 1; }
 python3 Tests/dynamixel/sdk_crosscheck.py || exit 1
 TMP=$(mktemp -d)
 EMU=""

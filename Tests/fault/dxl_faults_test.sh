@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Scenario (make test, real time): faults against the Dynamixel bus. The OP DCM (PLATFORM=OP, the
-# OP3's XM430 chain) drives Run/dxl_emulator, whose --trace says when each servo received what;
+# OP3's XM430 chain) drives Platforms/OP/emulator/dxl_emulator, whose --trace says when each servo received what;
 # `./run_main motion` supervises the motion process. Faults: kill -9 of motion while it walks and
 # while it stands, and kill -9 of the DCM under the running motion process (the DCM restarted by
 # hand, as a robot's start script would). Prints, from the bus's side:
@@ -30,7 +30,7 @@ cleanup() {
   [ -n "$EMU" ] && kill -TERM "$EMU" 2>/dev/null
   wait 2>/dev/null
   rm -rf "$T"
-  Run/shm --robot "$ID" remove >/dev/null 2>&1
+  Tools/shm/shm --robot "$ID" remove >/dev/null 2>&1
 }
 trap cleanup EXIT
 if [ ! -x build/bin/dcm_op ] || [ ! -x build/bin/dxl_emulator ]; then
@@ -68,7 +68,7 @@ motion_restarted() { [ "$(motion_pid)" != "$1" ] && [ -n "$(motion_pid)" ]; }
 secs() { [ -n "$2" ] && awk -v a="$1" -v b="$2" 'BEGIN { printf "%.2f", b - a }' || echo never; }
 ms() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.1f", (b - a) * 1000 }'; }
 
-Run/shm --robot "$ID" remove >/dev/null 2>&1
+Tools/shm/shm --robot "$ID" remove >/dev/null 2>&1
 mkfifo "$T/emu.in"
 build/bin/dxl_emulator --link "$T/dxl" --protocol 2 --stdin --realtime --quiet --trace "$TRACE" \
   <"$T/emu.in" >"$T/emu.out" 2>"$LOGDIR/dxl_emu.log" &

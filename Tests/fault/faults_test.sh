@@ -16,12 +16,12 @@ SEED=${FAULT_SEED:-$((RANDOM))}
 export ROBOT_ID=$ID HRP_GC_PORT=$((40000 + ID % 20000)) HRP_GC_RETURN_PORT=$((40001 + ID % 20000))
 export HRP_TEAM_PORT=$((30000 + ID % 20000))
 if [ ! -x build/bin/dcm_sim ]; then echo "1..1"; echo "ok 1 # SKIP needs build/bin/dcm_sim"; exit 0; fi
-Run/shm --robot "$ID" remove >/dev/null 2>&1
+Tools/shm/shm --robot "$ID" remove >/dev/null 2>&1
 ./run_main --sim --quiet >"$LOGDIR/main.log" 2>&1 &
 MAIN=$!
 cleanup() {
   kill -TERM "$MAIN" 2>/dev/null; wait "$MAIN" 2>/dev/null
-  Run/shm --robot "$ID" remove >/dev/null 2>&1
+  Tools/shm/shm --robot "$ID" remove >/dev/null 2>&1
 }
 trap cleanup EXIT
 echo "# seed $SEED (FAULT_SEED=$SEED reproduces the order and moments)"

@@ -21,12 +21,12 @@ T=$(mktemp -d)
 n=0 fails=0
 ok() { n=$((n + 1)); if [ "$1" = 0 ]; then echo "ok $n - $2"; else echo "not ok $n - $2"; fails=$((fails + 1)); fi; }
 if [ ! -x build/bin/dcm_sim ]; then echo "1..1"; echo "ok 1 # SKIP needs build/bin/dcm_sim"; exit 0; fi
-Run/shm --robot "$ID" remove >/dev/null 2>&1
+Tools/shm/shm --robot "$ID" remove >/dev/null 2>&1
 ./run_main --sim >"$LOG" 2>&1 &
 MAIN=$!
 cleanup() {
   kill -TERM "$MAIN" 2>/dev/null; wait "$MAIN" 2>/dev/null
-  Run/shm --robot "$ID" remove >/dev/null 2>&1
+  Tools/shm/shm --robot "$ID" remove >/dev/null 2>&1
   rm -rf "$T"
 }
 trap cleanup EXIT

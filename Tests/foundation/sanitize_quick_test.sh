@@ -12,7 +12,7 @@ rm -rf "$SANLOG"; mkdir -p "$SANLOG"
 mk() { make --no-print-directory -C "$1" BUILD="$B" SANITIZE=address,undefined "${@:2}" >>"$B/make.log" 2>&1; }
 : >"$B/make.log" 2>/dev/null || { mkdir -p "$B"; : >"$B/make.log"; }
 if ! { mk Modules/shm all && mk Modules/dcm all && mk Modules/dynamixel all && mk Modules/teamcomm all &&
-       mk Modules/imageproc "$B/lib/libhrpimg.so" "$B/tests/img_unit" && mk Platforms/OP "$B/tests/op_devices_test"; }; then
+       mk Modules/imageproc "$B/lib/libhrpimg.so" "$B/tests/img_unit" && mk Modules/op_devices "$B/tests/op_devices_test"; }; then
   echo "not ok 1 - the C libraries build with -fsanitize=address,undefined"
   tail -20 "$B/make.log" | sed 's/^/# /'
   exit 1

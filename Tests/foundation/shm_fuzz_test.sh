@@ -5,7 +5,7 @@
 #   FUZZ_SECONDS=600 Tests/foundation/shm_fuzz_test.sh   for a long run (each target).
 source "$(dirname "$0")/../fuzz_lib.sh"
 ID=$((ROBOT_ID + 7))
-FUZZ_CLEANUP="Run/shm --robot $ID remove >/dev/null 2>&1"
+FUZZ_CLEANUP="Tools/shm/shm --robot $ID remove >/dev/null 2>&1"
 fuzz_init 15
 fuzz_build -C Modules/shm fuzz
 # seeds: every block of the schema as a freshly created segment, the first byte picking the block

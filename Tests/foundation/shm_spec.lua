@@ -71,10 +71,10 @@ describe('shm', function()
 
   it('the Python reader finds fields by name from the segment alone', function()
     sensor:write(function(s) s.time[0] = 3.5; s.angle[0] = -0.25; s.tick[0] = 77 end)
-    local out, rc = run('python3 ' .. native.root() .. '/Run/shm_read.py dcm.sensor angle')
+    local out, rc = run('python3 ' .. native.root() .. '/Run/view/shm_read.py dcm.sensor angle')
     assert.equal(0, rc, out)
     assert.truthy(out:find('angle -0.25 0.0 0.0', 1, true), out)
-    out = run('python3 ' .. native.root() .. '/Run/shm_read.py dcm.sensor tick')
+    out = run('python3 ' .. native.root() .. '/Run/view/shm_read.py dcm.sensor tick')
     assert.truthy(out:find('tick 77', 1, true), out)
   end)
 
@@ -99,7 +99,7 @@ describe('shm', function()
 
   it('the shm tool lists, dumps, sets and removes a robot\'s blocks', function()
     local robot = shm.robot_id() + 50000
-    local tool = native.root() .. '/Run/shm --robot ' .. robot
+    local tool = native.root() .. '/Tools/shm/shm --robot ' .. robot
     local b = shm.open('world', { robot = robot })
     b:set('pose', { 1, 2, 3 })
     local out = run(tool .. ' list')

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Scenario (make test): the league on Ray (Run/league.py, Ray started on this machine): two tiny
+# Scenario (make test): the league on Ray (Tools/match/league.py, Ray started on this machine): two tiny
 # seeded 2v2 matches (2 x 5 s, READY 3 s) as two Ray tasks at once, one team without team play:
 # both finish, the table has a row per match and the totals, and Ray is shut down afterwards
 # (none of its processes of this run is left). Then a league stopped with SIGTERM while its match
@@ -11,7 +11,7 @@ if [ ! -x build/bin/dcm_sim ]; then echo "1..1"; echo "ok 1 # SKIP needs build/b
 if ! .venv/bin/python -c 'import ray' 2>/dev/null; then echo "1..1"; echo "not ok 1 - ray is not installed (make deps)"; exit 1; fi
 LOG="$LOGDIR/league.log"
 BASE=$(( ${ROBOT_ID:-9200} + 10 ))
-timeout 300 .venv/bin/python Run/league.py --matches 2 --half 5 --ready 3 --seed 1 --cpus-per-match 1 \
+timeout 300 .venv/bin/python Tools/match/league.py --matches 2 --half 5 --ready 3 --seed 1 --cpus-per-match 1 \
   --id-base "$BASE" --json "$LOGDIR/league.json" >"$LOG" 2>&1
 rc=$?
 echo "1..4"
@@ -38,7 +38,7 @@ match_procs() {
   done
 }
 match_blocks() { ls /dev/shm 2>/dev/null | grep -cE "^hrp\.($MATCH_ID|$((MATCH_ID + 1))|$((MATCH_ID + 2))|$((MATCH_ID + 3)))\."; }
-.venv/bin/python Run/league.py --matches 1 --half 60 --ready 3 --seed 1 --id-base "$STOP_BASE" \
+.venv/bin/python Tools/match/league.py --matches 1 --half 60 --ready 3 --seed 1 --id-base "$STOP_BASE" \
   >"$LOGDIR/league_stop.log" 2>&1 &
 league=$!
 # until every robot's behavior block exists and the game has run a little
@@ -59,5 +59,5 @@ if [ "$before" -gt 0 ] && [ "$nproc" -gt 0 ] && [ "$gone" = yes ]; then
 else
   echo "not ok 4 - league stopped mid-match ($nproc processes and $before blocks before): left $(match_procs | wc -l) processes, $(match_blocks) blocks (see $LOGDIR/league_stop.log)"
   for pid in $(match_procs); do kill -KILL "$pid" 2>/dev/null; done
-  for i in 0 1 2 3; do Run/shm --robot $((MATCH_ID + i)) remove >/dev/null 2>&1; done
+  for i in 0 1 2 3; do Tools/shm/shm --robot $((MATCH_ID + i)) remove >/dev/null 2>&1; done
 fi

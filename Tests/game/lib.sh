@@ -9,7 +9,7 @@ mkdir -p "$LOGDIR"
 wait_for_clock() {
   local tick
   for _ in $(seq 1 300); do
-    tick=$(Run/shm --robot "$1" dump sync tick 2>/dev/null | awk '{print $NF}')
+    tick=$(Tools/shm/shm --robot "$1" dump sync tick 2>/dev/null | awk '{print $NF}')
     [ -n "$tick" ] && [ "$tick" != 0 ] && return 0
     sleep 0.1
   done

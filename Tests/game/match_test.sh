@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Scenario (make test): a short refereed 2v2 match (Tests/bench/match.sh: halves of 15 s, READY 10 s):
+# Scenario (make test): a short refereed 2v2 match (Tools/match/match.sh: halves of 15 s, READY 10 s):
 # the referee takes the game through both halves to the end and prints the result, every robot
 # answers the GameController (return packets), no robot process dies, and no robot's pose belief
 # is the mirror of the truth for more than 2 s in all (the side: Player/World/pose_filter.lua).
@@ -9,7 +9,7 @@ source "$(dirname "$0")/lib.sh"
 if [ ! -x build/bin/dcm_sim ]; then echo "1..1"; echo "ok 1 # SKIP needs build/bin/dcm_sim"; exit 0; fi
 ID=$(( ${ROBOT_ID:-9200} + 270 ))
 LOG="$LOGDIR/match.log"
-ROBOT_ID=${ROBOT_ID:-9200} timeout 600 Tests/bench/match.sh 2 15 1 10 >"$LOG" 2>&1
+ROBOT_ID=${ROBOT_ID:-9200} timeout 600 Tools/match/match.sh 2 15 1 10 >"$LOG" 2>&1
 STATUS=$?
 DIR="$HRP_ROOT/build/match/$ID"
 check() { if [ "$2" = 0 ]; then echo "check $1 ok $3"; else echo "check $1 FAIL $3"; fi; }

@@ -1,7 +1,7 @@
 -- luacheck: std +busted
--- The sim's automatic referee (Run/referee/match.lua): its rules on a scripted world, with the
+-- The sim's automatic referee (Tools/match/rules.lua): its rules on a scripted world, with the
 -- numbers of Config/common/game.lua and the sim's field; the packets go through GameFSM/packet.lua.
-local match = require('Run.referee.match')
+local match = require('Tools.match.rules')
 local packet = require('GameFSM.packet')
 local Config = require('Config')
 

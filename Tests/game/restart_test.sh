@@ -17,7 +17,7 @@ DCM=$!
 cleanup() {
   [ -f "$PIDFILE" ] && kill -TERM "$(cat "$PIDFILE")" 2>/dev/null
   sleep 1; kill -TERM "$DCM" 2>/dev/null; wait "$DCM" 2>/dev/null
-  Run/shm --robot "$ID" remove >/dev/null 2>&1
+  Tools/shm/shm --robot "$ID" remove >/dev/null 2>&1
 }
 trap cleanup EXIT
 wait_for_clock "$ID"

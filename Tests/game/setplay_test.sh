@@ -13,7 +13,7 @@ if [ ! -x build/bin/dcm_sim ]; then echo "1..1"; echo "ok 1 # SKIP needs build/b
 export ROBOT_ID=$ID HRP_GC_PORT=$PORT HRP_GC_RETURN_PORT=$((PORT + 1)) HRP_TEAM_PORT=$((30000 + ID % 20000))
 ./run_main --sim --quiet --dcm-arg --lockstep >"$LOGDIR/setplay_main.log" 2>&1 &
 MAIN=$!
-trap 'kill -TERM $MAIN 2>/dev/null; wait $MAIN 2>/dev/null; Run/shm --robot $ID remove >/dev/null 2>&1' EXIT
+trap 'kill -TERM $MAIN 2>/dev/null; wait $MAIN 2>/dev/null; Tools/shm/shm --robot $ID remove >/dev/null 2>&1' EXIT
 wait_for_clock "$ID"
 timeout 600 ./run_repl Tests/game/setplay_play.lua "$PORT" "$((PORT + 1))" >"$LOGDIR/setplay_play.log" 2>&1
 report_checks "$LOGDIR/setplay_play.log" 7

@@ -1,7 +1,7 @@
 -- luacheck: std +busted
--- The referee's per-robot tally (Run/referee/tally.lua): seconds per role only while PLAYING and
+-- The referee's per-robot tally (Tools/match/tally.lua): seconds per role only while PLAYING and
 -- not penalized, a mirrored belief in either team's frame, falls and penalties counted once each.
-local tally = require('Run.referee.tally')
+local tally = require('Tools.match.tally')
 
 describe('referee tally', function()
   it('tells a mirrored belief from a right or merely inaccurate one', function()

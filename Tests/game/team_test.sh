@@ -21,7 +21,7 @@ DCM=$!
 cleanup() {
   kill -TERM "$MAIN1" "$(cat "$PIDFILE" 2>/dev/null)" 2>/dev/null
   sleep 1; kill -TERM "$DCM" 2>/dev/null; wait "$DCM" 2>/dev/null
-  Run/shm --robot "$ID" remove >/dev/null 2>&1; Run/shm --robot $((ID + 1)) remove >/dev/null 2>&1
+  Tools/shm/shm --robot "$ID" remove >/dev/null 2>&1; Tools/shm/shm --robot $((ID + 1)) remove >/dev/null 2>&1
 }
 MAIN1=
 trap cleanup EXIT

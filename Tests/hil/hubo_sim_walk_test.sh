@@ -2,7 +2,7 @@
 # Hardware in the loop, CAN, walking: the unchanged Hubo DCM (PLATFORM=Hubo, robot ROBOT_ID+1, on
 # the fake SocketCAN of Platforms/Hubo/tests) keeps the simulated Hubo2+ (the sim DCM's robot
 # ROBOT_ID, real time) standing HIL_STAND s and then walking forward HIL_SECONDS s at HIL_VX m/s
-# through Run/hubo_emulator --sim-id (no fall, from the sim's truth), the balance feedback on the
+# through Platforms/Hubo/emulator/hubo_emulator --sim-id (no fall, from the sim's truth), the balance feedback on the
 # feet's F/T boards on (Player/Motion/balance.lua), and the F/T boards read back the simulated
 # weight. The same on the sim DCM directly first, for the leg joints' tracking error (command vs
 # simulated position, RMS per joint group) and the ZMP error of both, side by side.
@@ -28,11 +28,11 @@ stop_all
 mkdir -p "$T/bus"
 export FAKECAN_DIR=$T/bus
 start_sim hil
-HUBO_FAKE_CAN=1 Run/hubo_emulator --sim-id "$SIM_ID" --realtime >"$LOGDIR/hubo_emu.log" 2>&1 &
+HUBO_FAKE_CAN=1 Platforms/Hubo/emulator/hubo_emulator --sim-id "$SIM_ID" --realtime >"$LOGDIR/hubo_emu.log" 2>&1 &
 PIDS+=($!)
 wait_log "$LOGDIR/hubo_emu.log" ready
 ok $? "hubo_emulator --sim-id serves the simulated Hubo2+'s boards"
-Run/shm --robot "$OP_ID" remove >/dev/null 2>&1
+Tools/shm/shm --robot "$OP_ID" remove >/dev/null 2>&1
 LD_PRELOAD=$HRP_ROOT/build/testlib/libfakecan.so PLATFORM=Hubo ROBOT_ID=$OP_ID ./run_dcm --quiet \
   >"$LOGDIR/dcm_hubo.log" 2>&1 &
 PIDS+=($!)

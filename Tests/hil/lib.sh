@@ -13,8 +13,8 @@ stop_all() {
   for p in "${PIDS[@]}"; do kill -TERM "$p" 2>/dev/null; done
   for p in "${PIDS[@]}"; do wait "$p" 2>/dev/null; done
   PIDS=()
-  Run/shm --robot "$SIM_ID" remove >/dev/null 2>&1
-  Run/shm --robot "$OP_ID" remove >/dev/null 2>&1
+  Tools/shm/shm --robot "$SIM_ID" remove >/dev/null 2>&1
+  Tools/shm/shm --robot "$OP_ID" remove >/dev/null 2>&1
 }
 trap 'stop_all; rm -rf "$T"' EXIT
 # wait_log FILE PATTERN: up to 20 s
@@ -37,7 +37,7 @@ measure() {
 # the hardware DCMs and the emulators run (rt_priority, --realtime): on a loaded machine a sim that
 # falls behind the wall clock gets the bus's commands faster than its physics moves
 start_sim() {
-  Run/shm --robot "$SIM_ID" remove >/dev/null 2>&1
+  Tools/shm/shm --robot "$SIM_ID" remove >/dev/null 2>&1
   local rt=()
   chrt -f 20 true 2>/dev/null && rt=(chrt -f 20)
   PLATFORM=Sim ROBOT_ID=$SIM_ID "${rt[@]}" ./run_dcm --no-camera --quiet >"$LOGDIR/sim_$1.log" 2>&1 &

@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer target of the Hubo CAN frame parser (clang) and fuzzes it for a short while.
-#   make -C Platforms/Hubo fuzz-long      the 10-minute run (FUZZ_SECONDS=600 this script)
+#   make -C Modules/hubo_can fuzz-long      the 10-minute run (FUZZ_SECONDS=600 this script)
 source "$(dirname "$0")/../fuzz_lib.sh"
 fuzz_init 10
-fuzz_build -C Platforms/Hubo fuzz
+fuzz_build -C Modules/hubo_can fuzz
 # seeds: an encoder reply, a status, an F/T, an IMU reply, a power reply, an error frame (11-byte records)
 printf '\x00\x60\x08\x18\xfc\xff\xff\x40\xe2\x01\x00' >"$SEEDS/enc"
 printf '\x01\x50\x08\x63\x01\x00\x00\x03\x00\x10\x00' >"$SEEDS/status"

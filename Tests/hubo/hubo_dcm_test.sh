@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The Hubo DCM drives the emulated Hubo2+ boards (Run/hubo_emulator) over SocketCAN, through the
+# The Hubo DCM drives the emulated Hubo2+ boards (Platforms/Hubo/emulator/hubo_emulator) over SocketCAN, through the
 # fake SocketCAN of the tests (this kernel has no AF_CAN), end to end:
 #   bring-up (FETs and controllers on); a command from ./run_repl becomes the board's reference in
 #   counts and comes back as its encoder; F/T, IMU and the power board read back; a reference jump
@@ -33,7 +33,7 @@ cd "$T/root"
 repl() { ./run_repl -e "$1" 2>&1 | tail -1; }
 start_emu() {
   rm -f "$T/emu.in"; mkfifo "$T/emu.in"
-  HUBO_FAKE_CAN=1 Run/hubo_emulator --stdin --quiet --realtime "$@" <"$T/emu.in" >>"$T/emu.out" 2>>"$T/emu.log" &
+  HUBO_FAKE_CAN=1 Platforms/Hubo/emulator/hubo_emulator --stdin --quiet --realtime "$@" <"$T/emu.in" >>"$T/emu.out" 2>>"$T/emu.log" &
   EMU=$!
   exec 3>"$T/emu.in"
   for _ in $(seq 100); do grep -q ready "$T/emu.log" 2>/dev/null && break; sleep 0.05; done

@@ -1,5 +1,5 @@
 -- luacheck: std +busted
--- The committed robot descriptions (Config/robots/<robot>/<robot>.urdf, written by Run/gen_urdf.py)
+-- The committed robot descriptions (Config/robots/<robot>/<robot>.urdf, written by Tools/urdf/gen_urdf.py)
 -- against the robot data they were generated from: the same joints as robot.joints, robot.lua's
 -- limits, each joint's actuator model (torque, speed, damping, friction), the frames at the place
 -- robot.lua gives, the chains' tips, the masses. (The reference files are not read here: only

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Run/gen_urdf.py (TAP), on the one reference file the repository holds (the waistbot test body's;
+# Tools/urdf/gen_urdf.py (TAP), on the one reference file the repository holds (the waistbot test body's;
 # the real robots' references live outside the repository): regenerating gives the committed
 # URDF byte for byte; sections the generator does not use (a Hubo-style LIMITS, ACTUATORS, SENSORS)
 # are skipped, not fatal; a reference without CAMERA fails naming the frame that needs it; robot.lua's
@@ -13,12 +13,12 @@ REF=Config/robots/waistbot/waistbot_reference.txt
 n=0; fails=0
 check() { n=$((n + 1)); if [ "$1" = 0 ]; then echo "ok $n - $2"; else fails=$((fails + 1)); echo "not ok $n - $2"; fi; }
 
-python3 Run/gen_urdf.py waistbot "$REF" --out "$TMP/a.urdf" >"$TMP/a.log" 2>&1
+python3 Tools/urdf/gen_urdf.py waistbot "$REF" --out "$TMP/a.urdf" >"$TMP/a.log" 2>&1
 cmp -s "$TMP/a.urdf" Config/robots/waistbot/waistbot.urdf
 check $? "regenerating waistbot.urdf from its reference gives the committed file"
 
 { cat "$REF"; printf 'LIMITS\n# joint lo hi\nWST -3.14 3.14  1 6\nACTUATORS\nWST 0 EJMC3 0x23\nSENSORS\nimu torso 0 0 1\n'; } >"$TMP/extra.txt"
-python3 Run/gen_urdf.py waistbot "$TMP/extra.txt" --out "$TMP/b.urdf" >"$TMP/b.log" 2>&1
+python3 Tools/urdf/gen_urdf.py waistbot "$TMP/extra.txt" --out "$TMP/b.urdf" >"$TMP/b.log" 2>&1
 rc=$?
 [ $rc = 0 ] && grep -q 'section LIMITS not used' "$TMP/b.log" && grep -q 'section SENSORS not used' "$TMP/b.log"
 check $? "unknown sections (LIMITS, ACTUATORS, SENSORS) are skipped and said so"
@@ -26,13 +26,13 @@ sed 1,2d "$TMP/b.urdf" | cmp -s - <(sed 1,2d "$TMP/a.urdf")
 check $? "... and change nothing else"
 
 sed '/^CAMERA/,$d' "$REF" >"$TMP/nocam.txt"
-python3 Run/gen_urdf.py waistbot "$TMP/nocam.txt" --out "$TMP/c.urdf" >"$TMP/c.log" 2>&1
+python3 Tools/urdf/gen_urdf.py waistbot "$TMP/nocam.txt" --out "$TMP/c.urdf" >"$TMP/c.log" 2>&1
 rc=$?
 [ $rc != 0 ] && grep -q 'frames.camera_link' "$TMP/c.log" && [ ! -e "$TMP/c.urdf" ]
 check $? "no CAMERA and no xyz for camera_link: fails naming the frame ($(tail -1 "$TMP/c.log"))"
 
 sed 's/^l_wrist_link l_el_link 0.1 /l_wrist_link l_el_link 0.1 0.2 /' "$REF" >"$TMP/bad.txt"
-python3 Run/gen_urdf.py waistbot "$TMP/bad.txt" --out "$TMP/d.urdf" >"$TMP/d.log" 2>&1
+python3 Tools/urdf/gen_urdf.py waistbot "$TMP/bad.txt" --out "$TMP/d.urdf" >"$TMP/d.log" 2>&1
 rc=$?
 [ $rc != 0 ] && grep -q 'bad.txt:[0-9]*: body line needs 19 fields' "$TMP/d.log"
 check $? "a malformed body line: fails naming the file and the line ($(tail -1 "$TMP/d.log"))"
@@ -40,7 +40,7 @@ check $? "a malformed body line: fails naming the file and the line ($(tail -1 "
 # robot.lua's added_masses (merged by the parallel-axis rule) and collision_skip, on made-up data
 python3 - >"$TMP/e.log" 2>&1 <<'PY'
 import sys
-sys.path.insert(0, 'Run')
+sys.path.insert(0, 'Tools/urdf')
 import gen_urdf as g
 # a 1 kg point-like body at the origin plus a 1 kg uniform 0.1 m cube centred 0.2 m up
 b = dict(name='a', mass=1.0, com=[0.0, 0.0, 0.0], inertia=[0.0] * 6)

@@ -1,6 +1,6 @@
 -- A small URDF reader for tests, independent of the C++ parser (Modules/description): links (mass,
 -- COM), joints (type, parent/child link, origin xyz/rpy, axis, limit, dynamics, the actuator
--- comment Run/gen_urdf.py writes), and a forward kinematics over them (world = root link frame).
+-- comment Tools/urdf/gen_urdf.py writes), and a forward kinematics over them (world = root link frame).
 local sin, cos, sqrt = math.sin, math.cos, math.sqrt
 
 local M = {}

@@ -13,7 +13,7 @@ LOGDIR="$HRP_ROOT/build/test-logs/motion"
 mkdir -p "$LOGDIR"
 id=$(( ${ROBOT_ID:-9200} + 90 ))
 what=${1:-zmp}
-Run/shm --robot "$id" remove >/dev/null 2>&1
+Tools/shm/shm --robot "$id" remove >/dev/null 2>&1
 ROBOT_ID=$id ./run_main --sim --quiet --no-restart --dcm-arg --lockstep-wait --dcm-arg 2 --dcm-arg --seed \
   --dcm-arg "${SIM_SEED:-1}" --dcm-arg --no-camera motion >"$LOGDIR/main_balance_$what.log" 2>&1 &
 main_pid=$!
@@ -25,5 +25,5 @@ ROBOT_ID=$id timeout 600 ./run_repl Tests/motion/balance_scenarios.lua "$what" 2
 rc=${PIPESTATUS[0]}
 kill -TERM "$main_pid" 2>/dev/null
 wait "$main_pid" 2>/dev/null
-Run/shm --robot "$id" remove >/dev/null 2>&1
+Tools/shm/shm --robot "$id" remove >/dev/null 2>&1
 [ "$rc" -eq 0 ] && ! grep -q '^not ok' "$LOGDIR/balance_$what.log"

@@ -1,5 +1,5 @@
 -- Kick scenario helpers shared by Tests/motion/sim_scenarios.lua (the pass/fail kick) and the kick
--- tools (kick_trace, kick_measure, kick_sweep, kick_tune): ball placement from the foot's forward
+-- tools (Tools/tune: kick_trace, kick_measure, kick_sweep, kick_tune): ball placement from the foot's forward
 -- kinematics, the kicking foot's toe point in the world from the sim's truth, and waiting for the
 -- motion process (which every scenario needs first), and a push of the walking robot.
 local Body = require('Body')

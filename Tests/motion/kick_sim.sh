@@ -1,6 +1,7 @@
-# Sourced by the kick tools (Tests/motion/kick_trace.sh, kick_sweep.sh, kick_tune.sh): moves to the
-# project's root, sets up its environment and KICK_LOGS (build/test-logs/kick); kick_sim_run runs a
-# command for one robot while its motion process runs alone with the sim in lockstep, then stops both.
+# Sourced by the walk-kick scenario (walk_kick_sweep.sh) and the tuning tools (Tools/tune: kick_trace.sh,
+# kick_sweep.sh, ...): moves to the project's root, sets up its environment and KICK_LOGS
+# (build/test-logs/kick); kick_sim_run runs a command for one robot while its motion process runs
+# alone with the sim in lockstep, then stops both.
 #   kick_sim_run ID LOG COMMAND...     (SIM_SEED: the sim's seed, default 1; returns COMMAND's status)
 cd "$(dirname "${BASH_SOURCE[0]}")/../.." || exit 1
 source Run/env.sh
@@ -8,7 +9,7 @@ KICK_LOGS=$HRP_ROOT/build/test-logs/kick
 mkdir -p "$KICK_LOGS"
 kick_sim_run() {
   local id=$1 log=$2; shift 2
-  Run/shm --robot "$id" remove >/dev/null 2>&1   # stale segments of an earlier run
+  Tools/shm/shm --robot "$id" remove >/dev/null 2>&1   # stale segments of an earlier run
   ROBOT_ID=$id ./run_main --sim --quiet --no-restart --dcm-arg --lockstep-wait --dcm-arg 2 --dcm-arg --seed --dcm-arg "${SIM_SEED:-1}" \
     --dcm-arg --no-camera motion >"$log" 2>&1 &
   local pid=$!
@@ -22,6 +23,6 @@ kick_sim_run() {
   local rc=$?
   kill -TERM "$pid" 2>/dev/null
   wait "$pid" 2>/dev/null
-  Run/shm --robot "$id" remove >/dev/null 2>&1
+  Tools/shm/shm --robot "$id" remove >/dev/null 2>&1
   return $rc
 }

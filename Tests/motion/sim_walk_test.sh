@@ -29,7 +29,7 @@ for s in "${SCEN[@]}"; do
   n=$((n + 1))
   id=$((BASE_ID + n))
   read -r -a parts <<<"$s"
-  Run/shm --robot "$id" remove >/dev/null 2>&1   # stale segments of an earlier run
+  Tools/shm/shm --robot "$id" remove >/dev/null 2>&1   # stale segments of an earlier run
   ROBOT_ID=$id ./run_main --sim --quiet --no-restart --dcm-arg --lockstep-wait --dcm-arg 2 --dcm-arg --seed --dcm-arg "${SIM_SEED:-1}" \
     --dcm-arg --no-camera motion \
     >"$LOGDIR/main_${parts[0]}.log" 2>&1 &
@@ -43,7 +43,7 @@ for s in "${SCEN[@]}"; do
   rc=$?
   kill -TERM "$main_pid" 2>/dev/null
   wait "$main_pid" 2>/dev/null
-  Run/shm --robot "$id" remove >/dev/null 2>&1
+  Tools/shm/shm --robot "$id" remove >/dev/null 2>&1
   tap_merge "$LOGDIR/${parts[0]}.log" "${parts[0]}" "$rc"
 done
 [ $failed -eq 0 ]

@@ -62,7 +62,7 @@ local function walk_over(mode)
   Motion.request('walk')
   Walk.set_velocity(SPEED, 0, 0)
   local fell, zmax, zmin = false, a.z, a.z
-  -- TERRAIN_TRACE=file.csv: every tick of the walk (the last case run) for Tests/motion/plot_terrain.py
+  -- TERRAIN_TRACE=file.csv: every tick of the walk (the last case run) for Tools/plot/plot_terrain.py
   local trace = os.getenv('TERRAIN_TRACE')
   local csv = trace and assert(io.open(trace, 'w'))
   if csv then csv:write('t,x,z,pitch,imu_pitch,gyro_y,lx,rx,lz_force,rz_force,cp_ex,com_x,odo_x\n') end

@@ -11,7 +11,7 @@
 # `flat`: the same walk without objects.
 #   [ROBOT=name] [TERRAIN_SPEED=m/s] [WALK_PARAMS=...] [SIM_SEED=n] [TERRAIN_MODES="fb nofb"] \
 #     [TERRAIN_TRACE=f.csv] Tests/motion/terrain_test.sh [LAYOUT...]   (default: ramp step)
-# (TERRAIN_TRACE: the last walk tick by tick; Tests/motion/plot_terrain.py plots it)
+# (TERRAIN_TRACE: the last walk tick by tick; Tools/plot/plot_terrain.py plots it)
 set -u
 cd "$(dirname "$0")/../.."
 source Run/env.sh
@@ -29,7 +29,7 @@ for layout in "${LAYOUTS[@]}"; do
   rm -rf "$site"; mkdir -p "$site"
   cp Config/site/*.lua "$site/"
   luajit Tests/motion/terrain.lua sim "$layout" >"$site/sim.lua" || { echo "not ok $((k + 1)) - terrain $layout: no layout"; exit 1; }
-  Run/shm --robot "$id" remove >/dev/null 2>&1   # stale segments of an earlier run
+  Tools/shm/shm --robot "$id" remove >/dev/null 2>&1   # stale segments of an earlier run
   HRP_SITE=$site ROBOT_ID=$id ./run_main --sim --quiet --no-restart --dcm-arg --lockstep-wait --dcm-arg 2 \
     --dcm-arg --seed --dcm-arg "${SIM_SEED:-1}" --dcm-arg --no-camera motion >"$LOGDIR/main_terrain_$layout.log" 2>&1 &
   main_pid=$!
@@ -41,7 +41,7 @@ for layout in "${LAYOUTS[@]}"; do
   rc=$?
   kill -TERM "$main_pid" 2>/dev/null
   wait "$main_pid" 2>/dev/null
-  Run/shm --robot "$id" remove >/dev/null 2>&1
+  Tools/shm/shm --robot "$id" remove >/dev/null 2>&1
   tap_merge "$LOGDIR/terrain_$layout.log" "$layout" "$rc"
 done
 [ $failed -eq 0 ]

@@ -10,7 +10,7 @@ source Run/env.sh
 LOGDIR="$HRP_ROOT/build/test-logs/motion"
 mkdir -p "$LOGDIR"
 id=$(( ${ROBOT_ID:-9200} + 60 ))
-Run/shm --robot "$id" remove >/dev/null 2>&1   # stale segments of an earlier run
+Tools/shm/shm --robot "$id" remove >/dev/null 2>&1   # stale segments of an earlier run
 ROBOT_ID=$id ./run_main --sim --quiet --no-restart --dcm-arg --lockstep-wait --dcm-arg 2 --dcm-arg --no-camera motion \
   >"$LOGDIR/main_waist.log" 2>&1 &
 main_pid=$!
@@ -19,5 +19,5 @@ ROBOT_ID=$id timeout 300 ./run_repl Tests/motion/waist_scenario.lua
 rc=$?
 kill -TERM "$main_pid" 2>/dev/null
 wait "$main_pid" 2>/dev/null
-Run/shm --robot "$id" remove >/dev/null 2>&1
+Tools/shm/shm --robot "$id" remove >/dev/null 2>&1
 exit $rc

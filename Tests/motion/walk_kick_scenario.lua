@@ -11,7 +11,7 @@
 -- OP3's side kick does; the 1.5 m goal is printed against the shortest forward kick),
 -- the walk's step counter kept going, no fall.
 -- WALK_KICK_TRACE=FILE: the kicking foot's toe, the ball and the torso every tick (for plotting:
--- Tests/motion/plot_walk_kick.py).
+-- Tools/plot/plot_walk_kick.py).
 -- luacheck: globals Sim Motion Walk wait arg Body
 package.path = os.getenv('HRP_ROOT') .. '/Tests/motion/?.lua;' .. package.path
 local ks = require('kick_setup')

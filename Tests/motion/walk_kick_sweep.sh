@@ -9,7 +9,7 @@
 #   Tests/motion/walk_kick_sweep.sh [SWEEPS] [FEET] [VX]     e.g. 'forward=-0.03,0.03/-0.02,0.02' left
 # (default: the OP3's forward kick zone and two side-kick balls, both feet, 0.12 m/s)
 # env: ROBOT_ID (default 9295), SIM_SEED, WALK_KICK_MIN_FORWARD, WALK_KICK_MIN_SIDE (m), WALK_KICK_TRACE=FILE (then plot it:
-# .venv/bin/python3 Tests/motion/plot_walk_kick.py FILE OUT.png)
+# .venv/bin/python3 Tools/plot/plot_walk_kick.py FILE OUT.png)
 set -u
 source "$(dirname "$0")/kick_sim.sh"
 if [ ! -x build/bin/dcm_sim ]; then echo "1..0 # SKIP walk kick: needs build/bin/dcm_sim"; exit 0; fi

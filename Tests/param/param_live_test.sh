@@ -11,12 +11,12 @@ LOGDIR="$HRP_ROOT/build/test-logs/param"
 mkdir -p "$LOGDIR"
 id=$(( ${ROBOT_ID:-9200} + 70 ))
 site=$(mktemp -d)
-trap 'rm -rf "$site"; Run/shm --robot "$id" remove >/dev/null 2>&1' EXIT
+trap 'rm -rf "$site"; Tools/shm/shm --robot "$id" remove >/dev/null 2>&1' EXIT
 cp Config/site/*.lua "$site/"
 printf -- '-- this venue walks its own way\nreturn {\n  tStep = 0.25, -- s, one step (tuned here)\n}\n' > "$site/walk.lua"
 cp "$site/walk.lua" "$site/walk.lua.orig"
 export HRP_SITE="$site"
-Run/shm --robot "$id" remove >/dev/null 2>&1
+Tools/shm/shm --robot "$id" remove >/dev/null 2>&1
 ROBOT_ID=$id ./run_main --sim --quiet --no-restart --dcm-arg --lockstep-wait --dcm-arg 3 motion vision \
   >"$LOGDIR/main.log" 2>&1 &
 main_pid=$!

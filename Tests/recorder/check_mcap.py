@@ -19,7 +19,7 @@ import numpy as np
 from mcap.reader import make_reader
 from mcap_ros2.decoder import DecoderFactory
 
-sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "..", "Run"))
+sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "..", "Run", "view"))
 from shm_read import read_block  # noqa: E402
 
 n = 0

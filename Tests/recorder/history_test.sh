@@ -6,8 +6,8 @@ set -u
 cd "$(dirname "$0")/../.."
 source Run/env.sh
 dir=$(mktemp -d)
-trap 'kill $rec 2>/dev/null; wait $rec 2>/dev/null; rm -rf "$dir"; Run/shm remove >/dev/null 2>&1' EXIT
-Run/shm remove >/dev/null 2>&1
+trap 'kill $rec 2>/dev/null; wait $rec 2>/dev/null; rm -rf "$dir"; Tools/shm/shm remove >/dev/null 2>&1' EXIT
+Tools/shm/shm remove >/dev/null 2>&1
 build/bin/hrp_record --dir "$dir" --quiet > /dev/null 2>&1 &
 rec=$!
 sleep 0.5

@@ -8,8 +8,8 @@ set -u
 cd "$(dirname "$0")/../.."
 source Run/env.sh
 dir=$(mktemp -d)
-trap 'rm -rf "$dir"; Run/shm remove >/dev/null 2>&1' EXIT
-Run/shm remove >/dev/null 2>&1
+trap 'rm -rf "$dir"; Tools/shm/shm remove >/dev/null 2>&1' EXIT
+Tools/shm/shm remove >/dev/null 2>&1
 port=$((20000 + ROBOT_ID % 20000 * 2))   # two ports of this robot id's own
 
 build/bin/hrp_record --dir "$dir" --camera off --quiet > "$dir/record.out" 2>&1 &

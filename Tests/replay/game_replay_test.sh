@@ -23,8 +23,8 @@ cleanup() {
   for p in "${pids[@]}"; do kill -TERM "$p" 2>/dev/null; done
   sleep 0.3
   for p in "${pids[@]}"; do kill -KILL "$p" 2>/dev/null; done
-  ROBOT_ID=$REC_ID Run/shm remove >/dev/null 2>&1
-  ROBOT_ID=$REP_ID Run/shm remove >/dev/null 2>&1
+  ROBOT_ID=$REC_ID Tools/shm/shm remove >/dev/null 2>&1
+  ROBOT_ID=$REP_ID Tools/shm/shm remove >/dev/null 2>&1
   if [ -n "${KEEP:-}" ]; then echo "# kept $dir"; else rm -rf "$dir"; fi
 }
 trap cleanup EXIT
@@ -38,7 +38,7 @@ ports() { export HRP_GC_PORT=$((40000 + $1 % 20000)) HRP_GC_RETURN_PORT=$((40001
 # Waits until the DCM of robot $1 holds the lockstep clock (so that every process joins before tick 1).
 wait_lockstep() {
   for _ in $(seq 1 200); do
-    ROBOT_ID=$1 Run/shm dump sync 2>/dev/null | grep -Eq '^lockstep +i32 \[1\] +1$' && return 0
+    ROBOT_ID=$1 Tools/shm/shm dump sync 2>/dev/null | grep -Eq '^lockstep +i32 \[1\] +1$' && return 0
     sleep 0.05
   done
   return 1
@@ -66,7 +66,7 @@ stop_robot() {
 # ---- 1. the game, recorded
 export ROBOT_ID=$REC_ID
 ports $REC_ID
-Run/shm remove >/dev/null 2>&1
+Tools/shm/shm remove >/dev/null 2>&1
 mkdir -p "$dir/rec"
 t0=$(now)
 build/bin/dcm_sim --lockstep-wait 4 --duration "$SECONDS_SIM" --seed 1 --quiet > "$dir/rec/dcm.out" 2>&1 &
@@ -89,7 +89,7 @@ replay() {   # replay OUT [SITE]
   local out=$1
   export ROBOT_ID=$REP_ID
   ports $REP_ID
-  Run/shm remove >/dev/null 2>&1
+  Tools/shm/shm remove >/dev/null 2>&1
   mkdir -p "$out"
   local t0 rc
   t0=$(now)

@@ -6,8 +6,8 @@ set -u
 cd "$(dirname "$0")/../.."
 source Run/env.sh
 dir=$(mktemp -d)
-trap 'rm -rf "$dir"; Run/shm remove >/dev/null 2>&1' EXIT
-Run/shm remove >/dev/null 2>&1
+trap 'rm -rf "$dir"; Tools/shm/shm remove >/dev/null 2>&1' EXIT
+Tools/shm/shm remove >/dev/null 2>&1
 build/bin/hrp_record --dir "$dir" --quiet > "$dir/record.out" 2>&1 &
 rec=$!
 sleep 0.5
@@ -27,11 +27,11 @@ print(repr(at(1.003)), repr(at(0.5)), repr(ts[ts.index(at(0.5)) + 3]), repr(ts[-
 echo "# log: ticks at or before 1.003 s: $at1, 0.5 s: $at05 (3 later: $at05_3); last $last"
 n=0; fails=0
 for mode in realtime lockstep; do
-  Run/shm remove >/dev/null 2>&1
+  Tools/shm/shm remove >/dev/null 2>&1
   flag=""; [ $mode = lockstep ] && flag=--lockstep
   PLATFORM=Replay ./run_dcm --log "$log" --paused $flag > "$dir/dcm_$mode.out" 2>&1 &
   dcm=$!
-  for _ in $(seq 100); do Run/shm dump replay pid 2>/dev/null | grep -q "$dcm" && break; sleep 0.05; done
+  for _ in $(seq 100); do Tools/shm/shm dump replay pid 2>/dev/null | grep -q "$dcm" && break; sleep 0.05; done
   TAP_BASE=$n TAP_PREFIX="$mode: " PLATFORM=Replay timeout 120 ./run_repl Tests/replay/replay_control.lua \
     "$at1" "$at05" "$at05_3" "$last" > "$dir/repl_$mode.out" 2>&1
   rc=$?

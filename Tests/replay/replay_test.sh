@@ -29,7 +29,7 @@ ch = {c.topic: c.id for c in s.channels.values()}
 n = s.statistics.channel_message_counts
 print(n.get(ch['/dcm.sensor'], 0), n.get(ch['/camera.image/jpeg'], 0))" "$log")
 echo "# recorded: $sensors dcm.sensor messages, $frames camera frames"
-Run/shm remove >/dev/null 2>&1
+Tools/shm/shm remove >/dev/null 2>&1
 
 # lockstep: every recorded tick reaches the participant, in order, with the recorded values
 PLATFORM=Replay ./run_dcm --log "$log" --lockstep > "$dir/replay.out" 2>&1 &
@@ -48,7 +48,7 @@ res $? "in lockstep the participant sees every tick, in order, with the recorded
 res $? "every camera frame is served into camera.image (JPEG decoded back to YUYV, within 4 levels)"
 
 # faster than real time: 2 s of log at 4x
-Run/shm remove >/dev/null 2>&1
+Tools/shm/shm remove >/dev/null 2>&1
 t0=$(date +%s.%N)
 PLATFORM=Replay ./run_dcm --log "$log" --speed 4 --quiet
 rc=$?
@@ -61,7 +61,7 @@ res $? "--speed 4 replays the log to its end (${wall} s of wall time for 2 s)"
 # a truncated log: read up to the damage, which is reported
 size=$(stat -c %s "$log")
 head -c $((size * 6 / 10)) "$log" > "$dir/cut.mcap"
-Run/shm remove >/dev/null 2>&1
+Tools/shm/shm remove >/dev/null 2>&1
 PLATFORM=Replay ./run_dcm --log "$dir/cut.mcap" --speed 8 > "$dir/cut.out" 2>&1
 rc=$?
 sed 's/^/# /' "$dir/cut.out"

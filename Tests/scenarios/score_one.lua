@@ -57,7 +57,7 @@ ffi.cdef('int kill(int pid, int sig);')
 local killed = false
 local goal, own = false, false
 -- optional trace ($TRUTH_LOG): truth, world model and states every step, for plotting
--- (Tests/scenarios/plot_paths.py)
+-- (Tools/plot/plot_paths.py)
 local trace = os.getenv('TRUTH_LOG') and io.open(os.getenv('TRUTH_LOG'), 'w')
 local body_names = require('BodyFSM.machine').states or {}
 local head_names = require('HeadFSM.machine').states or {}
@@ -85,7 +85,7 @@ if trace then
     .. ' cmd_vx cmd_vy cmd_va walk_vx walk_vy walk_va\n')
 end
 -- optional capture log ($CAPTURE_LOG): the walk's capture point error every motion tick, to see
--- what normal play gives (Tests/motion/capture_stats.py): t ex ey walking motion-state
+-- what normal play gives (Tools/plot/capture_stats.py): t ex ey walking motion-state
 local cap_path = os.getenv('CAPTURE_LOG') or ''
 local cap = cap_path ~= '' and assert(io.open(cap_path, 'w'))
 local motion = cap and shm.open('motion')

@@ -4,12 +4,12 @@
 # 120 s of simulated time in at least 9 of 10; prints each seed's outcome and the median time to
 # goal. Then the vision process is killed 10 s into a run: run_main restarts it, and the robot
 # still scores. Each run leaves a trace (truth, world model, states, post sightings) in
-# build/test-logs/scenarios/trace_SEED.txt; Tests/scenarios/plot_paths.py draws them to PNG.
+# build/test-logs/scenarios/trace_SEED.txt; Tools/plot/plot_paths.py draws them to PNG.
 #   Tests/scenarios/score_test.sh [SEEDS...]        (default 1..10)
 # env: SCORE_LIMIT (s), SCORE_NEED (goals needed per 10 runs, default 9), SKIP_KILL=1, SCORE_LOGDIR,
 # CAPTURE_LOGS=1 (each run also logs the walk's capture point error per tick: capture_SEED.txt),
-# SCORE_BEHAVIOR=FILE (run FILE as the behavior process: Tests/bench/score_given_pose.sh,
-# Tests/scenarios/behavior_record.lua), ROBOT_ID (the runs use ROBOT_ID+1.. and ROBOT_ID+50)
+# SCORE_BEHAVIOR=FILE (run FILE as the behavior process: Tools/bench/score_given_pose.sh,
+# Tools/tune/behavior_record.lua), ROBOT_ID (the runs use ROBOT_ID+1.. and ROBOT_ID+50)
 # TAP output; logs in build/test-logs/scenarios/.
 set -u
 cd "$(dirname "$0")/../.."
@@ -41,7 +41,7 @@ run_one() {
   # runs (a script that came first would create the blocks itself and race the DCM)
   local i tick
   for i in $(seq 1 300); do
-    tick=$(Run/shm --robot "$id" dump sync tick 2>/dev/null | awk '{print $NF}')
+    tick=$(Tools/shm/shm --robot "$id" dump sync tick 2>/dev/null | awk '{print $NF}')
     [ -n "$tick" ] && [ "$tick" != 0 ] && break
     sleep 0.1
   done
@@ -50,7 +50,7 @@ run_one() {
     ./run_repl Tests/scenarios/score_one.lua "$seed" "$LIMIT" $kill_at >"$LOGDIR/run_$tag.log" 2>&1
   kill -TERM "$main_pid" 2>/dev/null
   wait "$main_pid" 2>/dev/null
-  Run/shm --robot "$id" remove >/dev/null 2>&1
+  Tools/shm/shm --robot "$id" remove >/dev/null 2>&1
   grep -h '^result' "$LOGDIR/run_$tag.log" | tail -1
 }
 

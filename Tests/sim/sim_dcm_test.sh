@@ -30,7 +30,7 @@ stop_dcm() {
 }
 cleanup() {
   stop_dcm
-  for r in "$ID" $((ID + 1)); do ROBOT_ID=$r Run/shm remove >/dev/null 2>&1; done
+  for r in "$ID" $((ID + 1)); do ROBOT_ID=$r Tools/shm/shm remove >/dev/null 2>&1; done
 }
 trap cleanup EXIT
 

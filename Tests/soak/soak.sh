@@ -17,13 +17,13 @@ mkdir -p "$LOGDIR"
 ID=$(( ${ROBOT_ID:-9200} + 90 ))
 PORT=$((40000 + ID % 20000))
 export ROBOT_ID=$ID HRP_GC_PORT=$PORT HRP_GC_RETURN_PORT=$((PORT + 1)) HRP_TEAM_PORT=$((30000 + ID % 20000))
-Run/shm --robot "$ID" remove >/dev/null 2>&1
+Tools/shm/shm --robot "$ID" remove >/dev/null 2>&1
 ./run_main --sim --quiet --dcm-arg --lockstep --dcm-arg --seed --dcm-arg 1 >"$LOGDIR/main.log" 2>&1 &
 MAIN=$!
-cleanup() { kill -TERM "$MAIN" 2>/dev/null; wait "$MAIN" 2>/dev/null; Run/shm --robot "$ID" remove >/dev/null 2>&1; }
+cleanup() { kill -TERM "$MAIN" 2>/dev/null; wait "$MAIN" 2>/dev/null; Tools/shm/shm --robot "$ID" remove >/dev/null 2>&1; }
 trap cleanup EXIT
 for _ in $(seq 1 300); do
-  tick=$(Run/shm --robot "$ID" dump sync tick 2>/dev/null | awk '{print $NF}')
+  tick=$(Tools/shm/shm --robot "$ID" dump sync tick 2>/dev/null | awk '{print $NF}')
   [ -n "$tick" ] && [ "$tick" != 0 ] && break
   sleep 0.1
 done

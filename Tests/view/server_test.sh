@@ -5,6 +5,6 @@
 set -u
 cd "$(dirname "$0")/../.."
 source Run/env.sh
-trap 'Run/shm remove >/dev/null 2>&1' EXIT
-Run/shm remove >/dev/null 2>&1
+trap 'Tools/shm/shm remove >/dev/null 2>&1' EXIT
+Tools/shm/shm remove >/dev/null 2>&1
 python3 Tests/view/server_check.py

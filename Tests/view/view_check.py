@@ -29,7 +29,7 @@ import numpy as np
 from PIL import Image
 from playwright.sync_api import sync_playwright
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Run"))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Run", "view"))
 import shm_read  # noqa: E402
 
 TOLERANCE = 0.06          # m between the marker's centre and the truth (the disc is 0.26 m wide)

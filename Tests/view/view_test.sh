@@ -10,11 +10,11 @@ dir=$(mktemp -d)
 cleanup() {
   for p in ${probe:-} ${srv:-} ${robot:-}; do kill -TERM "$p" 2>/dev/null; done
   for p in ${probe:-} ${srv:-} ${robot:-}; do wait "$p" 2>/dev/null; done
-  Run/shm remove >/dev/null 2>&1
+  Tools/shm/shm remove >/dev/null 2>&1
   rm -rf "$dir"
 }
 trap cleanup EXIT
-Run/shm remove >/dev/null 2>&1
+Tools/shm/shm remove >/dev/null 2>&1
 ./run_main --sim --quiet > "$dir/robot.out" 2>&1 &
 robot=$!
 ./run_view --port 0 > "$dir/view.out" 2>&1 &

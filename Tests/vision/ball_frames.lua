@@ -8,7 +8,7 @@
 -- robot in view up to 3 m was missed or a robot detected with its feet in view near none (each printed).
 local Config = require('Config')
 local pipeline = require('Vision.pipeline')
-local frames = require('Run.ball_train.frames')
+local frames = require('Tools.ball_train.frames')
 local draw = require('Tests.vision.draw')
 
 local path, kind, gate = arg[1], arg[2], arg[3] or ''

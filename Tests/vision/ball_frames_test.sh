@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The white and the orange ball, and other robots, over seeded frames the sim renders
-# (build/bin/sim_ball_frames; seeds 11, 12 and 13 (walking) here, training uses 1001 and up: Run/ball_train/train.sh),
+# (build/bin/sim_ball_frames; seeds 11, 12 and 13 (walking) here, training uses 1001 and up: Tools/ball_train/train.sh),
 # scored by Tests/vision/ball_frames.lua against the renderer's truth. TAP; prints every figure.
 #   FRAMES=N white-ball frames (default 1500: some 900 without the ball, so that the 1% goal of false
 #   detections is a count of ~9 frames, not of 2; the orange ball gets N/4)

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Run/lut_tool: a table from the config's colour boxes, a table trained from a labelled example
+# Tools/lut: a table from the config's colour boxes, a table trained from a labelled example
 # image (written here as PPM: orange, green, white and blue patches with noise, and a mask painting
 # the first three in their display colours), a rendered label PNG, and a corrupt table refused. TAP.
 set -u

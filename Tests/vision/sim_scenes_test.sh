@@ -10,7 +10,7 @@ build/bin/dcm_sim --lockstep --seed 1 --quiet >/tmp/scenes_dcm.$$.log 2>&1 &
 DCM=$!
 cleanup() {
   kill "$DCM" 2>/dev/null; wait "$DCM" 2>/dev/null
-  Run/shm remove >/dev/null 2>&1
+  Tools/shm/shm remove >/dev/null 2>&1
   rm -f /tmp/scenes_dcm.$$.log
 }
 trap cleanup EXIT

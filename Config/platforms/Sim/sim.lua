@@ -71,7 +71,7 @@ return {
     -- the orange ball's U (52) and of the colour table's orange box (Config/common/vision.lua).
     colours = { { 83, 107, 212 }, { 72, 195, 98 } },
     -- the team (1 or 2) of each robot in the order of --robots; robots beyond the list: the first
-    -- half of the world's robots team 1, the rest team 2 (as Tests/bench/match.sh gives them out)
+    -- half of the world's robots team 1, the rest team 2 (as Tools/match/match.sh gives them out)
     of_robot = {},
   },
 

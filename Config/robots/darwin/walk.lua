@@ -23,7 +23,7 @@ return {
   -- the ankle roll axis above the sole (the real DARwIn-OP has no F/T sensors: balance stays off)
   balance = { sensorHeight = 0.0335 },
   -- kick: the OP3's structure (Config/common/walk.lua) retuned for this body in the sim
-  -- (Tests/motion/kick_tune.sh with ROBOT=darwin); the MX-28's 5.24 rad/s limits the toe to
+  -- (Tools/tune/kick_tune.sh with ROBOT=darwin); the MX-28's 5.24 rad/s limits the toe to
   -- ~1.7 m/s at the ball
   kick = {
     body = {

@@ -1,5 +1,5 @@
 -- The Hubo2+'s CAN buses and boards (the `can` concern, read by Platforms/Hubo/dcm_hubo and
--- Run/hubo_emulator through Lib/Config.lua). Facts from shared/robots/hubo_can.md (2.1, 2.3, 6)
+-- Platforms/Hubo/emulator/hubo_emulator through Lib/Config.lua). Facts from shared/robots/hubo_can.md (2.1, 2.3, 6)
 -- and hubo_reference.txt (ACTUATORS): hubo-ach's tables/huboplus.joint.table and sensor table,
 -- HuboCan's devices/Hubo2Plus/*.dd.
 --

@@ -90,9 +90,9 @@ return {
       gyro_axes = { 'x', 'y', 'z' }, accel_axes = { 'x', 'y', 'z' } },
   },
   -- each joint's actuator model (Config/common/actuators.lua): the sim drives every joint with its
-  -- numbers, and Run/gen_urdf.py writes its torque, speed, damping and friction into op3.urdf
+  -- numbers, and Tools/urdf/gen_urdf.py writes its torque, speed, damping and friction into op3.urdf
   actuator = every_joint('XM430-W350'),
-  -- massless frames Run/gen_urdf.py adds to op3.urdf (the URDF carries them; nothing else reads
+  -- massless frames Tools/urdf/gen_urdf.py adds to op3.urdf (the URDF carries them; nothing else reads
   -- this table): link = the link it is fixed to; xyz = its origin and rpy its orientation (URDF
   -- roll, pitch, yaw), both in the reference frame at the zero pose (soles on z = 0, x forward,
   -- y left, z up)

@@ -11,7 +11,7 @@ return {
   -- ankle point)
   sole = { toe = 0.0635, heel = 0.0635, inner = 0.026 },
   -- turning: the legs touch (op3.urdf's boxes: hip roll links, knees) once the feet's relative yaw
-  -- passes 0.52 rad toed out or 0.45 toed in at the stance's spacing (Tests/motion/hip_yaw_clearance.py):
+  -- passes 0.52 rad toed out or 0.45 toed in at the stance's spacing (Tools/tune/hip_yaw_clearance.py):
   -- stepLimitA (the default) keeps within it, the closing foot lands fully toed in, and beyond
   -- 1.5 rad/s the steps shorten to 0.2 s at 2.0 rad/s rather than turn further
   turnToeIn = 1.0,
@@ -36,7 +36,7 @@ return {
   -- face from the URDF's sole plate (l_ank_roll_link): its front 0.063 m ahead of the sole point,
   -- its outer edge 0.052 m outward; the ball's radius 0.07 m, met about 0.06 m above the ground.
   -- The strike is a short phase, so the servos run at their speed limit (4.8 rad/s) through it.
-  -- Both kinds come from the cross-entropy search of Tests/motion/walk_kick_tune.sh.
+  -- Both kinds come from the cross-entropy search of Tools/tune/walk_kick_tune.sh.
   walkKick = {
     expire = 2.0,            -- s: two step pairs at 0.08 m/s
     maxSpeed = { 0.15, 0.04, 0.3 }, -- tuned at 0.12 m/s straight; out of a 0.25 m/s walk the kick falls

@@ -1,4 +1,4 @@
-/* The C side of the latency benchmark (Tests/bench/shm_latency.lua writes from Lua):
+/* The C side of the latency benchmark (Tools/bench/shm_latency.lua writes from Lua):
  *   shm_latency_reader N DATA_FIFO ACK_FIFO
  * Phase 1: N updates of the `bench` block, each observed by spinning on the block's write
  * counter; latency = now - t_send written by Lua; acknowledged through bench.ack.

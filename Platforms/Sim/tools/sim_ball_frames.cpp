@@ -1,5 +1,5 @@
 // sim_ball_frames: renders seeded random head-camera frames with their truth, for training and testing
-// the ball and robot detectors (Run/ball_train, Tests/vision/ball_frames_test.sh).
+// the ball and robot detectors (Tools/ball_train, Tests/vision/ball_frames_test.sh).
 //   sim_ball_frames --out FILE [--count N] [--seed N] [--others K] [--ball white|orange] [--walk 1]
 // Each scene: this robot somewhere on the carpet, the head anywhere in its range; the ball in view
 // in about 2/3 of the scenes (0.25..5 m, also partly in view), elsewhere on the carpet otherwise;

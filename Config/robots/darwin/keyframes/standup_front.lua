@@ -3,7 +3,7 @@
 -- durations; arms wider apart while the chest comes up, head a little up), after a first frame that
 -- puts the arms out sideways along the ground: lying on its arms (as the roll from the back leaves
 -- it) the robot could not swing them down to lift the chest and ended in a headstand. Held out
--- (Tests/motion/standup_stats.sh, clean trials): front 14/14 first attempt, back 14/14.
+-- (Tools/tune/standup_stats.sh, clean trials): front 14/14 first attempt, back 14/14.
 -- Joint convention (Config/robots/darwin/robot.lua): leg pitch angles change sign, the head is
 -- level at tilt 0.785, the shoulder roll's zero is 45 deg out (0.785: arm down), the elbow is
 -- straight at 1.571. Angles by joint name; `mirror` gives the left side's, the right side mirrors

@@ -1,0 +1,45 @@
+/* The Hubo board emulator's pieces: the boards' behaviour (emu_boards.c) and the bus with its
+ * timing model and faults (hubo_emulator.c). */
+#ifndef HRP_HUBO_EMU_H
+#define HRP_HUBO_EMU_H
+
+#include "hubo_can/can_proto.h"
+#include "hubo_can/hubo_table.h"
+
+/* One emulated board (any kind), from a row of the body's can.lua. */
+typedef struct emu_board {
+  const ht_board *def;
+  /* motor boards, per channel */
+  double pos[HT_CH_MAX];        /* counts */
+  double ref[HT_CH_MAX];        /* counts */
+  double vmax[HT_CH_MAX];       /* counts/s */
+  int fet, ctrl;                /* FETs on, position controller on */
+  int home_state;               /* 6 once homed */
+  double homing_until;          /* s, a homing in progress ends then */
+  uint8_t faults, limits;       /* injected status flags */
+  uint32_t refs, refs_ignored;  /* reference frames taken / ignored (controller off) */
+  /* sensor boards */
+  double ft[3];                 /* Mx, My (N*m), Fz (N) */
+  /* faults */
+  int dead;
+} emu_board;
+
+typedef struct emu_world {
+  int n;
+  emu_board b[HT_BOARD_MAX];
+  double imu[4];                /* roll, pitch (rad), rates (rad/s) */
+  double power[3];              /* V, A, W */
+  double tau;                   /* s, first-order time constant of the joints */
+  double home_time;             /* s a homing takes */
+} emu_world;
+
+/* Boards of the table at their start state: homed (or not), FETs and controllers off, at zero. */
+void emu_init(emu_world *w, const ht_table *t, int homed, double tau);
+/* Advances every motor board to time `now`, dt s after the last call. */
+void emu_step(emu_world *w, double now, double dt);
+/* A host frame on bus `bus`: acts on it and writes up to 4 replies into out; returns how many. */
+int emu_handle(emu_world *w, int bus, const hcan_frame *f, double now, hcan_frame *out);
+/* The board called name ("JMC2") or numbered ("0x02", "2") on any bus, or NULL. */
+emu_board *emu_find(emu_world *w, const char *name);
+
+#endif

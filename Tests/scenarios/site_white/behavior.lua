@@ -1,5 +1,0 @@
--- A site with today's ball (Tests/bench/white_score.sh): team and player as Config/site's.
-return {
-  team_number = 1,
-  player_number = 1,
-}

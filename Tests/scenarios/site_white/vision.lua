@@ -1,4 +1,0 @@
--- A site with today's ball (Tests/bench/white_score.sh): the vision looks for the white ball.
-return {
-  ball = { kind = 'white' },
-}
