@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The white ball seen by the OP3 walking in the sim (Tests/vision/walk_eye.lua scores it): dcm_sim
-# in lockstep with the realistic camera and the white ball (site folder Tools/bench/site_white),
+# in lockstep with the realistic camera and the white ball (site folder Tests/scenarios/site_white),
 # the motion and vision processes, the scorer as the third participant; one run per seed, the
 # figures of all runs together at the end (walk_merge.lua). TAP.
 #   WALK_EYE_SECONDS (default 60) of walking per seed, WALK_EYE_SEEDS (default "1 2")
@@ -12,7 +12,7 @@ cd "$(dirname "$0")/../.."
 source Run/env.sh
 [ -x build/bin/dcm_sim ] || { echo "not ok 1 - build/bin/dcm_sim not built"; exit 1; }
 # WALK_EYE_BALL=orange: the colour table's orange ball (the config's default) instead of the white one
-[ "${WALK_EYE_BALL:-white}" = white ] && export HRP_SITE="$PWD/Tools/bench/site_white"
+[ "${WALK_EYE_BALL:-white}" = white ] && export HRP_SITE="$PWD/Tests/scenarios/site_white"
 GATE="${WALK_EYE_GATE-recall,false,range,bearing}"
 SECONDS_RUN="${WALK_EYE_SECONDS:-60}"
 SEEDS=(${WALK_EYE_SEEDS:-1 2})
