@@ -19,6 +19,7 @@
 #ifndef HRP_DCM_ARGS_H
 #define HRP_DCM_ARGS_H
 
+#include <limits.h>
 #include <stddef.h>
 
 #ifdef __cplusplus
@@ -47,6 +48,16 @@ typedef struct dcm_opt {
   int (*parse)(const char *value, void *out, char *err, size_t errlen);
   int required;        /* 1: the command line must give it */
 } dcm_opt;
+
+/* Rows every DCM that has the option declares alike (d: its struct dcm *). --lockstep-wait fills
+ * d->sync.start_with; the DCM then sets d->lockstep when it is > 0. */
+#define DCM_OPT_LOCKSTEP(d)                                                                                  \
+  { "--lockstep", DCM_OPT_FLAG, &(d)->lockstep, 0, 0, NULL,                                                  \
+    "each tick waits for every live participant (Lib/lockstep.lua)", NULL, 0 },                              \
+  { "--lockstep-wait", DCM_OPT_INT, &(d)->sync.start_with, 1, 1000, "N",                                     \
+    "lockstep, and the first tick waits until N participants have joined", NULL, 0 }
+#define DCM_OPT_CYCLES(d, help) { "--cycles", DCM_OPT_LONG, &(d)->max_cycles, 0, (double)LONG_MAX, "N", help, NULL, 0 }
+#define DCM_OPT_QUIET(d) { "--quiet", DCM_OPT_FLAG, &(d)->quiet, 0, 0, NULL, "no log or status lines", NULL, 0 }
 
 /* The row that ends a table. */
 #define DCM_OPT_END { NULL, DCM_OPT_FLAG, NULL, 0, 0, NULL, NULL, NULL, 0 }

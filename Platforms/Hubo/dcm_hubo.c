@@ -17,7 +17,6 @@
 #include "hubo_bus.h"
 
 #include <errno.h>
-#include <limits.h>
 #include <sched.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -229,9 +228,8 @@ int main(int argc, char **argv) {
     { "--iface", DCM_OPT_FUNC, O.iface, 0, 0, "BUS=NAME", "CAN interface of bus BUS (default: can.lua's); per bus",
       parse_iface, 0 },
     { "--rate", DCM_OPT_DOUBLE, &O.rate, 1, 1000, "HZ", "control rate (default: robot.lua's period)", NULL, 0 },
-    { "--cycles", DCM_OPT_LONG, &D.max_cycles, 0, LONG_MAX, "N", "stop after N cycles (default: at a signal)", NULL,
-      0 },
-    { "--quiet", DCM_OPT_FLAG, &D.quiet, 0, 0, NULL, "no log lines", NULL, 0 },
+    DCM_OPT_CYCLES(&D, "stop after N cycles (default: at a signal)"),
+    DCM_OPT_QUIET(&D),
     DCM_OPT_END,
   };
   dcm_args(D.name, "PLATFORM=Hubo ./run_dcm", opts, argc, argv);

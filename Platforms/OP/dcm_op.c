@@ -16,7 +16,6 @@
 #include "op_bus.h"
 
 #include <errno.h>
-#include <limits.h>
 #include <sched.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -210,11 +209,10 @@ int main(int argc, char **argv) {
     { "--port", DCM_OPT_STRING, &O.port, 0, 0, "PATH", "serial port of bus 1 (default: robot.lua's)", NULL, 0 },
     { "--rate", DCM_OPT_DOUBLE, &O.rate, 1, 1000, "HZ", "control rate (default: robot.lua's period)", NULL, 0 },
     { "--baud", DCM_OPT_INT, &O.baud, 9600, 4500000, "N", "every bus's baud rate (default: robot.lua's)", NULL, 0 },
-    { "--cycles", DCM_OPT_LONG, &D.max_cycles, 0, LONG_MAX, "N", "stop after N cycles (default: at a signal)", NULL,
-      0 },
+    DCM_OPT_CYCLES(&D, "stop after N cycles (default: at a signal)"),
     { "--timeout-margin", DCM_OPT_DOUBLE, &O.margin, 0, 1, "S",
       "s added to each answer's wire time before a timeout (default: dcm.lua's)", NULL, 0 },
-    { "--quiet", DCM_OPT_FLAG, &D.quiet, 0, 0, NULL, "no log lines", NULL, 0 },
+    DCM_OPT_QUIET(&D),
     DCM_OPT_END,
   };
   dcm_args(D.name, "PLATFORM=OP ./run_dcm", opts, argc, argv);

@@ -17,7 +17,6 @@
 #include <unistd.h>
 
 #include <cerrno>
-#include <climits>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -221,15 +220,11 @@ int main(int argc, char **argv) {
     {"--log", DCM_OPT_STRING, &H.path, 0, 0, "FILE", "the recording to serve", nullptr, 1},
     {"--speed", DCM_OPT_DOUBLE, &H.speed, 0.01, 1000, "X", "times the recorded rate (default: dcm.lua's)", nullptr,
      0},
-    {"--lockstep", DCM_OPT_FLAG, &D.lockstep, 0, 0, nullptr, "each tick waits for the robot's Lua processes", nullptr,
-     0},
-    {"--lockstep-wait", DCM_OPT_INT, &D.sync.start_with, 1, 1000, "N",
-     "lockstep, and the first tick waits until N participants have joined", nullptr, 0},
-    {"--cycles", DCM_OPT_LONG, &D.max_cycles, 0, (double)LONG_MAX, "N", "stop after N cycles (default: at the end)",
-     nullptr, 0},
+    DCM_OPT_LOCKSTEP(&D),
+    DCM_OPT_CYCLES(&D, "stop after N cycles (default: at the end of the log)"),
     {"--paused", DCM_OPT_FLAG, &H.start_paused, 0, 0, nullptr, "hold the first tick (the REPL's replay.resume())",
      nullptr, 0},
-    {"--quiet", DCM_OPT_FLAG, &D.quiet, 0, 0, nullptr, "no log lines", nullptr, 0},
+    DCM_OPT_QUIET(&D),
     DCM_OPT_END,
   };
   dcm_args(D.name, "PLATFORM=Replay ./run_dcm", opts, argc, argv);

@@ -418,10 +418,7 @@ int main(int argc, char **argv) {
   d.name = "dcm_sim";
   d.max_cycles = -1;
   const dcm_opt opts[] = {
-      {"--lockstep", DCM_OPT_FLAG, &d.lockstep, 0, 0, nullptr,
-       "each tick waits for every live participant (Lib/lockstep.lua)", nullptr, 0},
-      {"--lockstep-wait", DCM_OPT_INT, &d.sync.start_with, 1, 1000, "N",
-       "lockstep, and the first tick waits until N participants have joined", nullptr, 0},
+      DCM_OPT_LOCKSTEP(&d),
       {"--seed", DCM_OPT_FUNC, &s.o.seed, 0, 0, "N", "the world's random seed (default 1)", parse_seed, 0},
       {"--robots", DCM_OPT_FUNC, &s.o, 0, 0, "N|BODY,..",
        "N robots of the body $ROBOT, or one robot of each body named (default 1)", parse_robots, 0},
@@ -432,7 +429,7 @@ int main(int argc, char **argv) {
       {"--no-camera", DCM_OPT_FLAG, &s.o.no_camera, 0, 0, nullptr, "render no camera images", nullptr, 0},
       {"--report", DCM_OPT_DOUBLE, &s.o.report, 0, HUGE_VAL, "WALL_S", "s of wall time between status lines (default 5)",
        nullptr, 0},
-      {"--quiet", DCM_OPT_FLAG, &d.quiet, 0, 0, nullptr, "no status lines", nullptr, 0},
+      DCM_OPT_QUIET(&d),
       {"--profile", DCM_OPT_FLAG, &s.o.profile, 0, 0, nullptr,
        "at exit: wall time per tick of each phase, CPU s per simulated s", nullptr, 0},
       DCM_OPT_END,
