@@ -25,8 +25,9 @@ static void check_joints(const Params &p, const Model &m) {
   }
 }
 
-void load_all(Params *p, Model *m) {
+void load_all(Params *p, Model *m, const std::string &ball_kind) {
   params_load("", p);
+  if (!ball_kind.empty()) p->ball_kind = ball_kind;
   std::string err;
   if (model_load(p->urdf, m, &err) < 0) throw std::runtime_error(err);
   check_joints(*p, *m);

@@ -241,6 +241,20 @@ static void idle_count(void *ctx, int alone) {
   if (++*c->n >= 5) *c->stop = 1;
 }
 
+/* A participant in a child process that reports tick done on slot 0 after `after` s; returns its pid. */
+static pid_t finish_later(dcm_blk_sync *y, uint32_t tick, double after) {
+  const pid_t pid = fork();
+  if (pid == 0) {
+    struct timespec ts = { (time_t)after, (long)((after - (time_t)after) * 1e9) };
+    nanosleep(&ts, NULL);
+    __atomic_store_n(&y->done_tick[0], tick, __ATOMIC_RELEASE);
+    shm_fetch_add_u32(y->done_count, 1);
+    shm_futex_wake(y->done_count);
+    _exit(0);
+  }
+  return pid;
+}
+
 static void test_lockstep(void) {
   char err[512] = "";
   dcm_blk_sync y;
@@ -284,15 +298,7 @@ static void test_lockstep(void) {
   y.done_tick[0] = 5;
   y.wake_tick[0] = 6;
   dcm_lockstep_publish(&l, 6);
-  pid_t worker = fork();
-  if (worker == 0) {
-    struct timespec ts = { 0, 200000000 };
-    nanosleep(&ts, NULL);
-    __atomic_store_n(&y.done_tick[0], 6u, __ATOMIC_RELEASE);
-    shm_fetch_add_u32(y.done_count, 1);
-    shm_futex_wake(y.done_count);
-    _exit(0);
-  }
+  const pid_t worker = finish_later(&y, 6, 0.2);
   t0 = shm_now();
   rc = dcm_lockstep_wait(&l, 6, NULL, NULL, NULL);
   dt = shm_now() - t0;
@@ -305,15 +311,7 @@ static void test_lockstep(void) {
   /* a participant that wants a later tick is not waited for */
   y.wake_tick[0] = 100;
   /* a helper finishes tick 7 after 2 s, so a wait that (wrongly) waited for it would end too, later */
-  pid_t late = fork();
-  if (late == 0) {
-    struct timespec ts = { 2, 0 };
-    nanosleep(&ts, NULL);
-    __atomic_store_n(&y.done_tick[0], 7u, __ATOMIC_RELEASE);
-    shm_fetch_add_u32(y.done_count, 1);
-    shm_futex_wake(y.done_count);
-    _exit(0);
-  }
+  const pid_t late = finish_later(&y, 7, 2);
   rc = dcm_lockstep_wait(&l, 7, NULL, NULL, NULL);
   const uint32_t at_return = __atomic_load_n(&y.done_tick[0], __ATOMIC_ACQUIRE);
   kill(late, SIGKILL);

@@ -85,8 +85,7 @@ int main(int argc, char **argv) {
   try {
     sim::Params p;
     sim::Model m;
-    sim::load_all(&p, &m);
-    if (!ball_kind.empty()) p.ball_kind = ball_kind;
+    sim::load_all(&p, &m, ball_kind);
     // teams alternate: this robot team 1, the others 2, 1, 2, ...
     p.robot_team.clear();
     for (int r = 0; r <= others; r++) p.robot_team.push_back(1 + r % 2);

@@ -65,8 +65,7 @@ int main(int argc, char **argv) {
   try {
     sim::Params p;
     sim::Model m;
-    sim::load_all(&p, &m);
-    if (!ball_kind.empty()) p.ball_kind = ball_kind;
+    sim::load_all(&p, &m, ball_kind);
     sim::Params pc = p, pr = p;
     pc.realism.on = false;
     pr.realism.on = true;
