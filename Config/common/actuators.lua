@@ -3,10 +3,10 @@
 -- Config/robots/<robot>/actuators.lua (same fields). Used by:
 --   Tools/urdf/gen_urdf.py   writes torque, speed, damping and friction into the robot's URDF (<limit>
 --                     effort/velocity, <dynamics> damping/friction), so the URDF carries them;
---   the sim (Platforms/Sim/world.cpp)   drives each joint as an ODE hinge velocity motor:
+--   the sim (Platforms/Sim/world_step.cpp) drives each joint as an ODE hinge velocity motor:
 --                     target speed = gain * (command - position), clamped to the URDF velocity,
 --                     at most hardness * URDF effort of torque; torque off: URDF damping/friction;
---                     positions quantised to `resolution`, speeds to `speed_unit`.
+--                     positions quantised to `resolution`, speeds to `speed_unit` (world_sense.cpp).
 -- Fields (SI units):
 --   torque      N*m, stall torque at the robot's supply voltage (URDF effort)
 --   speed       rad/s, no-load speed at that voltage (URDF velocity)

@@ -13,10 +13,12 @@
  *             tick_ack stops advancing or its writer dies, hold the present pose at the safe
  *             hardness until acknowledgements return
  *   lockstep  the DCM side of the sync block (Lib/lockstep.lua is the participants' side)
+ *   args      the command line, from a table of each DCM's options (args.h)
  *
  * Errors: functions return 0 (or a count) on success and a negative errno code on failure with a
- * message in the caller's buffer. Nothing here calls exit(): a DCM must never die with the motors
- * on. No hidden state except the signal flag of dcm_main.
+ * message in the caller's buffer. Nothing here calls exit() (a DCM must never die with the motors
+ * on) but dcm_args, which runs before anything is opened. No hidden state except the signal flag
+ * of dcm_main.
  */
 #ifndef HRP_DCM_H
 #define HRP_DCM_H
@@ -268,6 +270,10 @@ typedef struct dcm_driver {
  * max_cycles. Returns 0, -EINVAL for bad configuration (the message names file and key), or
  * another negative code. */
 int dcm_main(dcm *d, const dcm_driver *drv, void *hw, char *err, size_t errlen);
+/* dcm_main for a DCM's main(): its error printed as "<name>: <message>" on stderr. Returns the
+ * process's exit status: 0, 2 for -EINVAL (the configuration or the arguments), 1 for any other
+ * failure. */
+int dcm_run(dcm *d, const dcm_driver *drv, void *hw);
 /* Asks dcm_main to finish the current cycle and return. */
 void dcm_stop(dcm *d);
 /* "<name>: message" on stderr, unless quiet. */

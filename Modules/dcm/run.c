@@ -258,3 +258,11 @@ int dcm_main(dcm *d, const dcm_driver *drv, void *hw, char *err, size_t errlen) 
   close_blocks(d);
   return 0;
 }
+
+int dcm_run(dcm *d, const dcm_driver *drv, void *hw) {
+  char err[1024];
+  const int rc = dcm_main(d, drv, hw, err, sizeof err);
+  if (rc == 0) return 0;
+  fprintf(stderr, "%s: %s\n", d->name ? d->name : "dcm", err);
+  return rc == -EINVAL ? 2 : 1;
+}

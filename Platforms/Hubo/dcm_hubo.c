@@ -12,6 +12,7 @@
  * Statistics per bus (frames, bits, load, errors) and per board (timeouts, faults, status, dead)
  * in dcm.stats.
  */
+#include "dcm/args.h"
 #include "dcm/dcm.h"
 #include "hubo_bus.h"
 
@@ -199,9 +200,21 @@ static void hubo_close(void *hw, dcm *d) {
 
 /* ---------------------------------------------------------------- main */
 
-static void usage(void) {
-  fprintf(stderr, "usage: PLATFORM=Hubo ./run_dcm [--robot NAME (sets ROBOT)] [--iface BUS=NAME]... [--rate HZ]\n"
-                  "                               [--cycles N] [--quiet]\n");
+/* --iface BUS=NAME: bus BUS (1..) on the interface NAME; given once per bus. */
+static int parse_iface(const char *v, void *out, char *err, size_t n) {
+  const char **iface = (const char **)out;
+  const char *eq = strchr(v, '=');
+  char bus[16];
+  if (!eq || eq == v || (size_t)(eq - v) >= sizeof bus || !eq[1]) {
+    snprintf(err, n, "'%s' is not BUS=NAME", v);
+    return -EINVAL;
+  }
+  memcpy(bus, v, (size_t)(eq - v));
+  bus[eq - v] = 0;
+  long b;
+  if (dcm_args_long(bus, 1, HT_BUS_MAX, &b, err, n) < 0) return -EINVAL;
+  iface[b - 1] = eq + 1;
+  return 0;
 }
 
 int main(int argc, char **argv) {
@@ -209,28 +222,19 @@ int main(int argc, char **argv) {
   static dcm D;
   D.name = "dcm_hubo";
   D.max_cycles = -1;
-  for (int i = 1; i < argc; i++) {
-    const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
-    if (!strcmp(a, "--quiet")) { D.quiet = 1; continue; }
-    if (!v) { usage(); return 2; }
-    if (!strcmp(a, "--robot")) setenv("ROBOT", v, 1);
-    else if (!strcmp(a, "--rate")) O.rate = atof(v);
-    else if (!strcmp(a, "--cycles")) D.max_cycles = atol(v);
-    else if (!strcmp(a, "--iface")) {
-      const int b = atoi(v);
-      const char *eq = strchr(v, '=');
-      if (!eq || b < 1 || b > HT_BUS_MAX) { usage(); return 2; }
-      O.iface[b - 1] = eq + 1;
-    } else { usage(); return 2; }
-    i++;
-  }
+  const char *robot = NULL;
+  const dcm_opt opts[] = {
+    { "--robot", DCM_OPT_STRING, &robot, 0, 0, "NAME", "the body (sets ROBOT)", NULL, 0 },
+    { "--iface", DCM_OPT_FUNC, O.iface, 0, 0, "BUS=NAME", "CAN interface of bus BUS (default: can.lua's); per bus",
+      parse_iface, 0 },
+    { "--rate", DCM_OPT_DOUBLE, &O.rate, 1, 1000, "HZ", "control rate (default: robot.lua's period)", NULL, 0 },
+    DCM_OPT_CYCLES(&D, "stop after N cycles (default: at a signal)"),
+    DCM_OPT_QUIET(&D),
+    DCM_OPT_END,
+  };
+  dcm_args(D.name, "PLATFORM=Hubo ./run_dcm", opts, argc, argv);
+  if (robot) setenv("ROBOT", robot, 1);
   static const dcm_driver drv = { hubo_configure, hubo_open_buses, hubo_enable, hubo_write_cycle, hubo_read_cycle,
                                   hubo_publish, hubo_stats, NULL, NULL, hubo_close };
-  char err[1024];
-  const int rc = dcm_main(&D, &drv, &O, err, sizeof err);
-  if (rc < 0) {
-    fprintf(stderr, "dcm_hubo: %s\n", err);
-    return rc == -EINVAL ? 2 : 1;
-  }
-  return 0;
+  return dcm_run(&D, &drv, &O);
 }

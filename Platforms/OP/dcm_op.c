@@ -11,6 +11,7 @@
  * (retried) -> enable: ping every servo, read the pose, hold it -> each cycle one sync write and
  * one bulk read per bus (op_bus.h).
  */
+#include "dcm/args.h"
 #include "dcm/dcm.h"
 #include "op_bus.h"
 
@@ -196,37 +197,27 @@ static void op_close(void *hw, dcm *d) {
 
 /* ---------------------------------------------------------------- main */
 
-static void usage(void) {
-  fprintf(stderr, "usage: PLATFORM=OP ./run_dcm [--robot NAME (sets ROBOT)] [--port PATH (bus 1)] [--rate HZ]\n"
-                  "                             [--baud N] [--cycles N] [--timeout-margin S] [--quiet]\n");
-}
-
 int main(int argc, char **argv) {
   static op_dcm O;
   static dcm D;
   O.margin = -1;
   D.name = "dcm_op";
   D.max_cycles = -1;
-  for (int i = 1; i < argc; i++) {
-    const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
-    if (!strcmp(a, "--quiet")) { D.quiet = 1; continue; }
-    if (!v) { usage(); return 2; }
-    if (!strcmp(a, "--port")) O.port = v;
-    else if (!strcmp(a, "--robot")) setenv("ROBOT", v, 1);
-    else if (!strcmp(a, "--rate")) O.rate = atof(v);
-    else if (!strcmp(a, "--baud")) O.baud = atoi(v);
-    else if (!strcmp(a, "--cycles")) D.max_cycles = atol(v);
-    else if (!strcmp(a, "--timeout-margin")) O.margin = atof(v);
-    else { usage(); return 2; }
-    i++;
-  }
+  const char *robot = NULL;
+  const dcm_opt opts[] = {
+    { "--robot", DCM_OPT_STRING, &robot, 0, 0, "NAME", "the body (sets ROBOT)", NULL, 0 },
+    { "--port", DCM_OPT_STRING, &O.port, 0, 0, "PATH", "serial port of bus 1 (default: robot.lua's)", NULL, 0 },
+    { "--rate", DCM_OPT_DOUBLE, &O.rate, 1, 1000, "HZ", "control rate (default: robot.lua's period)", NULL, 0 },
+    { "--baud", DCM_OPT_INT, &O.baud, 9600, 4500000, "N", "every bus's baud rate (default: robot.lua's)", NULL, 0 },
+    DCM_OPT_CYCLES(&D, "stop after N cycles (default: at a signal)"),
+    { "--timeout-margin", DCM_OPT_DOUBLE, &O.margin, 0, 1, "S",
+      "s added to each answer's wire time before a timeout (default: dcm.lua's)", NULL, 0 },
+    DCM_OPT_QUIET(&D),
+    DCM_OPT_END,
+  };
+  dcm_args(D.name, "PLATFORM=OP ./run_dcm", opts, argc, argv);
+  if (robot) setenv("ROBOT", robot, 1);
   static const dcm_driver drv = { op_configure, op_open, op_enable, op_write, op_read, op_publish,
                                   op_stats, NULL, NULL, op_close };
-  char err[1024];
-  int rc = dcm_main(&D, &drv, &O, err, sizeof err);
-  if (rc < 0) {
-    fprintf(stderr, "dcm_op: %s\n", err);
-    return rc == -EINVAL ? 2 : 1;
-  }
-  return 0;
+  return dcm_run(&D, &drv, &O);
 }

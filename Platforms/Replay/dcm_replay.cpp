@@ -7,6 +7,7 @@
 // tick, and a seek can go back).
 #include "replay_control.h"
 #include "replay_log.h"
+#include "dcm/args.h"
 #include "dcm/dcm.h"
 
 #include <opencv2/core.hpp>
@@ -208,12 +209,6 @@ void close_log(void *hw, dcm *) {
   replay_log_close(&h->L);
 }
 
-int usage() {
-  fprintf(stderr, "usage: dcm_replay --log FILE [--speed X] [--lockstep] [--lockstep-wait N] [--cycles N] [--paused] "
-                  "[--quiet]\n");
-  return 2;
-}
-
 }  // namespace
 
 int main(int argc, char **argv) {
@@ -221,28 +216,22 @@ int main(int argc, char **argv) {
   static dcm D;
   D.name = "dcm_replay";
   D.max_cycles = -1;
-  for (int i = 1; i < argc; i++) {
-    const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : nullptr;
-    if (!strcmp(a, "--quiet")) { D.quiet = 1; continue; }
-    if (!strcmp(a, "--lockstep")) { D.lockstep = 1; continue; }
-    if (!strcmp(a, "--paused")) { H.start_paused = 1; continue; }
-    if (!v) return usage();
-    if (!strcmp(a, "--log")) H.path = v;
-    else if (!strcmp(a, "--speed")) H.speed = atof(v);
-    else if (!strcmp(a, "--cycles")) D.max_cycles = atol(v);
-    else if (!strcmp(a, "--lockstep-wait")) { D.lockstep = 1; D.sync.start_with = atoi(v); }
-    else return usage();
-    i++;
-  }
-  if (!H.path) return usage();
-  if (H.speed < 0) return usage();
+  const dcm_opt opts[] = {
+    {"--log", DCM_OPT_STRING, &H.path, 0, 0, "FILE", "the recording to serve", nullptr, 1},
+    {"--speed", DCM_OPT_DOUBLE, &H.speed, 0.01, 1000, "X", "times the recorded rate (default: dcm.lua's)", nullptr,
+     0},
+    DCM_OPT_LOCKSTEP(&D),
+    DCM_OPT_CYCLES(&D, "stop after N cycles (default: at the end of the log)"),
+    {"--paused", DCM_OPT_FLAG, &H.start_paused, 0, 0, nullptr, "hold the first tick (the REPL's replay.resume())",
+     nullptr, 0},
+    DCM_OPT_QUIET(&D),
+    DCM_OPT_END,
+  };
+  dcm_args(D.name, "PLATFORM=Replay ./run_dcm", opts, argc, argv);
+  if (D.sync.start_with > 0) D.lockstep = 1;
   static const dcm_driver drv = { configure, open_log, enable, write, read, publish, nullptr, nullptr, published,
                                   close_log };
-  char err[1024];
-  const int rc = dcm_main(&D, &drv, &H, err, sizeof err);
-  if (rc < 0) {
-    fprintf(stderr, "dcm_replay: %s\n", err);
-    return rc == -EINVAL ? 2 : 1;
-  }
+  const int rc = dcm_run(&D, &drv, &H);
+  if (rc) return rc;
   return H.L.damage[0] ? 3 : 0;
 }

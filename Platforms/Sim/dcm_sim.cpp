@@ -23,6 +23,7 @@
 
 #include <cctype>
 #include <cerrno>
+#include <climits>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -33,6 +34,7 @@
 #include <vector>
 
 #include "camera_worker.h"
+#include "dcm/args.h"
 #include "dcm/dcm.h"
 #include "frames.h"
 #include "render.h"
@@ -41,19 +43,14 @@
 namespace {
 
 struct Options {
-  bool camera = true, profile = false;
+  int no_camera = 0, profile = 0;
   uint64_t seed = 1;
+  int nrobots = 1;                   // --robots N (robots of the body $ROBOT)
   std::vector<int> ids;
   std::vector<std::string> bodies;   // per robot ("": $ROBOT)
   double duration = -1;
   double report = 5;
 };
-
-void usage() {
-  fprintf(stderr,
-          "usage: dcm_sim [--lockstep] [--lockstep-wait N] [--seed N] [--robots N | --robots BODY,BODY,..] [--ids A,B,..]\n"
-          "               [--duration SIM_S] [--no-camera] [--report WALL_S] [--quiet] [--profile]\n");
-}
 
 // "a,b,c" -> {"a", "b", "c"}
 std::vector<std::string> split(const std::string &l) {
@@ -64,6 +61,38 @@ std::vector<std::string> split(const std::string &l) {
     k = e == std::string::npos ? l.size() : e + 1;
   }
   return v;
+}
+
+// --seed N
+int parse_seed(const char *v, void *out, char *err, size_t n) {
+  long seed;
+  if (dcm_args_long(v, 0, LONG_MAX, &seed, err, n) < 0) return -EINVAL;
+  *static_cast<uint64_t *>(out) = (uint64_t)seed;
+  return 0;
+}
+
+// --robots N | BODY,BODY,..: a number is a count of robots of the body $ROBOT, else the bodies
+int parse_robots(const char *v, void *out, char *err, size_t n) {
+  Options &o = *static_cast<Options *>(out);
+  if (!std::isdigit((unsigned char)v[0])) {
+    o.bodies = split(v);
+    return 0;
+  }
+  long k;
+  if (dcm_args_long(v, 1, DCM_ROBOTS_MAX, &k, err, n) < 0) return -EINVAL;
+  o.nrobots = (int)k;
+  return 0;
+}
+
+// --ids A,B,..: the robots' ids, in the order of the bodies
+int parse_ids(const char *v, void *out, char *err, size_t n) {
+  std::vector<int> &ids = *static_cast<std::vector<int> *>(out);
+  for (const std::string &id : split(v)) {
+    long k;
+    if (dcm_args_long(id.c_str(), 1, INT_MAX, &k, err, n) < 0) return -EINVAL;
+    ids.push_back((int)k);
+  }
+  return 0;
 }
 
 double cpu_seconds(clockid_t clock) {
@@ -244,7 +273,7 @@ int sim_enable(void *hw, dcm *d, char *err, size_t errlen) {
   }
   w.reset();
   for (int r = 0; r < d->nrobots; r++) publish_truth(s, r);
-  if (s.o.camera) s.worker.reset(new sim::CameraWorker(w, *s.ren, s.rob[0].hide));
+  if (!s.o.no_camera) s.worker.reset(new sim::CameraWorker(w, *s.ren, s.rob[0].hide));
   if (!d->quiet) {
     const sim::Params &p = s.params[0];
     printf("dcm_sim: %d robot(s) (", d->nrobots);
@@ -252,7 +281,7 @@ int sim_enable(void *hw, dcm *d, char *err, size_t errlen) {
     printf("), %s, seed %llu, physics %.1f ms x %d per %.0f ms tick, camera %s\n",
            d->lockstep ? "lockstep" : "real time", (unsigned long long)s.o.seed, p.timestep * 1e3,
            (int)std::lround(p.period / p.timestep), p.period * 1e3,
-           s.o.camera ? (std::to_string(p.cam_width) + "x" + std::to_string(p.cam_height) + " @ " +
+           !s.o.no_camera ? (std::to_string(p.cam_width) + "x" + std::to_string(p.cam_height) + " @ " +
                          std::to_string((int)p.cam_rate) + " Hz").c_str()
                       : "off");
     fflush(stdout);
@@ -388,56 +417,33 @@ int main(int argc, char **argv) {
   static dcm d;
   d.name = "dcm_sim";
   d.max_cycles = -1;
-  int nrobots = 1;
-  for (int i = 1; i < argc; i++) {
-    std::string a = argv[i];
-    auto next = [&]() -> const char * {
-      if (i + 1 >= argc) {
-        fprintf(stderr, "dcm_sim: %s needs a value\n", a.c_str());
-        usage();
-        return nullptr;
-      }
-      return argv[++i];
-    };
-    const char *v = nullptr;
-    if (a == "--lockstep") d.lockstep = 1;
-    else if (a == "--no-camera") s.o.camera = false;
-    else if (a == "--quiet") d.quiet = 1;
-    else if (a == "--profile") s.o.profile = true;
-    else if (a == "-h" || a == "--help") {
-      usage();
-      return 0;
-    } else if (a == "--seed" || a == "--robots" || a == "--ids" || a == "--duration" || a == "--report" ||
-               a == "--lockstep-wait") {
-      if (!(v = next())) return 2;
-      if (a == "--lockstep-wait") {   // lockstep whose first tick waits for N participants
-        d.lockstep = 1;
-        d.sync.start_with = atoi(v);
-      } else if (a == "--seed") s.o.seed = strtoull(v, nullptr, 10);
-      else if (a == "--robots" && std::isdigit((unsigned char)v[0])) nrobots = atoi(v);
-      else if (a == "--robots") s.o.bodies = split(v);
-      else if (a == "--duration") s.o.duration = atof(v);
-      else if (a == "--report") s.o.report = atof(v);
-      else
-        for (const std::string &id : split(v)) s.o.ids.push_back(atoi(id.c_str()));
-    } else {
-      fprintf(stderr, "dcm_sim: unknown argument '%s'\n", a.c_str());
-      usage();
-      return 2;
-    }
-  }
+  const dcm_opt opts[] = {
+      DCM_OPT_LOCKSTEP(&d),
+      {"--seed", DCM_OPT_FUNC, &s.o.seed, 0, 0, "N", "the world's random seed (default 1)", parse_seed, 0},
+      {"--robots", DCM_OPT_FUNC, &s.o, 0, 0, "N|BODY,..",
+       "N robots of the body $ROBOT, or one robot of each body named (default 1)", parse_robots, 0},
+      {"--ids", DCM_OPT_FUNC, &s.o.ids, 0, 0, "A,B,..", "the robots' ids (default: ROBOT_ID, ROBOT_ID+1, ..)",
+       parse_ids, 0},
+      {"--duration", DCM_OPT_DOUBLE, &s.o.duration, 0, HUGE_VAL, "SIM_S", "stop at this sim time (default: never)",
+       nullptr, 0},
+      {"--no-camera", DCM_OPT_FLAG, &s.o.no_camera, 0, 0, nullptr, "render no camera images", nullptr, 0},
+      {"--report", DCM_OPT_DOUBLE, &s.o.report, 0, HUGE_VAL, "WALL_S", "s of wall time between status lines (default 5)",
+       nullptr, 0},
+      DCM_OPT_QUIET(&d),
+      {"--profile", DCM_OPT_FLAG, &s.o.profile, 0, 0, nullptr,
+       "at exit: wall time per tick of each phase, CPU s per simulated s", nullptr, 0},
+      DCM_OPT_END,
+  };
+  dcm_args(d.name, "[PLATFORM=Sim] ./run_dcm", opts, argc, argv);
+  if (d.sync.start_with > 0) d.lockstep = 1;
+  int nrobots = s.o.nrobots;
   if (!s.o.bodies.empty()) nrobots = (int)s.o.bodies.size();
   if (!s.o.ids.empty() && !s.o.bodies.empty() && s.o.ids.size() != s.o.bodies.size()) {
     fprintf(stderr, "dcm_sim: %zu ids for %zu bodies\n", s.o.ids.size(), s.o.bodies.size());
     return 2;
   }
-  if (s.o.ids.empty()) {
-    if (nrobots < 1) {
-      fprintf(stderr, "dcm_sim: --robots must be at least 1\n");
-      return 2;
-    }
+  if (s.o.ids.empty())
     for (int k = 0; k < nrobots; k++) s.o.ids.push_back(shm_robot_id() + k);
-  }
   if (s.o.bodies.empty()) s.o.bodies.assign(s.o.ids.size(), "");
   dcm_driver drv = {};
   drv.configure = sim_configure;
@@ -450,11 +456,5 @@ int main(int argc, char **argv) {
   drv.idle = sim_idle;
   drv.published = sim_published;
   drv.close = sim_close;
-  char err[1024];
-  const int rc = dcm_main(&d, &drv, &s, err, sizeof err);
-  if (rc < 0) {
-    fprintf(stderr, "dcm_sim: %s\n", err);
-    return rc == -EINVAL ? 2 : 1;
-  }
-  return 0;
+  return dcm_run(&d, &drv, &s);
 }

@@ -160,6 +160,14 @@ void lens_row(const uint8_t *src, const LensMap &m, int v, int W, uint8_t *row) 
   }
 }
 
+// One YUYV pixel pair of the blur: the rounded means of n samples' sums of Y0, U, Y1, V.
+inline void put_mean(uint8_t *q, int y0, int us, int y1, int vs, int n) {
+  q[0] = (uint8_t)((y0 + n / 2) / n);
+  q[1] = (uint8_t)((us + n / 2) / n);
+  q[2] = (uint8_t)((y1 + n / 2) / n);
+  q[3] = (uint8_t)((vs + n / 2) / n);
+}
+
 #ifndef __SSE2__
 // One row of the blur, sample by sample: each pixel the rounded mean of its samples through the map
 // (clamped at the frame's edges), the pair's chroma that of its first pixel's samples.
@@ -186,11 +194,7 @@ void blur_row(const Develop &d, int n, const uint8_t *src, const int32_t *map, i
       us += c[1];
       vs += c[3];
     }
-    uint8_t *q = row + 2 * u;
-    q[0] = (uint8_t)((y0 + n / 2) / n);
-    q[1] = (uint8_t)((us + n / 2) / n);
-    q[2] = (uint8_t)((y1 + n / 2) / n);
-    q[3] = (uint8_t)((vs + n / 2) / n);
+    put_mean(row + 2 * u, y0, us, y1, vs, n);
   }
 }
 #else
@@ -332,11 +336,7 @@ void blur_row(const Develop &d, int n, const Planes &pl, int v, uint8_t *row) {
       us += ru[k][u];
       vs += rv[k][u];
     }
-    uint8_t *q = row + 2 * u;
-    q[0] = (uint8_t)((y0 + n / 2) / n);
-    q[1] = (uint8_t)((us + n / 2) / n);
-    q[2] = (uint8_t)((y1 + n / 2) / n);
-    q[3] = (uint8_t)((vs + n / 2) / n);
+    put_mean(row + 2 * u, y0, us, y1, vs, n);
   }
 }
 #endif

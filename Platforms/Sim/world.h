@@ -236,19 +236,18 @@ class World {
   std::normal_distribution<double> normal_{0.0, 1.0};
 };
 
-}  // namespace sim
-#endif
 
-namespace sim {
 // The project's root: $HRP_ROOT, else the source tree the binary was built from.
 std::string hrp_root();
 // Config/robots/<robot> under the root.
 std::string robot_dir(const std::string &robot);
 // Params from <root>/Config/<platform>/{sim,robot}.lua ($PLATFORM, default Sim) and the model from
 // the robot file they name. Throws std::runtime_error naming the file and the element or key.
-void load_all(Params *p, Model *m);
+// ball_kind: the ball the camera sees ("white", "orange"; "": the config's ball.kind).
+void load_all(Params *p, Model *m, const std::string &ball_kind = "");
 // Different bodies in one world: robots[r] names robot r's body ("" = $ROBOT); (*params)[r] are its
 // numbers (robot.lua, camera.lua and sim.lua with its layers), (*bodies)[r] its description. The
 // world's own numbers (physics, field, ball) are robot 0's. Throws naming the file and the key.
 void load_bodies(const std::vector<std::string> &robots, std::vector<Params> *params, std::vector<Body> *bodies);
 }  // namespace sim
+#endif

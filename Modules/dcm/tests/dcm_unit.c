@@ -1,11 +1,16 @@
 /* Tests of the DCM library (TAP): generated shm bindings, pacing statistics on a fake clock, the
  * guard (NaN refusal, hardness clamp, watchdog trip and resume, dead writer), the lockstep wait
- * (dead participants dropped, live ones waited for) and the config reader's errors. */
+ * (dead participants dropped, live ones waited for), the config reader's errors and the command-line
+ * parser (strict numbers, ranges, unknown and missing arguments, the usage, the exit statuses). */
+#include "dcm/args.h"
 #include "dcm/dcm.h"
 #include "tap.h"
 
+#include <errno.h>
+#include <limits.h>
 #include <math.h>
 #include <signal.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -236,6 +241,29 @@ static void idle_count(void *ctx, int alone) {
   if (++*c->n >= 5) *c->stop = 1;
 }
 
+/* A participant in a child process that reports tick done on slot 0 after `after` s; returns its pid. */
+static pid_t finish_later(dcm_blk_sync *y, uint32_t tick, double after) {
+  const pid_t pid = fork();
+  if (pid == 0) {
+    struct timespec ts = { (time_t)after, (long)((after - (time_t)after) * 1e9) };
+    nanosleep(&ts, NULL);
+    __atomic_store_n(&y->done_tick[0], tick, __ATOMIC_RELEASE);
+    shm_fetch_add_u32(y->done_count, 1);
+    shm_futex_wake(y->done_count);
+    _exit(0);
+  }
+  return pid;
+}
+
+/* A lockstep over one sync block, quick to poll and to drop the dead (tests wait less). */
+static void lockstep_of(dcm_lockstep *l, dcm_blk_sync *y) {
+  memset(l, 0, sizeof *l);
+  l->n = 1;
+  l->sync[0] = y;
+  l->spin = 50e-6;
+  l->drop_after = 0.05;
+}
+
 static void test_lockstep(void) {
   char err[512] = "";
   dcm_blk_sync y;
@@ -248,11 +276,7 @@ static void test_lockstep(void) {
     y.done_tick[k] = 0;
   }
   dcm_lockstep l;
-  memset(&l, 0, sizeof l);
-  l.n = 1;
-  l.sync[0] = &y;
-  l.spin = 50e-6;
-  l.drop_after = 0.05;
+  lockstep_of(&l, &y);
   dcm_lockstep_start(&l, 5);
   check(*y.lockstep == 1, "lockstep on");
 
@@ -279,15 +303,7 @@ static void test_lockstep(void) {
   y.done_tick[0] = 5;
   y.wake_tick[0] = 6;
   dcm_lockstep_publish(&l, 6);
-  pid_t worker = fork();
-  if (worker == 0) {
-    struct timespec ts = { 0, 200000000 };
-    nanosleep(&ts, NULL);
-    __atomic_store_n(&y.done_tick[0], 6u, __ATOMIC_RELEASE);
-    shm_fetch_add_u32(y.done_count, 1);
-    shm_futex_wake(y.done_count);
-    _exit(0);
-  }
+  const pid_t worker = finish_later(&y, 6, 0.2);
   t0 = shm_now();
   rc = dcm_lockstep_wait(&l, 6, NULL, NULL, NULL);
   dt = shm_now() - t0;
@@ -300,15 +316,7 @@ static void test_lockstep(void) {
   /* a participant that wants a later tick is not waited for */
   y.wake_tick[0] = 100;
   /* a helper finishes tick 7 after 2 s, so a wait that (wrongly) waited for it would end too, later */
-  pid_t late = fork();
-  if (late == 0) {
-    struct timespec ts = { 2, 0 };
-    nanosleep(&ts, NULL);
-    __atomic_store_n(&y.done_tick[0], 7u, __ATOMIC_RELEASE);
-    shm_fetch_add_u32(y.done_count, 1);
-    shm_futex_wake(y.done_count);
-    _exit(0);
-  }
+  const pid_t late = finish_later(&y, 7, 2);
   rc = dcm_lockstep_wait(&l, 7, NULL, NULL, NULL);
   const uint32_t at_return = __atomic_load_n(&y.done_tick[0], __ATOMIC_ACQUIRE);
   kill(late, SIGKILL);
@@ -322,11 +330,7 @@ static void test_lockstep(void) {
 
   /* start_with: a fresh clock waits for that many participants; once it ran, one is enough */
   dcm_lockstep f;
-  memset(&f, 0, sizeof f);
-  f.n = 1;
-  f.sync[0] = &y;
-  f.spin = 50e-6;
-  f.drop_after = 0.05;
+  lockstep_of(&f, &y);
   f.start_with = 2;
   y.pid[0] = (int32_t)getpid();
   y.done_tick[0] = 0;
@@ -470,6 +474,219 @@ static void test_config(void) {
   unsetenv("HRP_ROOT");
 }
 
+/* ---------------------------------------------------------------- command line */
+
+/* What a test table writes into. */
+struct cli {
+  int quiet, n;
+  long cycles;
+  double rate;
+  const char *port;
+  int buses[4];
+};
+
+/* A DCM_OPT_FUNC option: "BUS=NAME" with BUS 1..4; counts each bus given. */
+static int parse_bus(const char *v, void *out, char *err, size_t n) {
+  int *buses = out;
+  long b;
+  const char *eq = strchr(v, '=');
+  if (!eq) {
+    snprintf(err, n, "'%s' is not BUS=NAME", v);
+    return -EINVAL;
+  }
+  char num[8] = "";
+  snprintf(num, sizeof num, "%.*s", (int)(eq - v), v);
+  if (dcm_args_long(num, 1, 4, &b, err, n) < 0) return -EINVAL;
+  buses[b - 1]++;
+  return 0;
+}
+
+static int g_cli_required;   /* the tests of a required option set it */
+
+/* Parses the NULL-terminated words into c (zeroed first, the defaults of a DCM's main). */
+static int cli_parse(struct cli *c, char *err, size_t n, ...) {
+  memset(c, 0, sizeof *c);
+  c->cycles = -1;
+  const dcm_opt opts[] = {
+    { "--quiet", DCM_OPT_FLAG, &c->quiet, 0, 0, NULL, "no log lines", NULL, 0 },
+    { "--n", DCM_OPT_INT, &c->n, -3, 8, "N", "a small integer", NULL, 0 },
+    { "--cycles", DCM_OPT_LONG, &c->cycles, 0, (double)LONG_MAX, "N", "cycles", NULL, 0 },
+    { "--rate", DCM_OPT_DOUBLE, &c->rate, 1, 1000, "HZ", "control rate", NULL, 0 },
+    { "--port", DCM_OPT_STRING, &c->port, 0, 0, "PATH", "serial port", NULL, g_cli_required },
+    { "--bus", DCM_OPT_FUNC, c->buses, 0, 0, "BUS=NAME", "a bus", parse_bus, 0 },
+    DCM_OPT_END,
+  };
+  char *argv[16] = { "dcm_test" };
+  int argc = 1;
+  va_list ap;
+  va_start(ap, n);
+  for (const char *a; argc < 15 && (a = va_arg(ap, const char *));) argv[argc++] = (char *)a;
+  va_end(ap);
+  err[0] = 0;
+  return dcm_args_parse(opts, argc, argv, err, n);
+}
+
+/* Runs dcm_args in a child on the words; returns its exit status, its stdout and stderr in out, err. */
+static int cli_exit(char *out, size_t outlen, char *errs, size_t errlen, char *const *words) {
+  char po[] = "/tmp/dcm_unit_outXXXXXX", pe[] = "/tmp/dcm_unit_errXXXXXX";
+  const int fo = mkstemp(po), fe = mkstemp(pe);
+  fflush(stdout);
+  const pid_t pid = fork();
+  if (pid == 0) {
+    dup2(fo, 1);
+    dup2(fe, 2);
+    double rate = 0;
+    int quiet = 0;
+    const dcm_opt opts[] = {
+      { "--rate", DCM_OPT_DOUBLE, &rate, 1, 1000, "HZ", "control rate", NULL, 0 },
+      { "--quiet", DCM_OPT_FLAG, &quiet, 0, 0, NULL, "no log lines", NULL, 0 },
+      DCM_OPT_END,
+    };
+    int argc = 0;
+    while (words[argc]) argc++;
+    dcm_args("dcm_test", "PLATFORM=T ./run_dcm", opts, argc, words);
+    printf("parsed rate %g\n", rate);
+    fflush(stdout);
+    _exit(0);   /* no atexit handlers of the parent's (its TAP plan) */
+  }
+  int st = -1;
+  waitpid(pid, &st, 0);
+  const ssize_t no = pread(fo, out, outlen - 1, 0), ne = pread(fe, errs, errlen - 1, 0);
+  out[no > 0 ? no : 0] = 0;
+  errs[ne > 0 ? ne : 0] = 0;
+  close(fo);
+  close(fe);
+  unlink(po);
+  unlink(pe);
+  return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+}
+
+/* A TAP detail is one line: the text up to its first newline (a copy: the text itself is checked
+ * in the same call). */
+static const char *first_line(const char *text) {
+  static char line[256];
+  snprintf(line, sizeof line, "%.*s", (int)strcspn(text, "\n"), text);
+  return line;
+}
+
+static void test_args(void) {
+  struct cli c;
+  char err[256];
+  int rc = cli_parse(&c, err, sizeof err, NULL);
+  check(rc == 0 && c.cycles == -1 && c.rate == 0 && !c.port && !c.quiet, "no arguments: the defaults stay");
+  rc = cli_parse(&c, err, sizeof err, "--quiet", "--n", "-3", "--cycles", "9000000000", "--rate", "125.5", "--port",
+                 "/dev/ttyUSB0", "--bus", "2=can1", "--bus", "4=can3", NULL);
+  tap_ok(rc == 0 && c.quiet == 1 && c.n == -3 && c.cycles == 9000000000L && c.rate == 125.5 &&
+             !strcmp(c.port, "/dev/ttyUSB0") && c.buses[1] == 1 && c.buses[3] == 1,
+         "good values of every kind", err);
+  rc = cli_parse(&c, err, sizeof err, "--rate", "1e2", "--rate", "1000", "--n", "+8", NULL);
+  check(rc == 0 && c.rate == 1000 && c.n == 8, "the ends of a range are inside it; given twice, the last counts");
+
+  /* garbage: the whole argument must be a number of the kind */
+  const char *not_int[] = { "abc", "12abc", "", " 12", "0x10", "1.5", "1e3", "--quiet" };
+  int ok = 1;
+  for (size_t k = 0; k < sizeof not_int / sizeof not_int[0]; k++) {
+    rc = cli_parse(&c, err, sizeof err, "--n", not_int[k], NULL);
+    char want[64];
+    snprintf(want, sizeof want, "--n: '%s' is not an integer", not_int[k]);
+    if (rc != -EINVAL || strcmp(err, want) || c.n != 0) {
+      ok = 0;
+      tap_ok(0, "garbage for an integer is refused", err);
+    }
+  }
+  if (ok) check(1, "garbage for an integer is refused, naming the option and the value (no silent 0)");
+  const char *not_num[] = { "fast", "12x", "", " 5", "nan", "inf", "0x1p3", "1..2", "." };
+  ok = 1;
+  for (size_t k = 0; k < sizeof not_num / sizeof not_num[0]; k++) {
+    rc = cli_parse(&c, err, sizeof err, "--rate", not_num[k], NULL);
+    if (rc != -EINVAL || !strstr(err, "--rate: '") || !strstr(err, "is not a number") || c.rate != 0) {
+      ok = 0;
+      tap_ok(0, "garbage for a number is refused", err);
+    }
+  }
+  if (ok) check(1, "garbage for a number is refused: letters, blanks, nan, inf, hex");
+
+  /* out of range */
+  rc = cli_parse(&c, err, sizeof err, "--n", "9", NULL);
+  tap_ok(rc == -EINVAL && !strcmp(err, "--n: 9 is out of range (-3..8)"), "an integer above its range", err);
+  rc = cli_parse(&c, err, sizeof err, "--rate", "0.5", NULL);
+  tap_ok(rc == -EINVAL && !strcmp(err, "--rate: 0.5 is out of range (1..1000)"), "a number below its range", err);
+  rc = cli_parse(&c, err, sizeof err, "--cycles", "-1", NULL);
+  tap_ok(rc == -EINVAL && !strcmp(err, "--cycles: -1 is out of range (>= 0)"), "a range open above", err);
+  rc = cli_parse(&c, err, sizeof err, "--cycles", "99999999999999999999", NULL);
+  tap_ok(rc == -EINVAL && strstr(err, "out of range") && c.cycles == -1, "beyond a long: out of range, not LONG_MAX", err);
+  rc = cli_parse(&c, err, sizeof err, "--rate", "1e999", NULL);
+  tap_ok(rc == -EINVAL && strstr(err, "out of range"), "beyond a double: out of range", err);
+  rc = cli_parse(&c, err, sizeof err, "--bus", "7=can0", NULL);
+  tap_ok(rc == -EINVAL && !strcmp(err, "--bus: 7 is out of range (1..4)"), "a parser's own error is named by its option",
+         err);
+  rc = cli_parse(&c, err, sizeof err, "--bus", "can0", NULL);
+  tap_ok(rc == -EINVAL && !strcmp(err, "--bus: 'can0' is not BUS=NAME"), "a parser's own message", err);
+  rc = cli_parse(&c, err, sizeof err, "--port", "", NULL);
+  tap_ok(rc == -EINVAL && !strcmp(err, "--port: an empty value"), "an empty string is refused", err);
+
+  /* unknown, missing */
+  rc = cli_parse(&c, err, sizeof err, "--quiet", "--rtae", "125", NULL);
+  tap_ok(rc == -EINVAL && !strcmp(err, "unknown argument '--rtae'"), "an unknown argument is named", err);
+  rc = cli_parse(&c, err, sizeof err, "125", NULL);
+  tap_ok(rc == -EINVAL && !strcmp(err, "unknown argument '125'"), "a stray value is an unknown argument", err);
+  rc = cli_parse(&c, err, sizeof err, "--quiet", "--rate", NULL);
+  tap_ok(rc == -EINVAL && !strcmp(err, "--rate needs a value (HZ)"), "a missing value is named", err);
+  g_cli_required = 1;
+  rc = cli_parse(&c, err, sizeof err, "--quiet", NULL);
+  tap_ok(rc == -EINVAL && !strcmp(err, "--port PATH is required"), "a missing required option is named", err);
+  rc = cli_parse(&c, err, sizeof err, "--port", "/dev/x", NULL);
+  check(rc == 0 && !strcmp(c.port, "/dev/x"), "a required option given");
+
+  /* --help */
+  rc = cli_parse(&c, err, sizeof err, "--help", NULL);
+  check(rc == DCM_ARGS_HELP, "--help asks for the usage");
+  rc = cli_parse(&c, err, sizeof err, "--n", "2", "-h", "--bogus", NULL);
+  check(rc == DCM_ARGS_HELP && c.n == 2, "-h asks for the usage; nothing after it is read");
+  g_cli_required = 0;
+
+  /* the usage, from the table */
+  const dcm_opt opts[] = {
+    { "--log", DCM_OPT_STRING, &c.port, 0, 0, "FILE", "the recording", NULL, 1 },
+    { "--rate", DCM_OPT_DOUBLE, &c.rate, 1, 1000, "HZ", "control rate", NULL, 0 },
+    { "--cycles", DCM_OPT_LONG, &c.cycles, 0, (double)LONG_MAX, "N", "cycles", NULL, 0 },
+    { "--quiet", DCM_OPT_FLAG, &c.quiet, 0, 0, NULL, "no log lines", NULL, 0 },
+    DCM_OPT_END,
+  };
+  char usage[1024];
+  const int need = dcm_args_usage("PLATFORM=T ./run_dcm", opts, usage, sizeof usage);
+  tap_ok(need == (int)strlen(usage) && !strncmp(usage, "usage: PLATFORM=T ./run_dcm --log FILE [options]\n", 49) &&
+             strstr(usage, "\n  --rate HZ   control rate [1..1000]\n") && strstr(usage, "\n  --cycles N  cycles [>= 0]\n") &&
+             strstr(usage, "\n  --quiet     no log lines\n") && strstr(usage, "\n  -h, --help  this text\n"),
+         "the usage: required options first, a line per option with its range", first_line(usage));
+  char small[16];
+  check(dcm_args_usage("x", opts, small, sizeof small) == need - (int)strlen("PLATFORM=T ./run_dcm") + 1 &&
+            strlen(small) == sizeof small - 1,
+        "a short buffer: the usage is cut, the length needed returned");
+
+  /* dcm_args: the exit statuses and where the text goes */
+  char out[2048], errs[2048];
+  char *good[] = { "dcm_test", "--rate", "50", NULL };
+  rc = cli_exit(out, sizeof out, errs, sizeof errs, good);
+  check(rc == 0 && !strcmp(out, "parsed rate 50\n") && !errs[0], "good arguments: dcm_args returns");
+  char *bad[] = { "dcm_test", "--rate", "fast", NULL };
+  rc = cli_exit(out, sizeof out, errs, sizeof errs, bad);
+  tap_ok(rc == 2 && !out[0] && !strncmp(errs, "dcm_test: --rate: 'fast' is not a number\nusage: PLATFORM=T ./run_dcm", 66),
+         "a bad argument: one line naming it, the usage on stderr, exit status 2", first_line(errs));
+  char *unknown[] = { "dcm_test", "--rtae", NULL };
+  rc = cli_exit(out, sizeof out, errs, sizeof errs, unknown);
+  tap_ok(rc == 2 && !strncmp(errs, "dcm_test: unknown argument '--rtae'\nusage:", 42), "an unknown argument: exit status 2",
+         first_line(errs));
+  char *missing[] = { "dcm_test", "--quiet", "--rate", NULL };
+  rc = cli_exit(out, sizeof out, errs, sizeof errs, missing);
+  tap_ok(rc == 2 && !strncmp(errs, "dcm_test: --rate needs a value (HZ)\n", 36), "a missing value: exit status 2",
+         first_line(errs));
+  char *help[] = { "dcm_test", "--help", NULL };
+  rc = cli_exit(out, sizeof out, errs, sizeof errs, help);
+  tap_ok(rc == 0 && !strncmp(out, "usage: PLATFORM=T ./run_dcm [options]\n", 38) && strstr(out, "--rate HZ") && !errs[0],
+         "--help: the usage on stdout, exit status 0", first_line(out));
+}
+
 int main(void) {
   /* Tests/run_all.sh gives every run an id of its own; by hand, one away from a running robot */
   g_id = getenv("ROBOT_ID") ? shm_robot_id() : 9000 + (int)(getpid() % 500);
@@ -480,5 +697,6 @@ int main(void) {
   test_lockstep();
   remove_blocks();
   test_config();
+  test_args();
   return tap_done();
 }

@@ -24,6 +24,7 @@
 //   i32 nrobots, then per other robot f64 x, y (robot frame: the torso's ground point), u, v (px of
 //       that ground point), visible (1 if it projects inside the image), team (the sim's: 1 or 2),
 //   then width * height * 2 bytes of YUYV.
+#include <climits>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -32,6 +33,7 @@
 
 #include "render.h"
 #include "stance.h"
+#include "tool_args.h"
 #include "world.h"
 
 namespace {
@@ -63,38 +65,27 @@ bool in_frame(const sim::Camera &c, const sim::Vec3 &p, double *u, double *v) {
 }  // namespace
 
 int main(int argc, char **argv) {
-  std::string out;
-  int count = 100, others = 3;
-  uint64_t seed = 1;
+  const char *out_arg = nullptr;
+  int count = 100, others = 3, walk = 0;
+  long seed_arg = 1;
   std::string ball_kind;
-  bool walk = false;
-  for (int i = 1; i < argc; i++) {
-    std::string a = argv[i];
-    if (i + 1 >= argc) {
-      fprintf(stderr, "usage: sim_ball_frames --out FILE [--count N] [--seed N] [--others K]\n");
-      return 2;
-    }
-    if (a == "--out") out = argv[++i];
-    else if (a == "--count") count = atoi(argv[++i]);
-    else if (a == "--seed") seed = strtoull(argv[++i], nullptr, 10);
-    else if (a == "--others") others = atoi(argv[++i]);
-    else if (a == "--ball") ball_kind = argv[++i];
-    else if (a == "--walk") walk = atoi(argv[++i]) != 0;
-    else {
-      fprintf(stderr, "sim_ball_frames: unknown option %s\n", a.c_str());
-      return 2;
-    }
-  }
-  if (out.empty() || count < 1 || others < 0 || others > 8 ||
-      !(ball_kind.empty() || ball_kind == "white" || ball_kind == "orange")) {
-    fprintf(stderr, "sim_ball_frames: --out FILE needed, --count >= 1, --others 0..8, --ball white|orange\n");
-    return 2;
-  }
+  const dcm_opt opts[] = {
+      {"--out", DCM_OPT_STRING, &out_arg, 0, 0, "FILE", "the frames and their truth", nullptr, 1},
+      {"--count", DCM_OPT_INT, &count, 1, 1e7, "N", "frames (default 100)", nullptr, 0},
+      {"--seed", DCM_OPT_LONG, &seed_arg, 0, (double)LONG_MAX, "N", "picks everything (default 1)", nullptr, 0},
+      {"--others", DCM_OPT_INT, &others, 0, 8, "K", "other robots on the field (default 3)", nullptr, 0},
+      {"--ball", DCM_OPT_FUNC, &ball_kind, 0, 0, "white|orange", "the ball (default: the sim config's)",
+       sim::parse_ball_kind, 0},
+      {"--walk", DCM_OPT_INT, &walk, 0, 1, "0|1", "1: the robot walking (default 0)", nullptr, 0},
+      DCM_OPT_END,
+  };
+  dcm_args("sim_ball_frames", "sim_ball_frames", opts, argc, argv);
+  const std::string out = out_arg;
+  const uint64_t seed = (uint64_t)seed_arg;
   try {
     sim::Params p;
     sim::Model m;
-    sim::load_all(&p, &m);
-    if (!ball_kind.empty()) p.ball_kind = ball_kind;
+    sim::load_all(&p, &m, ball_kind);
     // teams alternate: this robot team 1, the others 2, 1, 2, ...
     p.robot_team.clear();
     for (int r = 0; r <= others; r++) p.robot_team.push_back(1 + r % 2);

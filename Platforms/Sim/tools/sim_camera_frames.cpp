@@ -12,6 +12,7 @@
 // --bench prints the CPU time per frame of each camera (this thread's, so other load matters less).
 #include <time.h>
 
+#include <climits>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -21,6 +22,7 @@
 
 #include "render.h"
 #include "stance.h"
+#include "tool_args.h"
 #include "world.h"
 #include "yuyv_png.h"
 
@@ -41,35 +43,29 @@ void blit(const uint8_t *src, int W, int u0, int v0, int w, int h, uint8_t *dst,
 }  // namespace
 
 int main(int argc, char **argv) {
-  std::string out, montage, ball_kind;
-  int nscenes = 8, montage_scene = -1;
-  uint64_t seed = 1;
-  bool bench = false;
-  for (int i = 1; i < argc; i++) {
-    const std::string a = argv[i];
-    const bool more = i + 1 < argc;
-    if (a == "--out" && more) out = argv[++i];
-    else if (a == "--montage" && more) montage = argv[++i];
-    else if (a == "--scenes" && more) nscenes = atoi(argv[++i]);
-    else if (a == "--montage-scene" && more) montage_scene = atoi(argv[++i]);
-    else if (a == "--seed" && more) seed = strtoull(argv[++i], nullptr, 10);
-    else if (a == "--ball" && more) ball_kind = argv[++i];
-    else if (a == "--bench") bench = true;
-    else {
-      fprintf(stderr, "usage: sim_camera_frames [--out DIR] [--scenes N] [--seed S] [--ball white|orange] "
-                      "[--montage FILE] [--montage-scene K] [--bench]\n");
-      return 2;
-    }
-  }
-  if (!ball_kind.empty() && ball_kind != "white" && ball_kind != "orange") {
-    fprintf(stderr, "sim_camera_frames: --ball is 'white' or 'orange', not '%s'\n", ball_kind.c_str());
-    return 2;
-  }
+  const char *out_arg = "", *montage_arg = "";
+  std::string ball_kind;
+  int nscenes = 8, montage_scene = -1, bench = 0;
+  long seed_arg = 1;
+  const dcm_opt opts[] = {
+      {"--out", DCM_OPT_STRING, &out_arg, 0, 0, "DIR", "DIR/scene_NN.png: clean | realistic", nullptr, 0},
+      {"--scenes", DCM_OPT_INT, &nscenes, 1, 1e6, "N", "scenes (default 8)", nullptr, 0},
+      {"--seed", DCM_OPT_LONG, &seed_arg, 0, (double)LONG_MAX, "S", "picks the scenes (default 1)", nullptr, 0},
+      {"--ball", DCM_OPT_FUNC, &ball_kind, 0, 0, "white|orange", "the ball (default: the sim config's)",
+       sim::parse_ball_kind, 0},
+      {"--montage", DCM_OPT_STRING, &montage_arg, 0, 0, "FILE", "one half-size PNG of a scene", nullptr, 0},
+      {"--montage-scene", DCM_OPT_INT, &montage_scene, 0, 1e6, "K",
+       "the montage's scene (default: the first with the ball well in view)", nullptr, 0},
+      {"--bench", DCM_OPT_FLAG, &bench, 0, 0, nullptr, "CPU time per frame of each camera", nullptr, 0},
+      DCM_OPT_END,
+  };
+  dcm_args("sim_camera_frames", "sim_camera_frames", opts, argc, argv);
+  const std::string out = out_arg, montage = montage_arg;
+  const uint64_t seed = (uint64_t)seed_arg;
   try {
     sim::Params p;
     sim::Model m;
-    sim::load_all(&p, &m);
-    if (!ball_kind.empty()) p.ball_kind = ball_kind;
+    sim::load_all(&p, &m, ball_kind);
     sim::Params pc = p, pr = p;
     pc.realism.on = false;
     pr.realism.on = true;

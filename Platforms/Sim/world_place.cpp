@@ -1,0 +1,84 @@
+// world_place: teleports -- a robot placed upright on the carpet in a given pose, the ball placed
+// rolling -- the reset to the start, and pushes on a torso.
+#include <algorithm>
+#include <cmath>
+
+#include "world_internal.h"
+
+namespace sim {
+
+using namespace world_internal;
+
+void World::place_robot(int r, double x, double y, double yaw, const double *q) {
+  Robot &rb = robots_[r];
+  const Model &m = *rb.m;
+  const int nl = (int)m.links.size();
+  std::vector<double> ql(nl, 0.0);
+  for (size_t j = 0; j < rb.jlink.size(); j++) {
+    const Link &l = m.links[rb.jlink[j]];
+    double v = q ? q[j] : rb.cmd[j];
+    ql[rb.jlink[j]] = std::min(std::max(v, l.lower), l.upper);
+  }
+  std::vector<Vec3> pos(nl);
+  std::vector<Mat3> rot(nl);
+  double zmin = 1e9;
+  for (int i = 0; i < nl; i++) {
+    const Link &l = m.links[i];
+    if (l.parent < 0) {
+      pos[i] = Vec3::Zero();
+      rot[i] = rot_z(yaw);
+    } else {
+      pos[i] = pos[l.parent] + rot[l.parent] * l.origin;
+      rot[i] = rot[l.parent] * l.origin_rot * Eigen::AngleAxisd(ql[i], l.axis).toRotationMatrix();
+    }
+    for (const Box &b : l.boxes) {
+      for (int c = 0; c < 8; c++) {
+        Vec3 h((c & 1 ? 0.5 : -0.5) * b.size.x(), (c & 2 ? 0.5 : -0.5) * b.size.y(),
+               (c & 4 ? 0.5 : -0.5) * b.size.z());
+        zmin = std::min(zmin, (pos[i] + rot[i] * (b.pos + b.rot * h)).z());
+      }
+    }
+  }
+  const Vec3 shift(x, y, -zmin + 0.0002);
+  for (int i = 0; i < nl; i++) {
+    dBodyID b = rb.body[i];
+    set_body_pose(b, pos[i] + shift + rot[i] * m.links[i].com, rot[i]);
+    dBodySetLinearVel(b, 0, 0, 0);
+    dBodySetAngularVel(b, 0, 0, 0);
+  }
+  rb.vel_start = Vec3::Zero();
+  rb.push_left = 0;
+}
+
+void World::place_ball(double x, double y, double vx, double vy) {
+  const double r = p_.ball_diameter / 2;
+  dBodySetPosition(ball_, x, y, r);
+  dBodySetLinearVel(ball_, vx, vy, 0);
+  dBodySetAngularVel(ball_, -vy / r, vx / r, 0);   // rolling without slipping
+  const dQuaternion q0 = {1, 0, 0, 0};
+  dBodySetQuaternion(ball_, q0);
+  in_goal_ = 0;
+  ball_touch_ = -1;
+}
+
+void World::reset() {
+  const int nstart = (int)p_.start.size() / 3;
+  for (int r = 0; r < nrobots(); r++) {
+    const double *s = &p_.start[3 * (r % nstart)];
+    place_robot(r, s[0], s[1], s[2]);
+  }
+  place_ball(p_.ball_start[0], p_.ball_start[1]);
+  score_[0] = score_[1] = 0;
+  // a reset world evolves the same whenever the reset happens: restart every random sequence
+  dRandSetSeed((unsigned long)(seed_ & 0xffffffffu));
+  rng_.seed(seed_);
+  normal_.reset();
+}
+
+void World::push(int r, double fx, double fy, double duration) {
+  Robot &rb = robots_[r];
+  rb.push_force = Vec3(fx, fy, 0);
+  rb.push_left = duration;
+}
+
+}  // namespace sim

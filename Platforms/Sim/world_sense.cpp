@@ -1,0 +1,108 @@
+// world_sense: what the robots sense (quantised joints, IMU with its noise, foot forces) and the
+// truth the tests and the referee read: poses of links, torsos, the camera and the ball.
+#include <algorithm>
+#include <cmath>
+
+#include "world_internal.h"
+
+namespace sim {
+
+Vec3 World::body_pos(dBodyID b) const {
+  const dReal *p = dBodyGetPosition(b);
+  return Vec3(p[0], p[1], p[2]);
+}
+
+Mat3 World::body_rot(dBodyID b) const {
+  const dReal *R = dBodyGetRotation(b);
+  Mat3 M;
+  M << R[0], R[1], R[2], R[4], R[5], R[6], R[8], R[9], R[10];
+  return M;
+}
+
+std::vector<double> World::joint_positions(int r) const {
+  const Robot &rb = robots_[r];
+  std::vector<double> q(rb.jlink.size());
+  for (size_t j = 0; j < q.size(); j++) q[j] = dJointGetHingeAngle(rb.hinge[rb.jlink[j]]);
+  return q;
+}
+
+void World::sense(int r, Sensors *s) {
+  Robot &rb = robots_[r];
+  const size_t nj = rb.jlink.size();
+  s->position.resize(nj);
+  s->velocity.resize(nj);
+  s->load.resize(nj);
+  for (size_t j = 0; j < nj; j++) {
+    const Servo &sv = (*rb.servo)[j];
+    const double qstep = 2 * M_PI / sv.resolution, vstep = sv.speed_unit;
+    const int li = rb.jlink[j];
+    dJointID h = rb.hinge[li];
+    s->position[j] = std::round(dJointGetHingeAngle(h) / qstep) * qstep;
+    s->velocity[j] = std::round(dJointGetHingeAngleRate(h) / vstep) * vstep;
+    dVector3 ax;
+    dJointGetHingeAxis(h, ax);
+    const dJointFeedback &f = rb.fb[li];
+    s->load[j] = f.t1[0] * ax[0] + f.t1[1] * ax[1] + f.t1[2] * ax[2];
+  }
+  const Mat3 R = body_rot(rb.body[0]);
+  const dReal *w = dBodyGetAngularVel(rb.body[0]);
+  Vec3 g = R.transpose() * Vec3(w[0], w[1], w[2]);
+  for (int k = 0; k < 3; k++) {
+    s->gyro[k] = g[k] + p_.gyro_noise * normal_(rng_);
+    s->accel[k] = rb.accel[k] + p_.accel_noise * normal_(rng_);
+  }
+  s->angle[0] = std::atan2(R(2, 1), R(2, 2));
+  s->angle[1] = std::asin(std::min(1.0, std::max(-1.0, -R(2, 0))));
+  s->angle[2] = std::atan2(R(1, 0), R(0, 0));
+  s->foot_force[0] = rb.foot_acc[0];
+  s->foot_force[1] = rb.foot_acc[1];
+  sense_ft(rb, s->ft);
+}
+
+void World::link_pose(int r, int link, Vec3 *pos, Mat3 *rot) const {
+  dBodyID b = robots_[r].body[link];
+  *rot = body_rot(b);
+  *pos = body_pos(b) - *rot * robots_[r].m->links[link].com;
+}
+
+Truth World::truth(int r) const {
+  Truth t;
+  Vec3 p;
+  Mat3 R;
+  link_pose(r, 0, &p, &R);
+  t.x = p.x();
+  t.y = p.y();
+  t.z = p.z();
+  t.yaw = std::atan2(R(1, 0), R(0, 0));
+  t.pitch = std::asin(std::min(1.0, std::max(-1.0, -R(2, 0))));
+  t.roll = std::atan2(R(2, 1), R(2, 2));
+  t.fallen = std::acos(std::min(1.0, std::max(-1.0, R(2, 2)))) > p_.fall_angle;
+  const dReal *bp = dBodyGetPosition(ball_), *bv = dBodyGetLinearVel(ball_);
+  t.ball[0] = bp[0];
+  t.ball[1] = bp[1];
+  t.ball[2] = bp[2];
+  t.ball[3] = bv[0];
+  t.ball[4] = bv[1];
+  return t;
+}
+
+Vec3 World::ball_position() const { return body_pos(ball_); }
+
+Mat3 World::ball_rotation() const { return body_rot(ball_); }
+
+void World::camera_pose(int r, Vec3 *pos, Mat3 *rot) const {
+  const Model &m = *robots_[r].m;
+  int fi = m.frame_index(p_.camera_frame);
+  Vec3 lp;
+  Mat3 lR;
+  if (fi >= 0) {
+    const Frame &f = m.frames[fi];
+    link_pose(r, f.link, &lp, &lR);
+    *pos = lp + lR * f.pos;
+    *rot = lR * f.rot;
+  } else {
+    link_pose(r, m.link_index(p_.camera_frame), pos, rot);
+  }
+}
+
+}  // namespace sim

@@ -1,0 +1,193 @@
+// world_step: one tick of the world -- the servo commands, each joint's velocity motor (or its
+// back-driven gear train), pushes, the ball's air drag, the contacts and their surfaces, the
+// physics steps, the sole forces and the goals.
+#include <algorithm>
+#include <cmath>
+
+#include "world_internal.h"
+
+namespace sim {
+
+using namespace world_internal;
+
+int World::set_command(int r, const double *cmd, const double *hardness, const int *enable) {
+  Robot &rb = robots_[r];
+  int bad = 0;
+  for (size_t j = 0; j < rb.cmd.size(); j++) {
+    if (cmd) {
+      if (std::isfinite(cmd[j])) rb.cmd[j] = cmd[j]; else bad++;
+    }
+    if (hardness) {
+      if (std::isfinite(hardness[j])) rb.hard[j] = std::min(std::max(hardness[j], 0.0), 1.0); else bad++;
+    }
+    if (enable) rb.enable[j] = enable[j] != 0;
+  }
+  return bad;
+}
+
+void World::servo_update(Robot &rb) {
+  for (size_t j = 0; j < rb.jlink.size(); j++) {
+    const Link &l = rb.m->links[rb.jlink[j]];
+    dJointID h = rb.hinge[rb.jlink[j]];
+    if (rb.enable[j] && rb.hard[j] > 0) {
+      if (rb.mode[j] != 1) {
+        dJointSetHingeParam(h, dParamCFM, kWorldCfm);
+        rb.mode[j] = 1;
+      }
+      const double target = std::min(std::max(rb.cmd[j], l.lower), l.upper);
+      double v = (*rb.servo)[j].gain * (target - dJointGetHingeAngle(h));
+      v = std::min(std::max(v, -l.velocity), l.velocity);
+      dJointSetHingeParam(h, dParamVel, v);
+      dJointSetHingeParam(h, dParamFMax, rb.hard[j] * l.effort);
+    } else {
+      // torque off: the gear train back-drives with viscous damping (and some friction)
+      if (rb.mode[j] != 2) {
+        dJointSetHingeParam(h, dParamCFM, l.damping > 0 ? 1.0 / l.damping : kWorldCfm);
+        rb.mode[j] = 2;
+      }
+      dJointSetHingeParam(h, dParamVel, 0);
+      dJointSetHingeParam(h, dParamFMax, l.damping > 0 ? l.effort : l.friction);
+    }
+  }
+}
+
+void World::near_cb(void *data, dGeomID o1, dGeomID o2) {
+  static_cast<World *>(data)->collide(o1, o2);
+}
+
+void World::collide(dGeomID o1, dGeomID o2) {
+  if (dGeomIsSpace(o1) || dGeomIsSpace(o2)) {
+    dSpaceCollide2(o1, o2, this, &World::near_cb);
+    return;
+  }
+  const GeomInfo *a = (const GeomInfo *)dGeomGetData(o1), *b = (const GeomInfo *)dGeomGetData(o2);
+  if (a->kind == kGround && b->kind == kGround) return;
+  if (a->kind == kRobot && b->kind == kRobot && a->robot == b->robot) {
+    const int nl = (int)robots_[a->robot].m->links.size();
+    if (!robots_[a->robot].allowed[a->link * nl + b->link]) return;
+  }
+  dContact c[16];
+  const int maxc = std::min(16, p_.max_contacts);
+  int n = dCollide(o1, o2, maxc, &c[0].geom, sizeof(dContact));
+  if (n <= 0) return;
+  const double h = p_.timestep;
+  dSurfaceParameters s{};
+  const bool ball = a->kind == kBall || b->kind == kBall;
+  const bool ground = a->kind == kGround || b->kind == kGround;
+  if (ball && ground) {
+    // carpet under the ball: sliding friction, rolling resistance, a bounce
+    s.mode = dContactApprox1 | dContactRolling | dContactBounce | dContactSoftERP | dContactSoftCFM;
+    s.mu = p_.ball_mu;
+    s.rho = s.rho2 = p_.ball_rolling;
+    s.rhoN = p_.ball_rolling;
+    s.bounce = p_.ball_bounce;
+    s.bounce_vel = 0.2;
+    const double kp = 2e4, kd = 20;
+    s.soft_erp = h * kp / (h * kp + kd);
+    s.soft_cfm = 1 / (h * kp + kd);
+  } else if (ball) {
+    if (a->kind == kRobot || b->kind == kRobot) {
+      ball_touch_ = a->kind == kRobot ? a->robot : b->robot;
+      ball_touch_time_ = time_;
+    }
+    s.mode = dContactApprox1 | dContactBounce;
+    s.mu = 0.5;
+    s.bounce = p_.ball_bounce;
+    s.bounce_vel = 0.1;
+  } else {
+    s.mode = dContactApprox1 | dContactSoftERP | dContactSoftCFM;
+    s.mu = ground ? p_.mu : p_.robot_mu;
+    s.soft_erp = h * p_.kp / (h * p_.kp + p_.kd);
+    s.soft_cfm = 1 / (h * p_.kp + p_.kd);
+  }
+  dBodyID b1 = dGeomGetBody(o1), b2 = dGeomGetBody(o2);
+  for (int i = 0; i < n; i++) {
+    c[i].surface = s;
+    dJointID j = dJointCreateContact(world_, contacts_, &c[i]);
+    dJointAttach(j, b1, b2);
+    // vertical force under the soles
+    const GeomInfo *sole = a->sole >= 0 ? a : (b->sole >= 0 ? b : nullptr);
+    if (sole && ground && cfb_.size() < cfb_.capacity()) {
+      cfb_.push_back(dJointFeedback());
+      cfb_owner_.push_back({sole->robot * 4 + sole->sole * 2 + (sole == a ? 0 : 1), 0});
+      dJointSetFeedback(j, &cfb_.back());
+    }
+  }
+}
+
+void World::physics_step() {
+  for (Robot &rb : robots_) {
+    servo_update(rb);
+    if (rb.push_left > 0) {
+      dBodyAddForce(rb.body[0], rb.push_force.x(), rb.push_force.y(), rb.push_force.z());
+      rb.push_left -= p_.timestep;
+    }
+  }
+  // air drag on the ball: 0.5 * rho * Cd * A * v^2
+  {
+    const dReal *v = dBodyGetLinearVel(ball_);
+    const double r = p_.ball_diameter / 2, speed = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    const double k = 0.5 * 1.2 * 0.47 * M_PI * r * r * speed;
+    dBodyAddForce(ball_, -k * v[0], -k * v[1], -k * v[2]);
+  }
+  cfb_.clear();
+  cfb_owner_.clear();
+  dSpaceCollide(top_, this, &World::near_cb);
+  for (Robot &rb : robots_) dSpaceCollide(rb.space, this, &World::near_cb);
+  dWorldQuickStep(world_, p_.timestep);
+  for (size_t i = 0; i < cfb_.size(); i++) {
+    const int code = cfb_owner_[i].first;
+    const int r = code / 4, side = (code / 2) % 2, which = code % 2;
+    robots_[r].foot_acc[side] += which == 0 ? cfb_[i].f1[2] : cfb_[i].f2[2];
+  }
+  dJointGroupEmpty(contacts_);
+  check_goal();
+  time_ += p_.timestep;
+}
+
+void World::set_hinge_feedback(bool on) {
+  for (Robot &rb : robots_) {
+    for (size_t i = 0; i < rb.hinge.size(); i++) {
+      if (rb.hinge[i]) dJointSetFeedback(rb.hinge[i], on ? &rb.fb[i] : nullptr);
+    }
+  }
+}
+
+void World::check_goal() {
+  const dReal *b = dBodyGetPosition(ball_);
+  const double r = p_.ball_diameter / 2;
+  const double line = p_.field_length / 2 + p_.line_width / 2 + r;
+  if (in_goal_ != 0) {
+    if (std::fabs(b[0]) < p_.field_length / 2) in_goal_ = 0;
+    return;
+  }
+  if (std::fabs(b[0]) > line && std::fabs(b[1]) < p_.goal_width / 2 && b[2] < p_.goal_height) {
+    in_goal_ = b[0] > 0 ? 1 : -1;
+    score_[b[0] > 0 ? 0 : 1]++;
+  }
+}
+
+void World::step() {
+  for (Robot &rb : robots_) {
+    const dReal *v = dBodyGetLinearVel(rb.body[0]);
+    rb.vel_start = Vec3(v[0], v[1], v[2]);
+    rb.foot_acc[0] = rb.foot_acc[1] = 0;
+  }
+  // joint torques (`load`) are read once per tick: ODE computes the hinges' feedback in the last
+  // physics step only (feedback is output, it does not enter the dynamics)
+  for (int i = 0; i < substeps_; i++) {
+    if (i == substeps_ - 1) set_hinge_feedback(true);
+    physics_step();
+  }
+  set_hinge_feedback(false);
+  for (Robot &rb : robots_) {
+    const dReal *v = dBodyGetLinearVel(rb.body[0]);
+    Vec3 a = (Vec3(v[0], v[1], v[2]) - rb.vel_start) / p_.period + Vec3(0, 0, p_.gravity);
+    Vec3 ab = body_rot(rb.body[0]).transpose() * a;
+    for (int k = 0; k < 3; k++) rb.accel[k] = ab[k];
+    rb.foot_acc[0] /= substeps_;
+    rb.foot_acc[1] /= substeps_;
+  }
+}
+
+}  // namespace sim
