@@ -10,7 +10,7 @@
 --                        the wind-up and strike need the time; the COM plan is made for it)
 --   ball = { x, y }      m: where the ball's centre is taken to be when the request names none,
 --                        ahead of the support ankle and outward of the kicking foot's line
---   ballMax              m (optional): a ball (named by the request) further ahead of the support
+--   ballMax              m (false: none): a ball (named by the request) further ahead of the support
 --                        ankle than this at the kick step's start waits for the foot's next step
 --                        (until `expire`)
 --   contact = { x, y }   m: the kicking ankle's offset behind (x) and inward of (y) the ball's
