@@ -117,11 +117,12 @@ return {
   },
   -- kick (Player/Motion/kick.lua): the body's and the kicking leg's phases side by side (durations
   -- in s; shift: fraction of the way over the support foot; height, lean, x, z in m; tilt, arms,
-  -- hip, knee, ankle, arm in rad; a field a phase leaves out is 0). The OP3's, tuned in the sim (Tests/motion/kick_tune.sh): the hip,
-  -- knee and ankle swing at the servos' speed limit while the torso leans back (the leg swings
-  -- faster in the world) and both arms swing back against the torso's pitch momentum; the foot
-  -- lifts before it draws back (dragging it turns the robot); the ball is met while the leg
-  -- already heads for the return phase's targets, so those shape the strike too.
+  -- hip, knee, ankle, arm in rad; a field a phase leaves out is 0). The OP3's, tuned in the sim
+  -- (Tests/motion/kick_tune.sh): the hip, knee and ankle swing at the servos' speed limit while the
+  -- torso leans back (the leg swings faster in the world) and both arms swing back against the
+  -- torso's pitch momentum; the foot lifts before it draws back (dragging it turns the robot); the
+  -- ball is met while the leg already heads for the return phase's targets, so those shape the
+  -- strike too.
   kick = {
     supportY = 0.01,         -- m, COM over the support foot: outward from its ankle
     body = {
