@@ -21,6 +21,11 @@
 -- default of `false` ("none": a feature a body may have, e.g. walk.lua's `sole`), which any value
 -- replaces. Every error names the file, and reading a key that
 -- no layer has fails naming the files consulted (Config.optional reads optional keys).
+--
+-- What a concern's values must be (ranges, pairs, names from a set, rules across keys) is stated
+-- once in Config/spec/<concern>.lua (a spec, see validate below), beside the defaults: every load
+-- and export of the concern checks it, so the motion process, the REPL, tools and tests see the
+-- same errors, each naming the file that set the key and the key's full path.
 local native = require('native')
 
 local M = {}
@@ -155,8 +160,9 @@ local function copy(v)
   return t
 end
 
--- Overlays `src` (from `file`) onto `dst`. open: unknown keys may be added.
-local function merge(dst, src, file, prefix, open)
+-- Overlays `src` (from `file`) onto `dst`. open: unknown keys may be added. origin: key path ->
+-- the file that set it last (errors of a check name that file).
+local function merge(dst, src, file, prefix, open, origin)
   for k, v in pairs(src) do
     local name = prefix .. tostring(k)
     local cur = dst[k]
@@ -165,14 +171,25 @@ local function merge(dst, src, file, prefix, open)
         error(string.format("%s: unknown key '%s' (no default layer has it)", file, name), 0)
       end
       dst[k] = copy(v)
+      origin[name] = file
     elseif type(cur) ~= type(v) and cur ~= false then
       error(string.format("%s: key '%s' must be a %s, got %s", file, name, type(cur), type(v)), 0)
     elseif type(v) == 'table' and type(cur) == 'table' and not is_list(v) and not is_list(cur) then
-      merge(cur, v, file, name .. '.', open)
+      merge(cur, v, file, name .. '.', open, origin)
     else
       dst[k] = copy(v)
+      origin[name] = file
     end
   end
+end
+
+-- The file that set key path `name` (or the table holding it); all the files when no layer did.
+local function origin_of(origin, files, name)
+  while name do
+    if origin[name] then return origin[name] end
+    name = name:match('^(.*)%.[^.]*$')
+  end
+  return files
 end
 
 -- Makes reading an absent key an error naming the files and the key path.
@@ -187,26 +204,49 @@ local function strict(tbl, files, prefix)
   })
 end
 
--- Checks spec = { key = 'number' | 'string' | 'table' | 'boolean' | 'function' | {nested spec} }.
-local function validate(tbl, spec, file, prefix)
+-- Checks a concern's table against spec = { key = want }, want one of
+--   'number' | 'string' | 'table' | 'boolean' | 'function'   the value's type
+--   { nested spec }                                          a table, its keys checked the same way
+--   check                                                    a function(value, cfg) -> true, or a
+--       message ('must be a number in 0..1, got 2') and, for a part of the value, its key path
+--       below key ('3.x'); value may be nil (the check says whether that is allowed), cfg is the
+--       whole concern (rules across keys). A check may fill the documented defaults of a list's
+--       elements (kick phases): layers cannot, as they replace lists whole.
+-- where(name): the file(s) to name for key path `name`.
+local function validate(tbl, spec, where, prefix, whole)
   for key, want in pairs(spec) do
     local v = rawget(tbl, key)
     local name = prefix .. key
-    if v == nil then error(string.format("%s: missing key '%s'", file, name), 0) end
-    if type(want) == 'table' then
-      if type(v) ~= 'table' then
-        error(string.format("%s: key '%s' must be a table, got %s", file, name, type(v)), 0)
+    if type(want) == 'function' then
+      local res, sub = want(v, whole)
+      if res ~= true then
+        if sub ~= nil then name = name .. '.' .. tostring(sub) end
+        error(string.format("%s: key '%s' %s", where(name), name, tostring(res)), 0)
       end
-      validate(v, want, file, name .. '.')
+    elseif v == nil then
+      error(string.format("%s: missing key '%s'", where(name), name), 0)
+    elseif type(want) == 'table' then
+      if type(v) ~= 'table' then
+        error(string.format("%s: key '%s' must be a table, got %s", where(name), name, type(v)), 0)
+      end
+      validate(v, want, where, name .. '.', whole)
     elseif type(v) ~= want then
-      error(string.format("%s: key '%s' must be a %s, got %s", file, name, want, type(v)), 0)
+      error(string.format("%s: key '%s' must be a %s, got %s", where(name), name, want, type(v)), 0)
     end
   end
 end
 
--- Merges the layers of a concern: the plain table and the list of files used.
+-- The spec of a concern (Config/spec/<concern>.lua; nil: none).
+local function concern_spec(concern)
+  local abs = config_root() .. '/Config/spec/' .. concern .. '.lua'
+  if not exists(abs) then return nil end
+  return read_file({ abs = abs, file = 'Config/spec/' .. concern .. '.lua' })
+end
+
+-- Merges the layers of a concern: the plain table, the list of files used and the origin of
+-- each key path (see merge).
 local function build(concern, robot, platform)
-  local result, used, has_default = {}, {}, false
+  local result, used, has_default, origin = {}, {}, false, {}
   local ls = layers(concern, robot, platform)
   for _, l in ipairs(ls) do
     if l.default and exists(l.abs) then has_default = true end
@@ -214,7 +254,7 @@ local function build(concern, robot, platform)
   for _, l in ipairs(ls) do
     local t = read_file(l)
     if t then
-      merge(result, t, l.file, '', l.default or (not has_default and #used == 0))
+      merge(result, t, l.file, '', l.default or (not has_default and #used == 0), origin)
       used[#used + 1] = l.file
     end
   end
@@ -222,7 +262,17 @@ local function build(concern, robot, platform)
     error(string.format("no config file for '%s' (robot %s, platform %s): looked for %s/%s.lua and %s/%s.lua",
       concern, robot, platform, robot_rel(robot), concern, platform_rel(platform), concern), 0)
   end
-  return result, used
+  return result, used, origin
+end
+
+-- build, then the concern's own spec (Config/spec/<concern>.lua) checked; also returns where(name).
+local function build_checked(concern, robot, platform)
+  local result, used, origin = build(concern, robot, platform)
+  local files = table.concat(used, ' + ')
+  local function where(name) return origin_of(origin, files, name) end
+  local spec = concern_spec(concern)
+  if spec then validate(result, spec, where, '', result) end
+  return result, files, where
 end
 
 -- The files that make up a concern (repository-relative, lowest layer first).
@@ -238,24 +288,24 @@ function M.load(concern, spec, opts)
   local key = concern .. '|' .. robot .. '|' .. platform
   local entry = cache[key]
   if not entry then
-    local ok, res, used = pcall(build, concern, robot, platform)
+    local ok, res, files, where = pcall(build_checked, concern, robot, platform)
     if not ok then error(res, 2) end
-    local files = table.concat(used, ' + ')
-    entry = { cfg = strict(res, files, ''), files = files }
+    entry = { cfg = strict(res, files, ''), files = files, where = where }
     cache[key] = entry
   end
   if spec then
-    local ok, err = pcall(validate, entry.cfg, spec, entry.files, '')
+    local ok, err = pcall(validate, entry.cfg, spec, entry.where, '', entry.cfg)
     if not ok then error(err, 2) end
   end
   return entry.cfg
 end
 
--- The same as a plain table without metatables (for C readers and tools), plus the files used.
+-- The same as a plain table without metatables (for C readers and tools), plus the files used;
+-- checked against the concern's spec as load does.
 function M.export(concern, opts)
   local robot, platform = resolve(opts)
-  local res, used = build(concern, robot, platform)
-  return res, table.concat(used, ' + ')
+  local res, files = build_checked(concern, robot, platform)
+  return res, files
 end
 
 -- Absolute path of a file named in a robot's config (relative to the robot's folder).

@@ -72,8 +72,8 @@ return {
   -- while standing, walking and kicking (the joints named here are the ones the walk drives), and
   -- the joints that turn the arm about the torso's y axis (`pitch`: arm swing, gyro feedback, the
   -- kick's and the fall's arm motions) and x axis (`roll`: gyro feedback):
-  -- { l = { posture = { joint = rad, ... }, pitch = joint, roll = joint }, r = ... }. Joint names are
-  -- the body's, so the default is a body without arms.
+  -- { l = { posture = { joint = rad, ... }, pitch = joint, roll = joint }, r = ... } (pitch, roll:
+  -- false when left out). Joint names are the body's, so the default is a body without arms.
   arms = {},
   armSwing = 0.0,            -- rad of arm pitch per m of foot lead
   hipRollCompensation = 0.0, -- rad, support hip roll added in single support
@@ -117,11 +117,12 @@ return {
   },
   -- kick (Player/Motion/kick.lua): the body's and the kicking leg's phases side by side (durations
   -- in s; shift: fraction of the way over the support foot; height, lean, x, z in m; tilt, arms,
-  -- hip, knee, ankle, arm in rad). The OP3's, tuned in the sim (Tools/tune/kick_tune.sh): the hip,
-  -- knee and ankle swing at the servos' speed limit while the torso leans back (the leg swings
-  -- faster in the world) and both arms swing back against the torso's pitch momentum; the foot
-  -- lifts before it draws back (dragging it turns the robot); the ball is met while the leg
-  -- already heads for the return phase's targets, so those shape the strike too.
+  -- hip, knee, ankle, arm in rad; a field a phase leaves out is 0). The OP3's, tuned in the sim
+  -- (Tools/tune/kick_tune.sh): the hip, knee and ankle swing at the servos' speed limit while the
+  -- torso leans back (the leg swings faster in the world) and both arms swing back against the
+  -- torso's pitch momentum; the foot lifts before it draws back (dragging it turns the robot); the
+  -- ball is met while the leg already heads for the return phase's targets, so those shape the
+  -- strike too.
   kick = {
     supportY = 0.01,         -- m, COM over the support foot: outward from its ankle
     body = {
@@ -151,7 +152,8 @@ return {
   },
   -- kicks out of the walk (Player/Motion/walk_kick.lua): { expire = s a request waits for its step,
   -- maxSpeed = { m/s, m/s, rad/s } the walk's at most at the kick step's start, forward = {...},
-  -- side = {...} } (the keys of each kind: Config/robots/op3/walk.lua); false: the body has none
+  -- side = {...} } (the keys of each kind: Config/robots/op3/walk.lua; ballMax false when left out, a
+  -- phase's fields 0); false: the body has none
   walkKick = false,
   -- stance and transitions
   tStance = 1.0,             -- s, to move into the stance from the current pose

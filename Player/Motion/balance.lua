@@ -49,36 +49,10 @@ local M = {}
 local Balance = {}
 Balance.__index = Balance
 
-local KEYS = { 'leakTime', 'maxShift', 'maxRate', 'filterTime', 'walkFilterTime', 'minForce', 'sensorHeight' }
-local PAIRS = { 'zmpGain', 'walkGain' }
-
--- Checks the walk config's `balance` table; returns it or raises an error naming `files` and the key.
-function M.check(params, files)
-  files = files or 'walk config'
-  local b = rawget(params, 'balance')
-  if type(b) ~= 'table' then error(files .. ": key 'balance' must be a table (Player/Motion/balance.lua)", 0) end
-  local function good(v) return type(v) == 'number' and v == v and v ~= math.huge and v >= 0 end
-  for _, k in ipairs(KEYS) do
-    local v = rawget(b, k)
-    if not good(v) then
-      error(string.format("%s: key 'balance.%s' must be a number >= 0, got %s", files, k, tostring(v)), 0)
-    end
-  end
-  for _, k in ipairs(PAIRS) do
-    local v = rawget(b, k)
-    if type(v) ~= 'table' or not good(v[1]) or not good(v[2]) then
-      error(string.format("%s: key 'balance.%s' must be { x, y }, numbers >= 0", files, k), 0)
-    end
-  end
-  if rawget(b, 'leakTime') <= 0 then error(files .. ": key 'balance.leakTime' must be > 0", 0) end
-  return b
-end
-
-function M.new(params, files)
-  M.check(params, files)
-  local b = setmetatable({ p = params, shift = { 0, 0 }, zmp = { 0, 0 }, err = { 0, 0 }, errf = { 0, 0 },
+-- params: the walk config (its `balance` checked where it is loaded: Config/spec/walk.lua).
+function M.new(params)
+  return setmetatable({ p = params, shift = { 0, 0 }, zmp = { 0, 0 }, err = { 0, 0 }, errf = { 0, 0 },
     cop = { { 0, 0 }, { 0, 0 } }, force = { 0, 0 }, contact = false }, Balance)
-  return b
 end
 
 function Balance:reset()

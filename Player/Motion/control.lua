@@ -62,7 +62,7 @@ local function roles(c, robot)
   end
   table.sort(r.legs)
   for k, i in ipairs(w.arm_joints) do r.arms[k] = i end
-  local head = rawget(robot.groups, 'head') or {}
+  local head = robot.groups.head
   for k = 1, math.min(2, #head) do
     r.head[k] = c.ji[head[k]] or error(string.format("robot config: group 'head' names unknown joint '%s'",
       tostring(head[k])), 3)
@@ -136,7 +136,7 @@ function M.new(opts)
   for k = 1, 24 do c.ft[k] = 0 end
   c.sensors = { gyro = c.gyro, position = c.pos, angle = c.angle, acc = c.acc, ft = c.ft }
   c.walk = M.walk_engine(params, opts.walk_files).new(params, opts.model):bind(robot, opts.walk_files)
-  c.balance = balance.new(params, opts.walk_files)
+  c.balance = balance.new(params)
   c.kick = Kick.new(c.walk)
   c.walk_kick = WalkKick.new(params)
   c.capture = capture.new()

@@ -28,7 +28,7 @@ local function finite(x) return type(x) == 'number' and x == x and x ~= math.hug
 function M.check(kf, file, body)
   local function fail(fmt, ...) error(file .. ': ' .. string.format(fmt, ...), 0) end
   if type(kf) ~= 'table' then fail('must return a table') end
-  local frames = rawget(kf, 'frames')
+  local frames = kf.frames
   if type(frames) ~= 'table' then fail("missing field 'frames' (a list of frames)") end
   if #frames == 0 then fail("'frames' is empty") end
   local index = body.index

@@ -42,10 +42,10 @@ local function track_update(tr, t, phases, cur)
     if s < 1 or tr.i == #phases then
       if s > 1 then s = 1 end
       local a = s * s * (3 - 2 * s)
-      for _, k in ipairs(keys) do cur[k] = from[k] + a * ((rawget(ph, k) or 0) - from[k]) end
+      for _, k in ipairs(keys) do cur[k] = from[k] + a * (ph[k] - from[k]) end
       return s >= 1 and tr.i == #phases
     end
-    for _, k in ipairs(keys) do from[k] = rawget(ph, k) or 0 end
+    for _, k in ipairs(keys) do from[k] = ph[k] end
     tr.t0 = tr.t0 + ph.duration
     tr.i = tr.i + 1
   end

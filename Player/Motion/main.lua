@@ -35,7 +35,7 @@ end
 
 local robot = Config.load('robot')
 local params = Config.load('walk')
-initial = initial or Config.optional(params, 'initialState', 'stance')
+initial = initial or params.initialState
 
 local ctl = control.new({ robot = robot, params = params, model = kin.load(), initial = initial,
   walk_files = table.concat(Config.files('walk'), ' + ') })

@@ -602,69 +602,30 @@ function Walk:bind(robot, files)
     end
   end
   -- arms: side -> { pitch = index or nil, roll = index or nil, joints = { { index, name }, ... } }
+  -- (their form is checked where the walk config is loaded, Config/spec/walk.lua; their joint
+  -- names against this body's here)
   self.arms, self.arm_joints = {}, {}
   for side, a in pairs(self.p.arms) do
-    local key = 'arms.' .. tostring(side)
-    if side ~= 'l' and side ~= 'r' then
-      error(string.format("%s: key '%s' must be 'arms.l' or 'arms.r'", files, key), 2)
-    end
-    local posture = type(a) == 'table' and a.posture
-    if type(posture) ~= 'table' then
-      error(string.format("%s: key '%s.posture' must be a table of joint = rad", files, key), 2)
-    end
-    local arm, named = { joints = {} }, {}
-    for name, v in pairs(posture) do
+    local arm = { joints = {} }
+    for name in pairs(a.posture) do
       local i = ji[name]
       if not i then
-        error(string.format("%s: key '%s.posture' names unknown joint '%s'", files, key, tostring(name)), 2)
-      end
-      if type(v) ~= 'number' or v ~= v or v == math.huge or v == -math.huge then
-        error(string.format("%s: key '%s.posture.%s' must be a finite number", files, key, name), 2)
+        error(string.format("%s: key 'arms.%s.posture' names unknown joint '%s' (robot.joints)", files, side,
+          tostring(name)), 2)
       end
       arm.joints[#arm.joints + 1] = { i, name }
-      named[name] = true
       self.arm_joints[#self.arm_joints + 1] = i
       axis_of(i, name)
     end
     table.sort(arm.joints, function(x, y) return x[1] < y[1] end)
-    for which, name in pairs(a) do
-      if which ~= 'posture' then
-        if which ~= 'pitch' and which ~= 'roll' then
-          error(string.format("%s: unknown key '%s.%s' (posture, pitch, roll)", files, key, tostring(which)), 2)
-        end
-        if type(name) ~= 'string' or not named[name] then
-          error(string.format("%s: key '%s.%s' must name a joint of '%s.posture', got '%s'", files, key, which,
-            key, tostring(name)), 2)
-        end
-        arm[which] = ji[name]
-      end
-    end
+    if a.pitch then arm.pitch = ji[a.pitch] end
+    if a.roll then arm.roll = ji[a.roll] end
     self.arms[side] = arm
   end
   table.sort(self.arm_joints)
-  M.check_turning(self.p, files)
   self.qleg = {}
   self.pose_meas = {}
   return self
-end
-
--- The turning keys of a walk config (a bad one would only show as NaN steps): turnToeIn (0..1),
--- turnStep = false or { tStep = s > 0, va = { lo, hi } rad/s, 0 <= lo < hi }, hipYawLead (s >= 0).
-function M.check_turning(p, files)
-  local function bad(key, what) error(string.format("%s: key '%s' must be %s", files, key, what), 3) end
-  local function num(x) return type(x) == 'number' and x == x and x ~= math.huge and x ~= -math.huge end
-  local k = p.turnToeIn
-  if not (num(k) and k >= 0 and k <= 1) then bad('turnToeIn', 'a number in 0..1') end
-  local lead = p.hipYawLead
-  if not (num(lead) and lead >= 0) then bad('hipYawLead', 'a number of s >= 0') end
-  local ts = p.turnStep
-  if ts ~= false then
-    local va = type(ts) == 'table' and ts.va
-    if not (type(ts) == 'table' and num(ts.tStep) and ts.tStep > 0 and type(va) == 'table'
-        and num(va[1]) and num(va[2]) and va[1] >= 0 and va[2] > va[1]) then
-      bad('turnStep', 'false or { tStep = s > 0, va = { lo, hi } } rad/s with 0 <= lo < hi')
-    end
-  end
 end
 
 -- The hip yaw servos' lag made up: the command leads the plan by `hipYawLead` (s) x its rate (a

@@ -10,7 +10,7 @@
 --                        the wind-up and strike need the time; the COM plan is made for it)
 --   ball = { x, y }      m: where the ball's centre is taken to be when the request names none,
 --                        ahead of the support ankle and outward of the kicking foot's line
---   ballMax              m (optional): a ball (named by the request) further ahead of the support
+--   ballMax              m (false: none): a ball (named by the request) further ahead of the support
 --                        ankle than this at the kick step's start waits for the foot's next step
 --                        (until `expire`)
 --   contact = { x, y }   m: the kicking ankle's offset behind (x) and inward of (y) the ball's
@@ -91,8 +91,7 @@ local function waypoints(cfg, sgn, ball_rel)
   local rx, ry = cfg.reach.x, cfg.reach.y
   local pts = {}
   for i, ph in ipairs(cfg.phases) do
-    pts[i] = { clamp(cx + (rawget(ph, 'x') or 0), rx[1], rx[2]), clamp(cy + (rawget(ph, 'y') or 0), ry[1], ry[2]),
-      rawget(ph, 'z') or 0 }
+    pts[i] = { clamp(cx + ph.x, rx[1], rx[2]), clamp(cy + ph.y, ry[1], ry[2]), ph.z }
   end
   return pts
 end
@@ -120,7 +119,7 @@ function Kick:begin_step(w, step)
   -- a ball further ahead than the strike is made for waits for the next step of this foot, the
   -- walk bringing it nearer: beyond it the foot met the ball at the end of its reach, slowing down
   -- (forward kicks of the OP3: 1.2 m against 1.8 m a few centimetres nearer)
-  local far = rawget(cfg, 'ballMax')
+  local far = cfg.ballMax
   if far and req.ball and ball[1] > far then return end
   self.pending = nil
   -- the kick step lasts a whole number of ticks for an engine on a sample grid (walk_preview)
@@ -172,7 +171,7 @@ function Kick:swing(_, step, t)
     local s = smooth(clamp(tt / dur, 0, 1))
     x, y, z = prev[1] + s * (to[1] - prev[1]), prev[2] + s * (to[2] - prev[2]), prev[3] + s * (to[3] - prev[3])
     for key in pairs(j) do
-      local a, b = pj and rawget(pj, key) or 0, tj and rawget(tj, key) or 0
+      local a, b = pj and pj[key] or 0, tj and tj[key] or 0
       j[key] = a + s * (b - a)
     end
     self.tilt = j.tilt

@@ -10,14 +10,6 @@ local project = require('Vision.project')
 
 local M = {}
 
-local GREEN = 8
-
-local function opt(t, k, default)
-  local v = rawget(t, k)
-  if v == nil then return default end
-  return v
-end
-
 -- Why the last candidate was refused (for debugging from the REPL): why, and two figures.
 M.reject = { why = '', a = 0, b = 0 }
 local reject = M.reject
@@ -29,8 +21,8 @@ function M.ball(p, cm, pose, cfg, out)
   out.detected = false
   local s = p.scale
   local n, regs = p:regions(cfg.color, 4)
-  local green_bit = opt(cfg, 'green_color', GREEN)
-  local tol = opt(cfg, 'size_tolerance', 2.0)
+  local green_bit = cfg.green_color
+  local tol = cfg.size_tolerance
   local radius = cfg.diameter / 2
   for i = 0, math.min(n, 4) - 1 do
     local r = regs[i]
@@ -118,8 +110,8 @@ end
 function M.goal_posts(p, cm, pose, cfg, out)
   out.n = 0
   local L, wa, ha, s = p.labels, p.wa, p.ha, p.scale
-  local white, green = cfg.color, opt(cfg, 'green', GREEN)
-  local gap, min_rows = opt(cfg, 'gap', 2), opt(cfg, 'min_rows', 6)
+  local white, green = cfg.color, cfg.green
+  local gap, min_rows = cfg.gap, cfg.min_rows
   local band = bit.band
   -- 1. columns with a white run through the horizon, its base on the field
   for x = 0, wa - 1 do
@@ -167,9 +159,9 @@ function M.goal_posts(p, cm, pose, cfg, out)
     end
   end
   -- 2. bands of such columns (one column's gap bridged), each checked as a post
-  local max_range, dia = opt(cfg, 'max_range', 10.5), cfg.diameter
-  local wtol = opt(cfg, 'width_tolerance', { 0.5, 1.8 })
-  local min_rise = opt(cfg, 'min_rise', 0.6)
+  local max_range, dia = cfg.max_range, cfg.diameter
+  local wtol = cfg.width_tolerance
+  local min_rise = cfg.min_rise
   local x = 0
   while x < wa do
     if col_ok[x] then

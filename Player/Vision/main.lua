@@ -217,7 +217,7 @@ local function report(now)
 end
 
 log('camera %s %dx%d, lut %s', cam_settings.driver, ccfg.width, ccfg.height,
-    rawget(vcfg, 'lut') or 'from colour boxes')
+    vcfg.lut or 'from colour boxes')
 
 local participant
 local function lockstep_on() return sync.lockstep[0] == 1 end

@@ -27,7 +27,7 @@ Pipeline.__index = Pipeline
 -- The LUT named by the vision config (a path relative to the repo root), or one built from its
 -- colour boxes when the config says lut = false. nil, err if the file is missing or corrupt.
 function M.load_lut(vcfg)
-  local path = rawget(vcfg, 'lut')
+  local path = vcfg.lut
   if path then
     if path:sub(1, 1) ~= '/' then path = native.root() .. '/' .. path end
     return imageproc.load_lut(path)
@@ -38,7 +38,7 @@ end
 function M.new(vcfg, ccfg, model)
   local lut, err = M.load_lut(vcfg)
   if not lut then return nil, err end
-  local kind = rawget(vcfg.ball, 'kind') or 'orange'
+  local kind = vcfg.ball.kind
   local mlp
   if kind == 'white' then
     mlp, err = balldetect.load_model(vcfg.ball.white.model)
@@ -54,13 +54,13 @@ function M.new(vcfg, ccfg, model)
     p = imageproc.pipeline({ width = ccfg.width, height = ccfg.height, scale = vcfg.scale,
                              block = vcfg.block, lut = lut }),
     cm = project.from_config(ccfg),
-    head_joint = rawget(ccfg, 'head_joint') or { 0, 1 },
+    head_joint = ccfg.head_joint,
     pose = { 0, 0, 0, R = { 1, 0, 0, 0, 1, 0, 0, 0, 1 }, height = 0, blur = { 0, 0 } },
     result = { ball = { detected = false, kind = kind == 'white' and 1 or 0, score = 0 }, goals = { n = 0 },
                robots = { n = 0 } },
     q = {},
     -- the last frame's angles and time (Pipeline:process dates the pose to the exposure's middle)
-    exposure = rawget(ccfg, 'exposure_time') or 0,
+    exposure = ccfg.exposure_time,
     last = { time = -math.huge, pan = 0, tilt = 0, roll = 0, pitch = 0 },
     rpy = { 0, 0 },
     pose_ends = { { R = {} }, { R = {} } },

@@ -32,6 +32,33 @@ describe('Config', function()
     write('Config/robots/bot/feature.lua', 'return { sole = { toe = 0.06 } }')
     write('Config/platforms/Test/feature.lua', 'return { sole = { toe = 0.07 } }')
     write('Config/platforms/Typed/feature.lua', 'return { n = false }')
+    -- a concern with a spec (Config/spec/checked.lua): a range, a pair, a name from a set, a rule
+    -- across keys, and list elements whose left-out fields are filled in
+    write('Config/common/checked.lua',
+      'return { gain = 1, pair = { 0, 1 }, mode = "a", lo = 0, hi = 1, steps = { { d = 1 } } }')
+    write('Config/spec/checked.lua', [[
+      local function num(v) return type(v) == 'number' end
+      return {
+        gain = function(v)
+          return (num(v) and v >= 0 and v <= 10) or 'must be a number in 0..10, got ' .. tostring(v)
+        end,
+        pair = function(v) return (#v == 2 and v[1] < v[2]) or 'must be { lo, hi } with lo < hi' end,
+        mode = function(v) return (v == 'a' or v == 'b') or "must be 'a' or 'b', got " .. tostring(v) end,
+        lo = function(v, cfg) return v < cfg.hi or 'must be < hi (' .. cfg.hi .. ')' end,
+        steps = function(v)
+          for i, s in ipairs(v) do
+            if not num(s.d) then return 'must be a number', i .. '.d' end
+            if s.x == nil then s.x = 0 end
+          end
+          return true
+        end,
+      }]])
+    write('Config/robots/bot/checked.lua', 'return { gain = 2, steps = { { d = 1 }, { d = 2, x = 3 } } }')
+    write('Config/platforms/Range/checked.lua', 'return { gain = 11 }')
+    write('Config/platforms/Pair/checked.lua', 'return { pair = { 2, 1 } }')
+    write('Config/platforms/Enum/checked.lua', 'return { mode = "c" }')
+    write('Config/platforms/Cross/checked.lua', 'return { lo = 2 }')
+    write('Config/platforms/Steps/checked.lua', 'return { steps = { { d = 1 }, { d = "long" } } }')
     Config.use_root(tmp)
   end)
   teardown(function()
@@ -94,11 +121,39 @@ describe('Config', function()
       "Config/robots/bot/walk.lua + Config/platforms/Test/walk.lua: missing key 'tDouble'")
   end)
 
-  it('names files and key for a wrong type, nested keys with their path', function()
+  it('names the file that set the key for a wrong type, nested keys with their path', function()
     assert.has_error(function() Config.load('walk', { name = 'number' }, T) end,
-      "Config/robots/bot/walk.lua + Config/platforms/Test/walk.lua: key 'name' must be a number, got string")
+      "Config/robots/bot/walk.lua: key 'name' must be a number, got string")
     assert.has_error(function() Config.load('walk', { limits = { vx = 'table' } }, T) end,
-      "Config/robots/bot/walk.lua + Config/platforms/Test/walk.lua: key 'limits.vx' must be a table, got number")
+      "Config/robots/bot/walk.lua: key 'limits.vx' must be a table, got number")
+  end)
+
+  it('checks a concern against its spec on load and export, filling what a list element leaves out', function()
+    local c = Config.load('checked', nil, T)
+    assert.equal(2, c.gain)
+    assert.same({ { d = 1, x = 0 }, { d = 2, x = 3 } }, Config.export('checked', T).steps)
+    assert.equal(0, c.steps[1].x)
+  end)
+
+  it('names the file that set the key and the key for a value out of range, a bad pair, an unknown name, ' ..
+    'a rule across keys, and a list element', function()
+    local function fails(platform, msg)
+      local opts = { robot = 'bot', platform = platform }
+      assert.has_error(function() Config.load('checked', nil, opts) end, msg)
+      assert.has_error(function() Config.export('checked', opts) end, msg)
+    end
+    fails('Range', "Config/platforms/Range/checked.lua: key 'gain' must be a number in 0..10, got 11")
+    fails('Pair', "Config/platforms/Pair/checked.lua: key 'pair' must be { lo, hi } with lo < hi")
+    fails('Enum', "Config/platforms/Enum/checked.lua: key 'mode' must be 'a' or 'b', got c")
+    fails('Cross', "Config/platforms/Cross/checked.lua: key 'lo' must be < hi (1)")
+    fails('Steps', "Config/platforms/Steps/checked.lua: key 'steps.2.d' must be a number")
+  end)
+
+  it('takes a check from the caller too', function()
+    local function positive(v) return v > 0 or 'must be > 0' end
+    assert.equal(0.25, Config.load('walk', { tStep = positive }, T).tStep)
+    assert.has_error(function() Config.load('walk', { limits = { vx = function() return 'must be slow' end } }, T) end,
+      "Config/robots/bot/walk.lua: key 'limits.vx' must be slow")
   end)
 
   it('fails when code reads a key no layer has', function()

@@ -1,7 +1,7 @@
 -- luacheck: std +busted
 -- The balance feedback (Player/Motion/balance.lua) without a robot: the ZMP from the feet's
 -- wrenches, the direction and bound of the COM shift, no feedback without contact, the stability
--- cap of the gain, and bad config named by its key.
+-- cap of the gain (a bad `balance` config: Tests/motion/walk_config_spec.lua).
 local balance = require('Motion.balance')
 
 local function params(over)
@@ -81,19 +81,5 @@ describe('balance', function()
     local k = 0.5 * 0.3 / (0.26 * 0.26)
     local alpha = 0.005 / (0.005 + 0.3)
     assert.is_near(-k * alpha * 0.03 * 0.005, b.shift[1], 1e-12)
-  end)
-
-  it('names the file and the key of a bad config', function()
-    assert.has_error(function() balance.new({ tZmp = 0.26 }, 'x/walk.lua') end,
-      "x/walk.lua: key 'balance' must be a table (Player/Motion/balance.lua)")
-    local p = params({ leakTime = 'soon' })
-    assert.has_error(function() balance.new(p, 'x/walk.lua') end,
-      "x/walk.lua: key 'balance.leakTime' must be a number >= 0, got soon")
-    p = params({ minForce = -1 })
-    assert.has_error(function() balance.new(p, 'x/walk.lua') end,
-      "x/walk.lua: key 'balance.minForce' must be a number >= 0, got -1")
-    p = params({ walkGain = 1 })
-    assert.has_error(function() balance.new(p, 'x/walk.lua') end,
-      "x/walk.lua: key 'balance.walkGain' must be { x, y }, numbers >= 0")
   end)
 end)

@@ -162,16 +162,6 @@ describe('walk', function()
     assert.is_near(math.sin(a0 + 4), math.sin(a), 0.1)
   end)
 
-  it('refuses a bad turning key, naming it', function()
-    for key, v in pairs({ turnToeIn = 2, hipYawLead = -0.1, turnStep = { tStep = 0.2, va = { 2, 1 } } }) do
-      local p = copy(params)
-      p[key] = v
-      local ok, err = pcall(function() Walk.new(p, model):bind(robot, 'walk.lua') end)
-      assert.is_false(ok)
-      assert.matches("walk.lua: key '" .. key .. "' must be", err, 1, true)
-    end
-  end)
-
   it('leads the hip yaw command by hipYawLead x its rate while stepping', function()
     local function walk_with(lead)
       local p = copy(params)

@@ -11,7 +11,8 @@ local project = require('Vision.project')
 local balldetect = require('balldetect')
 
 local W, H = 640, 480
-local ccfg = { width = W, height = H, fovy = math.rad(43.3), head_joint = { 0, 1 } }
+-- a still camera: no exposure to date the frame back by (camera.lua exposure_time)
+local ccfg = { width = W, height = H, fovy = math.rad(43.3), head_joint = { 0, 1 }, exposure_time = 0 }
 -- (Config.load may hand out the same tables again: both keys are set every time)
 local function vision(kind, model)
   local v = Config.load('vision', nil, { robot = 'op3', platform = 'Sim' })

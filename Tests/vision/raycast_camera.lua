@@ -14,7 +14,7 @@ local M = {}
 M.W, M.H = 640, 480
 M.FOVY = math.rad(43.3)
 M.vcfg = require('Config').load('vision', nil, { robot = 'op3', platform = 'Sim' })
-M.ccfg = { width = M.W, height = M.H, fovy = M.FOVY, head_joint = { 0, 1 } }
+M.ccfg = { width = M.W, height = M.H, fovy = M.FOVY, head_joint = { 0, 1 }, exposure_time = 0 }
 M.model = assert(kinematics.load({ robot = 'op3' }))
 M.cm = project.camera(M.W, M.H, M.FOVY)
 M.q0 = {}
