@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# tier: check (make check runs it: a few seconds)
 # The OP DCM drives the virtual servo bus (Platforms/OP/emulator/dxl_emulator) end to end:
 #   a command set from ./run_repl becomes the emulated servo's goal and comes back as position;
 #   IMU and buttons read back; DARwIn-OP (1.0) and OP3 (2.0); 1% corrupt answers are counted and

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# tier: check (make check runs it: a few seconds)
 # Our packets vs the ROBOTIS Python SDK 4.1.0 (byte-identical where the SDK is correct), then the
 # SDK pings, reads and writes our emulator in protocol 1.0 and 2.0. TAP via the Python script.
 set -u

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# tier: check (make check runs it: a few seconds)
 # Tools/urdf/gen_urdf.py (TAP), on the one reference file the repository holds (the waistbot test body's;
 # the real robots' references live outside the repository): regenerating gives the committed
 # URDF byte for byte; sections the generator does not use (a Hubo-style LIMITS, ACTUATORS, SENSORS)

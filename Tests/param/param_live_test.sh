@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# tier: check (make check runs it: a few seconds)
 # Live parameters (TAP): the sim in lockstep with the motion and vision processes; a REPL script
 # (Tests/param/param_live.lua) changes walk.tStep and vision.ball.max_range in the running processes
 # and measures their effect, then param.save() writes walk.tStep into the site overlay of this test

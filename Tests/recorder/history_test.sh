@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# tier: check (make check runs it: a few seconds)
 # history() (TAP): while the recorder runs over a stand-in robot (fake_robot.lua), the REPL's
 # history('dcm.sensor.gyro', 1.0) returns the last second of samples, oldest first, each the value the
 # robot wrote for its time; one element; a field that does not exist is an error naming it.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# tier: check (make check runs it: a few seconds)
 # The GameController packets and team messages in a recording (TAP): datagrams read through receivers
 # tapped like the behavior's (packet_sender.lua) are in the MCAP file as /gamecontroller and
 # /team.message, decode with their schema (hrp/msg/Packet, mcap-ros2-support) and hold the bytes that

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# tier: check (make check runs it: a few seconds)
 # The recorder (TAP): a stand-in robot (fake_robot.lua) writes known values for 2 s while hrp_record
 # records; check_mcap.py reads the file with the reference `mcap` library and checks every channel
 # decodes and every value; the recorder exits cleanly on SIGTERM and reports its figures; then

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# tier: check (make check runs it: a few seconds)
 # The recorder and a writer that died mid-update (TAP): a process leaves block 'game' with its sequence
 # odd and exits; the recorder keeps sampling the other blocks at the robot's rate (the fake robot's 125 Hz
 # dcm.sensor ticks: a sampler that waited on the dead block at every tick would record at most 50 of

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# tier: check (make check runs it: a few seconds)
 # Replay control from the REPL (TAP): a recording of Tests/recorder/fake_robot.lua served by the Replay
 # DCM, in real time and in lockstep, paused, stepped, sought and sped up by a REPL script
 # (Tests/replay/replay_control.lua); the expected times come from the log itself.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# tier: check (make check runs it: a few seconds)
 # The Replay platform (TAP): a recording of a stand-in robot (Tests/recorder/fake_robot.lua) served back
 # by PLATFORM=Replay ./run_dcm in lockstep to a participant that checks every tick's values and every
 # camera frame; faster than real time; a truncated log replayed up to the damage, which is reported; a log

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# tier: check (make check runs it: a few seconds)
 # The camera PNG tool (TAP): renders a head-camera frame with the ball and a goal in view to a PNG;
 # checks the file and that the ball's orange shows up around its projected centre.
 # (The pixel-accurate projection check is build/tests/sim_camera.)

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# tier: check (make check runs it: a few seconds)
 # The sim camera's degraded frames (TAP): build/bin/sim_camera_frames renders seeded scenes with the
 # clean and the realistic camera (sim.lua camera.realism) to PNGs; the files are there, are PNGs of
 # the expected size, and a second run writes the same bytes (deterministic for a seed). Look at them:

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# tier: check (make check runs it: a few seconds)
 # The sim DCM through shared memory (TAP): lockstep determinism (same seed, same script: identical
 # truth to the last bit), Sim requests, two robots in one world, two different bodies in one world
 # (each its own description and joint order), NaN commands counted, a robot whose

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# tier: check (make check runs it: a few seconds)
 # The team message against Google's protobuf: protoc (Debian) makes Python classes from the league's
 # schema (Modules/teamcomm/robocup.proto); Python's protobuf (.venv) builds a message our decoder
 # reads and reads one our encoder built (Tests/team/proto_crosscheck.py). TAP.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# tier: check (make check runs it: a few seconds)
 # The live view's server without a browser (TAP, Tests/view/server_check.py): blocks written by a
 # process reach an event stream, only changed blocks are sent, the client limit, bad options and a
 # port in use are refused with a message naming them.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# tier: check (make check runs it: a few seconds)
 # Tools/lut: a table from the config's colour boxes, a table trained from a labelled example
 # image (written here as PPM: orange, green, white and blue patches with noise, and a mask painting
 # the first three in their display colours), a rendered label PNG, and a corrupt table refused. TAP.
