@@ -2,7 +2,7 @@
 # The Hubo2+'s scenarios (Tests/motion/sim_walk_test.sh with ROBOT=hubo2plus): the same Player/ code
 # as the small bodies, only its config (Config/robots/hubo2plus): standing 60 s, forward >= 0.25 m/s
 # for 30 s, sideways 0.1 m/s, backwards, turning on the spot 0.5 rad/s, 60 s of random commands
-# (issue 13's targets: Tests/motion/targets.lua), key poses for the arms and the waist played while
+# (the targets: Tests/motion/targets.lua), key poses for the arms and the waist played while
 # standing, and pushes that tip it over handled by its fall policy (protective pose held, no
 # stand-up: a 45 kg robot does not get up by itself). Not here: 'push' and 'kick' (stand-ups and
 # football are the small bodies'), 'head' (the Hubo's head has no pan joint).

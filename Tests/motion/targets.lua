@@ -1,13 +1,13 @@
 -- What each body must reach in the walking scenarios (Tests/motion/sim_scenarios.lua): the command
 -- given and the least measured speed, per robot (ROBOT). The OP3's figures are the platform's
--- reference; the DARwIn-OP's forward goal is issue 12's (>= 0.20 m/s for 30 s); the Hubo2+'s are
--- issue 13's (forward >= 0.25 m/s for 30 s, sideways 0.1 m/s, turning 0.5 rad/s).
+-- reference; the DARwIn-OP's forward goal is >= 0.20 m/s for 30 s; the Hubo2+'s are forward
+-- >= 0.25 m/s for 30 s, sideways 0.1 m/s, turning 0.5 rad/s.
 return {
   op3 = {
     forward = { command = 0.35, least = 0.25 },   -- m/s
     sideways = { command = 0.12, least = 0.10 },  -- m/s
     backward = { command = 0.12, least = 0.10 },  -- m/s
-    turn = { command = 2.2, least = 2.0 },        -- rad/s (issue 16's goal; 2.18-2.20 measured)
+    turn = { command = 2.2, least = 2.0 },        -- rad/s (the goal; 2.18-2.20 measured)
     kick = { least = 2.0 },                       -- m the ball travels
   },
   darwin = {

@@ -7,7 +7,7 @@
 -- it, the kick is asked for through Walk.kick (with the ball's position in the robot frame, as
 -- the behavior gives it) and the robot walks on; the ball's travel is measured from the sim's
 -- truth once it stops. Prints one line per case and TAP lines: every kick sends the ball
--- >= MIN m (env WALK_KICK_MIN_<KIND>, defaults forward 1.5, issue 16's goal; side 0.4: what the
+-- >= MIN m (env WALK_KICK_MIN_<KIND>, defaults forward 1.5, the goal; side 0.4: what the
 -- OP3's side kick does; the 1.5 m goal is printed against the shortest forward kick),
 -- the walk's step counter kept going, no fall.
 -- WALK_KICK_TRACE=FILE: the kicking foot's toe, the ball and the torso every tick (for plotting:
@@ -32,7 +32,7 @@ local feet = list(arg[2], 'left,right')
 local vx = tonumber(arg[3] or '0.12')
 local need = { forward = tonumber(os.getenv('WALK_KICK_MIN_FORWARD') or '1.5'),
   side = tonumber(os.getenv('WALK_KICK_MIN_SIDE') or '0.4') }
-local GOAL = 1.5 -- m, issue 16's goal for a kick out of the walk
+local GOAL = 1.5 -- m, the goal for a kick out of the walk
 local p = Config.load('walk')
 local motion = assert(ks.wait_for_motion(wait), 'the motion process is not running')
 local trace = os.getenv('WALK_KICK_TRACE') and assert(io.open(os.getenv('WALK_KICK_TRACE'), 'w'))

@@ -2,7 +2,7 @@
 # Scenario (make bench; walk_kick_test.sh runs its forward part in make test): kicks out of the walk
 # in the sim's lockstep (the motion process alone): the OP3 walks, a ball is put in its kick zone,
 # Walk.kick asks for a forward or side kick with either foot; every kick sends the ball
-# its kind's minimum (the sim's truth; WALK_KICK_MIN_FORWARD default 1.5 m, issue 16's goal, over the
+# its kind's minimum (the sim's truth; WALK_KICK_MIN_FORWARD default 1.5 m, the goal, over the
 # OP3's kick zone: 1.50-2.17 m on seeds 1-3; WALK_KICK_MIN_SIDE 0.4 m: the side kick's 0.44-0.67 m)
 # while the robot walks on (no stop, no fall). Prints the distance per case
 # (Tests/motion/walk_kick_scenario.lua).

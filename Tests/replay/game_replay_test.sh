@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# A game recorded in the sim and replayed through the unchanged vision and behavior processes (TAP; issue 14):
+# A game recorded in the sim and replayed through the unchanged vision and behavior processes (TAP):
 #   1. the sim in lockstep plays SECONDS of a game (one robot: motion, vision, behavior; no GameController:
 #      the sim's quick start) while hrp_record --lockstep records every tick with lossless camera frames;
 #   2. PLATFORM=Replay serves that log in lockstep (dcm.sensor, camera.image, the sim truth and motion's own

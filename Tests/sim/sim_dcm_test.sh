@@ -180,7 +180,7 @@ else
 fi
 
 # ---- the DCM owns its start state: a REPL command written before any DCM ran (hardness 0, torque
-# off, zero pose) does not survive its start; the robot stands either way (issue 17's reproduction)
+# off, zero pose) does not survive its start; the robot stands either way
 for order in repl_first dcm_first; do
   cleanup
   write_limp='for _, n in ipairs(Body.joint_names()) do Body.set_command(n, 0) end

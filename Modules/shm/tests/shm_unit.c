@@ -102,8 +102,8 @@ static void test_create_attach(void) {
   shm_schema_free(s);
 }
 
-/* A block removed or recreated while a process keeps its mapping: the process can tell (issue 17:
- * no process misreads a recreated segment). */
+/* A block removed or recreated while a process keeps its mapping: the process can tell, so
+ * no process misreads a recreated segment. */
 static void test_replaced(void) {
   char err[512];
   shm_schema *s = NULL;
