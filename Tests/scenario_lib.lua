@@ -1,5 +1,5 @@
 -- What the scenario scripts run by ./run_repl in the sim's lockstep share: numbered TAP lines,
--- "# " figure lines, and waiting on a condition in robot time.
+-- "# " figure lines, waiting on a condition in robot time, and a bisection search.
 --   local sc = require('Tests.scenario_lib').new(wait, Body)
 --   local tap, note, wait_until = sc.tap, sc.note, sc.wait_until
 local M = {}
@@ -25,6 +25,16 @@ function M.new(wait, Body)
     return pred()
   end
   return s
+end
+
+-- The largest value in [lo, hi] for which ok(value) holds, by n halvings (ok true at lo, false at
+-- hi, once between): the last value that held and the last that failed.
+function M.bisect(lo, hi, n, ok)
+  for _ = 1, n do
+    local mid = 0.5 * (lo + hi)
+    if ok(mid) then lo = mid else hi = mid end
+  end
+  return lo, hi
 end
 
 return M

@@ -61,6 +61,17 @@ function M.wait_for_motion(wait)
   return nil
 end
 
+-- wait_for_motion for a scenario that prints TAP lines: the motion block, or a failed TAP line
+-- (through tap) and exit 1.
+function M.need_motion(wait, tap)
+  local motion = M.wait_for_motion(wait)
+  if not motion then
+    tap(false, 'the motion process is not running')
+    os.exit(1)
+  end
+  return motion
+end
+
 -- Applies WALK_PARAMS='key=v[,v..];key=v' (Walk.set, retried until the walk takes it), so a
 -- scenario runs with other walk parameters (e.g. feedback off); `note` (optional) logs each one.
 function M.apply_walk_params(Walk, wait, note)
@@ -231,7 +242,7 @@ end
 
 -- Pushes the walking robot at its torso for 0.1 s with f N, 'forward' or sideways (to its left),
 -- and watches 3 s of robot time: true when it fell (the sim's truth, or the motion process's count).
--- The push scenarios share it (sim_scenarios.lua's push search, push_sweep.lua).
+-- The push scenarios share it (sim_scenarios.lua's push search, balance_scenarios.lua's, push_sweep.lua).
 function M.push_falls(Sim, Motion, wait_until, dir, f)
   local a = Sim.truth()
   local falls0 = Motion.falls()
