@@ -11,9 +11,8 @@ local function write(path, text) files.write(tmp, path, text) end
 local T = { robot = 'bot', platform = 'Test' }
 
 describe('Config', function()
-  setup(function()
-    tmp = os.tmpname()
-    os.remove(tmp)
+  files.config_root(function(dir)
+    tmp = dir
     write('Config/robots/bot/walk.lua',
       'return { tStep = 0.25, limits = { vx = 0.3 }, name = "w", list = { 1, 2, 3 } }')
     write('Config/robots/bot/broken.lua', 'return { tStep = ')
@@ -59,11 +58,6 @@ describe('Config', function()
     write('Config/platforms/Enum/checked.lua', 'return { mode = "c" }')
     write('Config/platforms/Cross/checked.lua', 'return { lo = 2 }')
     write('Config/platforms/Steps/checked.lua', 'return { steps = { { d = 1 }, { d = "long" } } }')
-    Config.use_root(tmp)
-  end)
-  teardown(function()
-    Config.use_root(nil)
-    os.execute('rm -rf ' .. tmp)
   end)
 
   it('loads a file and checks types', function()

@@ -78,20 +78,14 @@ describe('param_save.write', function()
   local tmp
   local function write(path, text) testfiles.write(tmp, path, text) end
   local T = { robot = 'bot', platform = 'Test' }
-  setup(function()
-    tmp = os.tmpname()
-    os.remove(tmp)
+  testfiles.config_root(function(dir)
+    tmp = dir
     write('Config/common/vision.lua',
       'return {\n  ball = { max_range = 6.0, -- m\n    diameter = 0.14 },\n  lut = "a.lut",\n}\n')
     write('Config/robots/bot/robot.lua', 'return { joints = {} }')
     write('Config/robots/bot/vision.lua', 'return { ball = { diameter = 0.2 } } -- a bigger ball')
     write('Config/platforms/Test/dcm.lua', 'return { }')
     write('Config/site/vision.lua', 'return { lut = "b.lut" }')
-    Config.use_root(tmp)
-  end)
-  teardown(function()
-    Config.use_root(nil)
-    os.execute('rm -rf ' .. tmp)
   end)
 
   it('writes into the highest layer that sets the key', function()

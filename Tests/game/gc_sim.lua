@@ -11,6 +11,7 @@ local shm = require('shm')
 local packet = require('GameFSM.packet')
 local udp = require('GameFSM.udp')
 local Body = require('Body')
+local participants = require('Tests.scenario_lib').participants
 ffi.cdef [[ int usleep(unsigned int usec); ]]
 
 local M = {}
@@ -68,11 +69,7 @@ function M.joined(n, robot)
   local sync = shm.open('sync', robot and { robot = robot } or nil)
   local deadline = os.time() + 60
   while true do
-    local k = 0
-    for i = 0, sync:count('pid') - 1 do
-      if sync.pid[i] ~= 0 and shm.C.shm_pid_alive(sync.pid[i]) == 1 then k = k + 1 end
-    end
-    if k >= n then return end
+    if participants(sync) >= n then return end
     assert(os.time() < deadline, 'the robot processes did not join the lockstep within 60 s')
     ffi.C.usleep(20000)
   end

@@ -14,7 +14,9 @@
 local shm = require('shm')
 local Config = require('Config')
 local name = arg[1] or 'zmp'
-local sc = require('Tests.scenario_lib').new(wait, Body)
+local scenario_lib = require('Tests.scenario_lib')
+local sc, bisect = scenario_lib.new(wait, Body), scenario_lib.bisect
+local ks = require('Tests.motion.kick_setup')
 local tap, note, wait_until = sc.tap, sc.note, sc.wait_until
 
 local motion = shm.open('motion')
@@ -123,17 +125,11 @@ local function scenario_push()
         for k = 0, c[2] and 3 or 0 do
           start(c[2])
           wait(0.5 + 0.125 * k)
-          local a = Sim.truth()
-          local falls0 = motion.falls[0]
-          Sim.push(f * math.cos(a.yaw), f * math.sin(a.yaw), 0.1)
-          if wait_until(function() return Sim.truth().fallen or motion.falls[0] > falls0 end, 3) then return false end
+          if ks.push_falls(Sim, Motion, wait_until, 'forward', f) then return false end
         end
         return true
       end
-      for _ = 1, 6 do
-        local f = 0.5 * (lo + hi)
-        if survives(f) then lo = f else hi = f end
-      end
+      lo, hi = bisect(lo, hi, 6, survives)
       note('%-16s feedback %-3s: largest forward push survived %.0f N x 0.1 s = %.1f N s (fell at %.0f N)',
         c[1], mode, lo, 0.1 * lo, hi)
     end

@@ -1,7 +1,8 @@
 -- Kick scenario helpers shared by Tests/motion/sim_scenarios.lua (the pass/fail kick) and the kick
 -- tools (Tools/tune: kick_trace, kick_measure, kick_sweep, kick_tune): ball placement from the foot's forward
 -- kinematics, the kicking foot's toe point in the world from the sim's truth, and waiting for the
--- motion process (which every scenario needs first), and a push of the walking robot.
+-- motion process (which every scenario needs first), the start of a kick from stance or out of the walk,
+-- and a push of the walking robot.
 local Body = require('Body')
 local kin = require('kinematics')
 local shm = require('shm')
@@ -58,6 +59,17 @@ function M.wait_for_motion(wait)
     wait(0.1)
   end
   return nil
+end
+
+-- wait_for_motion for a scenario that prints TAP lines: the motion block, or a failed TAP line
+-- (through tap) and exit 1.
+function M.need_motion(wait, tap)
+  local motion = M.wait_for_motion(wait)
+  if not motion then
+    tap(false, 'the motion process is not running')
+    os.exit(1)
+  end
+  return motion
 end
 
 -- Applies WALK_PARAMS='key=v[,v..];key=v' (Walk.set, retried until the walk takes it), so a
@@ -187,6 +199,31 @@ function M.place_ball(Sim, side, gap, r, lateral)
   Sim.teleport_ball(sole[1] + c * bx - s * by, sole[2] + s * bx + c * by)
 end
 
+-- Waits (up to 20 s of robot time) until the motion process is in stance: after a fall the robot
+-- stands up first.
+function M.until_stance(Motion, wait)
+  for _ = 1, 400 do
+    if Motion.state() == 'stance' then break end
+    wait(0.05)
+  end
+end
+
+-- A fresh world for a walking kick: the robot standing at (-3.5, 0) facing along the field, then
+-- walking at vx m/s for 2.5 s (the ball out of the way). The walk-kick scenarios share it
+-- (walk_kick_scenario.lua, Tools/tune/walk_kick_tune.lua).
+function M.walk_steady(Sim, Motion, Walk, wait, vx)
+  Sim.reset()
+  wait(0.2)
+  Motion.request('stand')
+  M.until_stance(Motion, wait)
+  Sim.teleport_robot(-3.5, 0, 0)
+  Sim.teleport_ball(4.0, -3.5)
+  wait(1.0)
+  Motion.request('walk')
+  Walk.set_velocity(vx, 0, 0)
+  wait(2.5)
+end
+
 -- A fresh world for a kick: the robot at a field corner facing along the diagonal (10 m of free
 -- carpet), standing; the ball placed as place_ball does. Returns the truth after the ball settled.
 function M.setup(Sim, Motion, wait, side, gap, lateral)
@@ -196,11 +233,7 @@ function M.setup(Sim, Motion, wait, side, gap, lateral)
   Sim.teleport_ball(4.0, -3.5)
   wait(0.2)
   Motion.request('stand')
-  -- after a fall the robot stands up first
-  for _ = 1, 400 do
-    if Motion.state() == 'stance' then break end
-    wait(0.05)
-  end
+  M.until_stance(Motion, wait)
   wait(2.0)
   M.place_ball(Sim, side, gap, Sim.truth(), lateral)
   wait(0.5)
@@ -209,7 +242,7 @@ end
 
 -- Pushes the walking robot at its torso for 0.1 s with f N, 'forward' or sideways (to its left),
 -- and watches 3 s of robot time: true when it fell (the sim's truth, or the motion process's count).
--- The push scenarios share it (sim_scenarios.lua's push search, push_sweep.lua).
+-- The push scenarios share it (sim_scenarios.lua's push search, balance_scenarios.lua's, push_sweep.lua).
 function M.push_falls(Sim, Motion, wait_until, dir, f)
   local a = Sim.truth()
   local falls0 = Motion.falls()

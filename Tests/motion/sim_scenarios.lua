@@ -5,7 +5,8 @@
 -- sim's truth (Sim.truth()).
 -- luacheck: globals Sim Motion Walk wait arg shm Body
 local name = arg[1]
-local sc = require('Tests.scenario_lib').new(wait, Body)
+local scenario_lib = require('Tests.scenario_lib')
+local sc = scenario_lib.new(wait, Body)
 local tap, note, wait_until = sc.tap, sc.note, sc.wait_until
 local function wrap(a) return (a + math.pi) % (2 * math.pi) - math.pi end
 local deg = 180 / math.pi
@@ -23,11 +24,7 @@ end
 
 package.path = os.getenv('HRP_ROOT') .. '/Tests/motion/?.lua;' .. package.path
 local ks = require('kick_setup')
-local motion = ks.wait_for_motion(wait)
-if not motion then
-  tap(false, 'the motion process is not running')
-  os.exit(1)
-end
+local motion = ks.need_motion(wait, tap)
 
 -- WALK_PARAMS changes walk parameters first (e.g. to switch feedback off)
 ks.apply_walk_params(Walk, wait, note)
@@ -85,10 +82,15 @@ if not targets then
   os.exit(1)
 end
 
-function scenarios.forward(v)
-  local goal = targets.forward
-  v = tonumber(v) or goal.command
+-- a walk along one axis of targets.lua: its goal, the command (speed, or the goal's) and a fresh start
+local function start_axis(axis, speed)
+  local goal = targets[axis]
   start_clean()
+  return goal, tonumber(speed) or goal.command
+end
+
+function scenarios.forward(speed)
+  local goal, v = start_axis('forward', speed)
   local t0 = Sim.truth()
   local vel, fell, _, _, yaw = walk_for(v, 0, 0, 30, 3)
   note('forward: commanded %.2f m/s, measured %.3f m/s over 30 s, sideways %.3f m/s, heading drift %.1f deg',
@@ -126,10 +128,8 @@ function scenarios.stand(seconds)
 end
 
 -- (commands a little above the goal speeds: the feet slip a little on the carpet)
-function scenarios.sideways(v)
-  local goal = targets.sideways
-  v = tonumber(v) or goal.command
-  start_clean()
+function scenarios.sideways(speed)
+  local goal, v = start_axis('sideways', speed)
   local vel, fell = walk_for(0, v, 0, 15, 2)
   note('sideways: commanded %.3f m/s, measured %.3f m/s (forward %.3f)', v, vel[2], vel[1])
   tap(not fell and vel[2] >= goal.least,
@@ -139,10 +139,8 @@ function scenarios.sideways(v)
   tap(stand(5) and not Sim.truth().fallen, 'stops into stance')
 end
 
-function scenarios.turn(v)
-  local goal = targets.turn
-  v = tonumber(v) or goal.command
-  start_clean()
+function scenarios.turn(speed)
+  local goal, v = start_axis('turn', speed)
   local a0 = Sim.truth()
   local vel, fell, _, b = walk_for(0, 0, v, 10, 2)
   local drift = math.sqrt((b.x - a0.x) ^ 2 + (b.y - a0.y) ^ 2)
@@ -155,10 +153,8 @@ function scenarios.turn(v)
   tap(stand(5) and not Sim.truth().fallen, 'stops into stance')
 end
 
-function scenarios.backward(v)
-  local goal = targets.backward
-  v = tonumber(v) or goal.command
-  start_clean()
+function scenarios.backward(speed)
+  local goal, v = start_axis('backward', speed)
   local vel, fell = walk_for(-v, 0, 0, 15, 2)
   note('backward: commanded %.3f m/s, measured %.3f m/s', -v, vel[1])
   tap(not fell and vel[1] <= -goal.least,
@@ -209,23 +205,31 @@ function scenarios.random(seconds, seed)
   tap(not fell, string.format('%.0f s of random velocity commands without a fall', seconds))
 end
 
--- pushes the walking robot over (fx along its heading) and follows the recovery
-local function push_over(dir)
+-- from a fresh start, walks at 0.1 m/s for `seconds`, pushes the robot along its heading with f N
+-- (backwards when f < 0) for 0.2 s and watches up to 4 s: the fall count before the push, the robot
+-- time of the push, of the fall (the sim's truth) and of its detection (the motion process), nil
+-- where none came
+local function push_down(seconds, f)
   start_clean()
   Motion.request('walk')
   Walk.set_velocity(0.1, 0, 0)
-  wait(3)
+  wait(seconds)
   local falls0 = Motion.falls()
   local a = Sim.truth()
-  local f = 25 * dir -- 25 N for 0.2 s: over it goes, without a somersault
   Sim.push(f * math.cos(a.yaw), f * math.sin(a.yaw), 0.2)
-  local t_push = Body.get_time()
-  local t_fallen, t_detect
+  local t_push, t_fallen, t_detect = Body.get_time(), nil, nil
   wait_until(function()
     if not t_fallen and Sim.truth().fallen then t_fallen = Body.get_time() end
     if not t_detect and Motion.falls() > falls0 then t_detect = motion.fall_time[0] end
     return t_fallen and t_detect
   end, 4)
+  return falls0, t_push, t_fallen, t_detect
+end
+
+-- pushes the walking robot over (fx along its heading) and follows the recovery
+local function push_over(dir)
+  -- 25 N for 0.2 s: over it goes, without a somersault
+  local falls0, t_push, t_fallen, t_detect = push_down(3, 25 * dir)
   local what = dir > 0 and 'forwards' or 'backwards'
   if not t_fallen then
     tap(false, 'pushed ' .. what .. ': the robot did not fall (push too weak)')
@@ -260,20 +264,7 @@ local function push_policy(dir, force)
     tap(false, 'fallpolicy: the walk config of ' .. robot_name .. ' has no fallPolicy')
     return
   end
-  start_clean()
-  Motion.request('walk')
-  Walk.set_velocity(0.1, 0, 0)
-  wait(4)
-  local falls0 = Motion.falls()
-  local a = Sim.truth()
-  local f = force * dir
-  Sim.push(f * math.cos(a.yaw), f * math.sin(a.yaw), 0.2)
-  local t_push, t_fallen, t_detect = Body.get_time(), nil, nil
-  wait_until(function()
-    if not t_fallen and Sim.truth().fallen then t_fallen = Body.get_time() end
-    if not t_detect and Motion.falls() > falls0 then t_detect = motion.fall_time[0] end
-    return t_fallen and t_detect
-  end, 4)
+  local falls0, t_push, t_fallen, t_detect = push_down(4, force * dir)
   local what = dir > 0 and 'forwards' or 'backwards'
   if not t_fallen then
     tap(false, string.format('pushed %s (%.0f N for 0.2 s): the robot did not fall (push too weak)', what, force))
@@ -403,10 +394,7 @@ function scenarios.pushmax(label, dir)
     end
     return true
   end
-  for _ = 1, 7 do
-    local mid = 0.5 * (lo + hi)
-    if survives(mid) then lo = mid else hi = mid end
-  end
+  lo = scenario_lib.bisect(lo, hi, 7, survives)
   dir = dir or 'side'
   note('pushmax %s %s: largest push survived while walking at %.2f m/s: %.1f N x 0.1 s = %.2f N s', label or '',
     dir, v, lo, lo * 0.1)

@@ -24,11 +24,7 @@ if type(layout) ~= 'table' or not layout.objects then
   tap(false, 'terrain: unknown layout ' .. tostring(layout_name))
   os.exit(1)
 end
-local motion = ks.wait_for_motion(wait)
-if not motion then
-  tap(false, 'the motion process is not running')
-  os.exit(1)
-end
+local motion = ks.need_motion(wait, tap)
 
 -- WALK_PARAMS changes walk parameters first (e.g. to switch feedback off)
 ks.apply_walk_params(Walk, wait, note)

@@ -28,18 +28,12 @@ local function fails(text, msg)
 end
 
 describe('walk config spec', function()
-  setup(function()
-    tmp = os.tmpname()
-    os.remove(tmp)
+  files.config_root(function(dir)
+    tmp = dir
     for _, f in ipairs({ 'Config/common/walk.lua', 'Config/spec/walk.lua' }) do
       files.write(tmp, f, files.read(root .. '/' .. f))
     end
     files.write(tmp, 'Config/platforms/Test/walk.lua', 'return {}')
-    Config.use_root(tmp)
-  end)
-  teardown(function()
-    Config.use_root(nil)
-    os.execute('rm -rf ' .. tmp)
   end)
 
   it("passes every body's walk, filling the kick phases' and the arms' left-out fields", function()

@@ -46,22 +46,6 @@ local function ball_spot(kind, foot, dx, dy)
   return b.x + dx, sgn * (p.footY + b.y + dy)
 end
 
-local function walk_steady()
-  Sim.reset()
-  wait(0.2)
-  Motion.request('stand')
-  for _ = 1, 400 do
-    if Motion.state() == 'stance' then break end
-    wait(0.05)
-  end
-  Sim.teleport_robot(-3.5, 0, 0)
-  Sim.teleport_ball(4.0, -3.5)
-  wait(1.0)
-  Motion.request('walk')
-  Walk.set_velocity(vx, 0, 0)
-  wait(2.5)
-end
-
 local results, ncase = {}, 0
 for _, sw in ipairs(sweeps) do
   local kind = sw.kind
@@ -69,7 +53,7 @@ for _, sw in ipairs(sweeps) do
     for _, dx in ipairs(sw.xs) do
       for _, dy in ipairs(sw.ys) do
         ncase = ncase + 1
-        walk_steady()
+        ks.walk_steady(Sim, Motion, Walk, wait, vx)
         local falls0, steps0 = Motion.falls(), motion.walk_steps[0]
         local _, kicks0 = Walk.kick_status()
         local r = Sim.truth()

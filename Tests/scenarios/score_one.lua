@@ -19,14 +19,11 @@ repeat
 until (bx - rx) ^ 2 + (by - ry) ^ 2 > 0.5 ^ 2
 
 -- wait until the robot's processes take part in the lockstep (motion, vision, behavior)
+local participants = require('Tests.scenario_lib').participants
 local sync = shm.open('sync')
 local deadline = os.time() + 60
 while true do
-  local n = 0
-  for i = 0, sync:count('pid') - 1 do
-    if sync.pid[i] ~= 0 and shm.C.shm_pid_alive(sync.pid[i]) == 1 then n = n + 1 end
-  end
-  if n >= 4 then break end -- them and this script
+  if participants(sync) >= 4 then break end -- them and this script
   if os.time() > deadline then error('the robot processes did not join the lockstep within 60 s') end
   -- a process that has joined holds the clock until its first step, which may take a few seconds
   -- of start-up on a loaded machine: wait() then reports a stopped clock, and we try again

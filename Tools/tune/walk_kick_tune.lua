@@ -85,24 +85,8 @@ local function apply(x)
   set('tStep', (sum + 0.06) / (cfg.phSingle[2] - cfg.phSingle[1]))
 end
 
-local function walk_steady()
-  Sim.reset()
-  wait(0.2)
-  Motion.request('stand')
-  for _ = 1, 400 do
-    if Motion.state() == 'stance' then break end
-    wait(0.05)
-  end
-  Sim.teleport_robot(-3.5, 0, 0)
-  Sim.teleport_ball(4.0, -3.5)
-  wait(1.0)
-  Motion.request('walk')
-  Walk.set_velocity(0.12, 0, 0)
-  wait(2.5)
-end
-
 local function case(foot, dx, dy)
-  walk_steady()
+  ks.walk_steady(Sim, Motion, Walk, wait, 0.12)
   local falls0 = Motion.falls()
   local b = cfg.ball
   local sgn = foot == 'left' and 1 or -1
