@@ -29,31 +29,31 @@ function M.ball()
   end)
 end
 
+-- The first items of the latest frame's list: count_field says how many (at most max), item(v, i)
+-- makes the i-th from the block.
+local function frame_list(count_field, max, item)
+  return vision():read(function(v)
+    local list = {}
+    for i = 1, math.min(v[count_field][0], max) do list[i] = item(v, i) end
+    return list
+  end)
+end
+
 -- The goal posts of the latest frame.
 function M.goal_posts()
-  local b = vision()
-  return b:read(function(v)
-    local posts = {}
-    for i = 1, math.min(v.goal_posts[0], 2) do
-      posts[i] = { x = v.goal_position[2 * i - 2], y = v.goal_position[2 * i - 1] }
-    end
-    return posts
+  return frame_list('goal_posts', 2, function(v, i)
+    return { x = v.goal_position[2 * i - 2], y = v.goal_position[2 * i - 1] }
   end)
 end
 
 -- Other robots of the latest frame: the foot point of each (x, y), the team colour seen (-1 unknown,
 -- 0 blue, 1 red), its box in the image and whether its feet are in it (else its range is an upper bound).
 function M.robots()
-  local b = vision()
-  return b:read(function(v)
-    local list = {}
-    for i = 1, math.min(v.robots[0], 4) do
-      local k = 4 * (i - 1)
-      list[i] = { x = v.robot_position[2 * i - 2], y = v.robot_position[2 * i - 1], team = v.robot_team[i - 1],
-                  u0 = v.robot_image[k], v0 = v.robot_image[k + 1], u1 = v.robot_image[k + 2],
-                  v1 = v.robot_image[k + 3], foot_visible = v.robot_foot_visible[i - 1] ~= 0 }
-    end
-    return list
+  return frame_list('robots', 4, function(v, i)
+    local k = 4 * (i - 1)
+    return { x = v.robot_position[2 * i - 2], y = v.robot_position[2 * i - 1], team = v.robot_team[i - 1],
+             u0 = v.robot_image[k], v0 = v.robot_image[k + 1], u1 = v.robot_image[k + 2],
+             v1 = v.robot_image[k + 3], foot_visible = v.robot_foot_visible[i - 1] ~= 0 }
   end)
 end
 
