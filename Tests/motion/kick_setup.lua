@@ -254,4 +254,21 @@ function M.push_falls(Sim, Motion, wait_until, dir, f)
   return wait_until(function() return Sim.truth().fallen or Motion.falls() > falls0 end, 3)
 end
 
+-- A fresh world with the robot in the field's far corner facing its centre (the ball at ball = { x, y }
+-- too, or left where the reset puts it), in a settled stance: after a fall the motion process stands up
+-- first, so a push never starts on a robot still lying down. who: the caller's name for the error.
+function M.fresh_stance(Sim, Motion, Walk, wait, wait_until, who, ball)
+  Sim.reset()
+  wait(0.2)
+  Sim.teleport_robot(-4.3, -3.3, math.atan2(6.6, 8.6))
+  if ball then Sim.teleport_ball(ball[1], ball[2]) end
+  wait(0.2)
+  Walk.set_velocity(0, 0, 0)
+  Motion.request('stand')
+  if not wait_until(function() return Motion.state() == 'stance' end, 15) then
+    error(who .. ': the robot is not back in stance 15 s after a reset (state ' .. Motion.state() .. ')')
+  end
+  wait(1.5)
+end
+
 return M

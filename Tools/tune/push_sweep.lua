@@ -52,18 +52,7 @@ end
 
 local T = Walk.get('tStep')
 local function survives(f, k)
-  Sim.reset()
-  wait(0.2)
-  Sim.teleport_robot(-4.3, -3.3, math.atan2(6.6, 8.6))
-  Sim.teleport_ball(4.0, -3.5)
-  wait(0.2)
-  Walk.set_velocity(0, 0, 0)
-  Motion.request('stand')
-  -- after a fall the motion process stands up first: each push starts from a settled stance
-  if not wait_until(function() return Motion.state() == 'stance' end, 15) then
-    error('push_sweep: the robot is not back in stance 15 s after a reset (state ' .. Motion.state() .. ')')
-  end
-  wait(1.5)
+  ks.fresh_stance(Sim, Motion, Walk, wait, wait_until, 'push_sweep', { 4.0, -3.5 })
   Motion.request('walk')
   Walk.set_velocity(0.2, 0, 0)
   wait(3 + k * 2 * T / phases)

@@ -44,18 +44,7 @@ local function feet_truth(s)
 end
 
 local function one(f, k, csv)
-  Sim.reset()
-  wait(0.2)
-  Sim.teleport_robot(-4.3, -3.3, math.atan2(6.6, 8.6))
-  wait(0.2)
-  Walk.set_velocity(0, 0, 0)
-  Motion.request('stand')
-  -- after a fall the motion process stands up first (a fixed wait started the next push on a robot
-  -- still lying down: counted as a fall at once); then as sim_scenarios.lua's pushmax
-  if not wait_until(function() return Motion.state() == 'stance' end, 15) then
-    error('push_trace: the robot is not back in stance 15 s after a reset (state ' .. Motion.state() .. ')')
-  end
-  wait(1.5)
+  ks.fresh_stance(Sim, Motion, Walk, wait, wait_until, 'push_trace')   -- then as sim_scenarios.lua's pushmax
   Motion.request('walk')
   Walk.set_velocity(0.2, 0, 0)
   wait(3 + k * Walk.get('tStep') / 2)
