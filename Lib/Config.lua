@@ -314,6 +314,31 @@ function M.robot_file(name, robot)
   return M.robot_dir(robot) .. '/' .. name
 end
 
+-- A body's per-joint table (limits, actuators) written once for a joint both sides share: keys are
+-- the names of `joints` (a body's joint list), or a name without its side prefix (`prefixes`, the
+-- left's and the right's: { 'l_', 'r_' }, { 'L', 'R' }) for the joint of that name on both sides,
+-- whose value is the same on both unless it is given as { l = left's, r = right's }. Every joint
+-- gets one value and every key names a joint; the result is keyed by full joint names.
+function M.both_sides(joints, prefixes, t)
+  local out, used = {}, {}
+  for _, j in ipairs(joints) do
+    local key, side = j, nil
+    if t[j] == nil then
+      for s, p in ipairs(prefixes) do
+        if j:sub(1, #p) == p then key, side = j:sub(#p + 1), s == 1 and 'l' or 'r' end
+      end
+    end
+    local v = t[key]
+    if side and type(v) == 'table' and (v.l ~= nil or v.r ~= nil) then v = v[side] end
+    if v == nil then error(string.format("both_sides: no value for joint '%s'", j), 2) end
+    out[j], used[key] = v, true
+  end
+  for k in pairs(t) do
+    if not used[k] then error(string.format("both_sides: key '%s' names no joint", tostring(k)), 2) end
+  end
+  return out
+end
+
 -- Value of an optional key (nil when absent) without tripping the strict check.
 function M.optional(tbl, key, default)
   local v = rawget(tbl, key)
