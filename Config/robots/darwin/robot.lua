@@ -14,22 +14,9 @@
 -- below the shoulder axis, -0.050 0 0.2617) is the largest uncertainty: ROBOTIS' URDF suggests
 -- (-0.0193, -0.0031, 0.3030); the reference keeps Webots' value and so does this description.
 -- the ROBOTIS layout it shares with the OP3: the same joint names, bus order and groups
-local Config = require('Config')
-local op3 = dofile(Config.robot_dir('op3') .. '/robot.lua')
+local op3 = dofile(require('Config').robot_dir('op3') .. '/robot.lua')
 local actuator = {}
 for _, j in ipairs(op3.joints) do actuator[j] = 'MX-28' end
--- the Dynamixel rows (see `buses` below): each servo an MX-28 on protocol 1.0 with the OP3's ROBOTIS id
--- (the same numbering, the same order), then the CM-730 board. The CM-730's axes (darwin_reference.txt
--- IMU): GYRO_X = -wx, GYRO_Y = -wy, GYRO_Z = wz; ACC_X points to the robot's right, ACC_Y forward, ACC_Z up.
-local devices = {}
-for _, d in ipairs(op3.devices) do
-  if d.joint then
-    devices[#devices + 1] = { joint = d.joint, bus = 1, id = d.id, model = 'MX-28', protocol = 1, direction = 1,
-      zero = 2048 }
-  end
-end
-devices[#devices + 1] = { board = 'CM-730', bus = 1, id = 200, protocol = 1,
-  gyro_axes = { '-x', '-y', 'z' }, accel_axes = { 'y', '-x', 'z' } }
 
 return {
   name = 'darwin',
@@ -44,8 +31,9 @@ return {
   -- joint limits, rad { min, max }, in the convention above: the Webots model's motor limits
   -- (darwin_reference.txt, JOINTS), the only complete public set, taken as they are: each lies
   -- within the servo's 0..4095 counts and the mechanical range as that model has it. Left and
-  -- right are not exact mirrors in the source (hip yaw and roll); kept.
-  limits = Config.both_sides(op3.joints, { 'l_', 'r_' }, {
+  -- right are not exact mirrors in the source (hip yaw and roll); kept. A joint of both sides is named
+  -- once with the left's and the right's range (Lib/Config.lua: `knee` for l_knee and r_knee).
+  limits = {
     head_pan = { -1.81, 1.81 }, head_tilt = { -0.36, 0.94 },
     sho_pitch = { l = { -3.14, 2.85 }, r = { -3.14, 3.14 } },
     sho_roll  = { l = { -2.25, 0.77 }, r = { -0.68, 2.30 } },
@@ -56,7 +44,7 @@ return {
     knee      = { l = { -2.25, 0.03 }, r = { -0.02, 2.25 } },
     ank_pitch = { l = { -1.39, 1.22 }, r = { -1.24, 1.38 } },
     ank_roll  = { l = { -1.02, 0.60 }, r = { -0.68, 1.04 } },
-  }),
+  },
   -- each joint's actuator model (Config/common/actuators.lua): MX-28 at 11.1 V everywhere
   actuator = actuator,
   -- the Dynamixel bus on the OP platform (Platforms/OP), in the form of ROBOTIS' .robot files: the
@@ -65,10 +53,35 @@ return {
   -- JOINTS): odd = right, even = left, 19/20 = head. direction +1 and zero 2048 everywhere: this body's
   -- joint convention is its servos' own (the axes of its URDF, darwin.urdf, follow the servos; zero =
   -- every servo at its centre):  angle (rad) = direction * (count - zero) * 2*pi / 4096.
+  -- The CM-730's axes (darwin_reference.txt IMU): GYRO_X = -wx, GYRO_Y = -wy, GYRO_Z = wz; ACC_X
+  -- points to the robot's right, ACC_Y forward, ACC_Z up.
   buses = {
     { port = '/dev/ttyUSB0', baud = 1000000 },   -- the CM-730's FTDI; MX-28 baud register 1
   },
-  devices = devices,
+  devices = {
+    { joint = 'head_pan',    bus = 1, id = 19, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
+    { joint = 'head_tilt',   bus = 1, id = 20, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
+    { joint = 'l_sho_pitch', bus = 1, id =  2, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
+    { joint = 'l_sho_roll',  bus = 1, id =  4, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
+    { joint = 'l_el',        bus = 1, id =  6, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
+    { joint = 'l_hip_yaw',   bus = 1, id =  8, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
+    { joint = 'l_hip_roll',  bus = 1, id = 10, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
+    { joint = 'l_hip_pitch', bus = 1, id = 12, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
+    { joint = 'l_knee',      bus = 1, id = 14, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
+    { joint = 'l_ank_pitch', bus = 1, id = 16, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
+    { joint = 'l_ank_roll',  bus = 1, id = 18, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
+    { joint = 'r_hip_yaw',   bus = 1, id =  7, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
+    { joint = 'r_hip_roll',  bus = 1, id =  9, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
+    { joint = 'r_hip_pitch', bus = 1, id = 11, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
+    { joint = 'r_knee',      bus = 1, id = 13, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
+    { joint = 'r_ank_pitch', bus = 1, id = 15, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
+    { joint = 'r_ank_roll',  bus = 1, id = 17, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
+    { joint = 'r_sho_pitch', bus = 1, id =  1, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
+    { joint = 'r_sho_roll',  bus = 1, id =  3, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
+    { joint = 'r_el',        bus = 1, id =  5, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
+    { board = 'CM-730', bus = 1, id = 200, protocol = 1,
+      gyro_axes = { '-x', '-y', 'z' }, accel_axes = { 'y', '-x', 'z' } },
+  },
   -- massless frames Tools/urdf/gen_urdf.py adds to darwin.urdf (the URDF carries them; nothing else reads
   -- this table): link = the link it is fixed to; xyz = its origin and rpy its orientation (URDF
   -- roll, pitch, yaw), both in the reference frame at the zero pose (soles on z = 0)

@@ -24,8 +24,6 @@
 --   and roll it (NK1 = -NK2); the head chain's look-at solves both for the camera's optical axis
 --   (Modules/kinematics: two-tilt head), so it points up/down and a little to the sides (within
 --   the +-30 deg limits); the waist turns the whole upper body for more.
-local Config = require('Config')
-
 local joints = {
   -- hubo-ach's joint index order (hubo.h), NKY and the fingers left out (not in the model)
   'WST', 'NK1', 'NK2',
@@ -56,9 +54,9 @@ return {
   -- and HuboCan's software limits (the operating range) for each joint (hubo_reference.txt LIMITS;
   -- left and right hip roll and wrist pitch differ in the source: kept), except the knees' lower
   -- end: openHubo's -0.0698, not HuboCan's 0 (a bound at the straight leg itself, which would flag
-  -- every straight-leg pose as clamped; the walk keeps the knees bent anyway). A joint of both sides
-  -- (HY: LHY and RHY) has one range unless its sides differ.
-  limits = Config.both_sides(joints, { 'L', 'R' }, {
+  -- every straight-leg pose as clamped; the walk keeps the knees bent anyway). A joint of both sides is
+  -- named once (Lib/Config.lua: HY for LHY and RHY), with one range unless its sides differ.
+  limits = {
     WST = { -3.14, 3.14 }, NK1 = { -0.5236, 0.5236 }, NK2 = { -0.5236, 0.5236 },
     HY = { -1.5708, 1.5708 }, HP = { -1.57, 1.57 }, KN = { -0.0698, 2.6005 },
     AP = { -1.2915, 1.693 }, AR = { -0.192, 0.192 },
@@ -67,17 +65,17 @@ return {
     HR = { l = { -0.52, 0.52 }, r = { -0.4887, 0.4887 } },
     SR = { l = { -0.262, 2.618 }, r = { -2.618, 0.262 } },
     SY = { l = { -2.0, 2.9671 }, r = { -2.9671, 2.0 } },
-  }),
+  },
   -- each joint's drive (Config/common/actuators.lua, HUBO2-*: reduction and torque of the joint;
   -- the motor data no public source gives is chosen there, conservatively, and said so), the same
   -- on both sides
-  actuator = Config.both_sides(joints, { 'L', 'R' }, {
+  actuator = {
     WST = 'HUBO2-250-71', NK1 = 'HUBO2-NECK', NK2 = 'HUBO2-NECK',
     HY = 'HUBO2-250-71', HR = 'HUBO2-506-95', HP = 'HUBO2-200-95',
     KN = 'HUBO2-160-95', AP = 'HUBO2-250-71', AR = 'HUBO2-316-71',
     SP = 'HUBO2-145-35', SR = 'HUBO2-100-35', SY = 'HUBO2-100-25',
     EB = 'HUBO2-100-25', WY = 'HUBO2-100-9', WP = 'HUBO2-100-9',
-  }),
+  },
   -- the DCM's control period, s: hubo-ach's 200 Hz
   period = 0.005,
   -- the kinematics' chains (Config/common/robot.lua) with the palms as the arms' tips; the arms and

@@ -2,8 +2,6 @@
 -- Joint angles follow the right-hand rule about each joint's axis in the robot description
 -- (op3.urdf, beside this file); at zero every joint is in the reference zero pose (straight legs,
 -- arms down). The servos turn the same way as these axes (direction +1 on the bus).
-local Config = require('Config')
-
 local joints = {
   'head_pan', 'head_tilt',
   'l_sho_pitch', 'l_sho_roll', 'l_el',
@@ -48,13 +46,14 @@ return {
   -- 6-axis force/torque at the ankles (dcm.sensor.ft), the sim's instruments: the real OP3 has none,
   -- so on PLATFORM=OP these slots read 0
   ft = { lfoot = 'l_ank_roll', rfoot = 'r_ank_roll' },
-  -- joint limits, rad { min, max }: kept inside the mechanical ranges, the same on both sides
-  limits = Config.both_sides(joints, { 'l_', 'r_' }, {
+  -- joint limits, rad { min, max }: kept inside the mechanical ranges; `knee` is l_knee's and r_knee's
+  -- (a joint of both sides named once: Lib/Config.lua)
+  limits = {
     head_pan = { -1.57, 1.57 }, head_tilt = { -1.2, 0.6 },
     sho_pitch = { -3.14, 3.14 }, sho_roll = { -1.6, 1.6 }, el = { -2.6, 2.6 },
     hip_yaw = { -1.2, 1.2 }, hip_roll = { -0.8, 0.8 }, hip_pitch = { -2.0, 2.0 },
     knee = { -2.6, 2.6 }, ank_pitch = { -1.4, 1.4 }, ank_roll = { -0.8, 0.8 },
-  }),
+  },
   -- the Dynamixel bus on the OP platform (Platforms/OP), in the form of ROBOTIS' .robot files
   -- (op3_manager/config/OP3.robot): the buses (port, baud rate; `--port` overrides bus 1's), then one
   -- row per servo (the joint it drives) or board (IMU, buttons), in any order. ROBOTIS numbering:
