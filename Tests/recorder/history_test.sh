@@ -7,8 +7,7 @@ set -u
 cd "$(dirname "$0")/../.."
 source Run/env.sh
 source Tests/recorder/lib.sh
-rec_start
-luajit Tests/recorder/fake_robot.lua 1.5 >/dev/null
+rec_fake 1.5
 ./run_repl -e "
 local t, v = history('dcm.sensor.gyro', 1.0)
 local ok, bad = true, 0

@@ -7,8 +7,7 @@ set -u
 cd "$(dirname "$0")/../.."
 source Run/env.sh
 source Tests/recorder/lib.sh
-rec_start
-luajit Tests/recorder/fake_robot.lua 2.0 >/dev/null
+rec_fake 2.0
 rec_stop
 # the log times of the ticks at or before 1.003 s and 0.5 s, of the third after the latter, of the last tick
 read -r at1 at05 at05_3 last < <(python3 -c "

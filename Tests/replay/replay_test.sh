@@ -14,8 +14,7 @@ source Tests/recorder/lib.sh
 mkdir -p "$dir/site"
 cp Config/site/*.lua "$dir/site/" 2>/dev/null
 printf 'return { flush_s = 0.1 }\n' > "$dir/site/recorder.lua"
-HRP_SITE="$dir/site" rec_start
-luajit Tests/recorder/fake_robot.lua 2.0 >/dev/null
+HRP_SITE="$dir/site" rec_fake 2.0
 rec_stop
 read -r sensors frames < <(python3 -c "
 import sys
