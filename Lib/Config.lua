@@ -243,6 +243,42 @@ local function concern_spec(concern)
   return read_file({ abs = abs, file = 'Config/spec/' .. concern .. '.lua' })
 end
 
+-- robot.lua's per-joint tables (limits, actuator) name a joint that both sides have once: a key that
+-- is no joint's name stands for the joints of that name with a side prefix (l_ and r_, or L and R:
+-- `knee` for l_knee and r_knee, `HR` for LHR and RHR), each taking the value, or the left's and
+-- the right's of { l = left's, r = right's }. Expanded as a body's file is read (the layer with
+-- `joints`), so the layers above it and every reader see full joint names only.
+local SIDES = { { 'l_', 'l' }, { 'r_', 'r' }, { 'L', 'l' }, { 'R', 'r' } }
+local function expand_sides(t, file)
+  if type(t.joints) ~= 'table' then return end
+  local is_joint = {}
+  for _, j in ipairs(t.joints) do is_joint[j] = true end
+  for _, key in ipairs({ 'limits', 'actuator' }) do
+    local tbl = t[key]
+    if type(tbl) == 'table' then
+      local short = {}
+      for k, v in pairs(tbl) do
+        if not is_joint[k] then short[k] = v end
+      end
+      for k, v in pairs(short) do
+        tbl[k] = nil
+        local found = false
+        for _, side in ipairs(SIDES) do
+          local j = side[1] .. k
+          if is_joint[j] then
+            found = true
+            local per_side = type(v) == 'table' and (v.l ~= nil or v.r ~= nil)
+            tbl[j] = copy(per_side and v[side[2]] or v)
+          end
+        end
+        if not found then
+          error(string.format("%s: key '%s.%s' names no joint (nor one of each side)", file, key, tostring(k)), 0)
+        end
+      end
+    end
+  end
+end
+
 -- Merges the layers of a concern: the plain table, the list of files used and the origin of
 -- each key path (see merge).
 local function build(concern, robot, platform)
@@ -253,6 +289,7 @@ local function build(concern, robot, platform)
   end
   for _, l in ipairs(ls) do
     local t = read_file(l)
+    if t and concern == 'robot' then expand_sides(t, l.file) end
     if t then
       merge(result, t, l.file, '', l.default or (not has_default and #used == 0), origin)
       used[#used + 1] = l.file

@@ -9,22 +9,9 @@ set -u
 cd "${HRP_ROOT:-$(dirname "$0")/../..}"
 export HRP_ROOT=$PWD PLATFORM=OP ROBOT=darwin
 export ROBOT_ID=${ROBOT_ID:-9400}
-T=$(mktemp -d)
-EMU="" DCM=""
-n=0 fails=0
-ok() { n=$((n + 1)); if [ "$1" = 0 ]; then echo "ok $n - $2"; else echo "not ok $n - $2"; fails=$((fails + 1)); fi; }
-cleanup() {
-  [ -n "$DCM" ] && kill "$DCM" 2>/dev/null
-  [ -n "$EMU" ] && kill "$EMU" 2>/dev/null
-  wait 2>/dev/null
-  exec 3>&- 2>/dev/null
-  rm -rf "$T"
-  rm -f /dev/shm/hrp."$ROBOT_ID".* 2>/dev/null
-}
-trap cleanup EXIT
+source Tests/dcm_emu_lib.sh
 
 # the emulated bus runs --realtime: like hardware, it answers on time on a loaded machine
-repl() { ./run_repl -e "$1" 2>&1 | tail -1; }
 # start_emu ARGS...: emulator with commands on fd 3, answers in $T/emu.out
 start_emu() {
   rm -f "$T/emu.in"; mkfifo "$T/emu.in"
@@ -33,20 +20,9 @@ start_emu() {
   exec 3>"$T/emu.in"
   for _ in $(seq 100); do [ -e "$T/dxl" ] && break; sleep 0.05; done
 }
-stop_emu() { echo quit >&3; wait "$EMU" 2>/dev/null; EMU=""; exec 3>&-; }
 start_dcm() { ./run_dcm --port "$T/dxl" --quiet "$@" 2>>"$T/dcm.log" & DCM=$!; }
-stop_dcm() { kill "$DCM" 2>/dev/null; wait "$DCM" 2>/dev/null; DCM=""; }
 # emu_stat ID: "goal pos torque" of a servo from the emulator's stats
-emu_stat() {
-  : >"$T/emu.out"; echo stats >&3
-  for _ in $(seq 100); do grep -q '^end' "$T/emu.out" && break; sleep 0.02; done
-  grep "^servo $1 " "$T/emu.out" | awk '{print $4, $6, $8}'
-}
-# wait_for LUA_EXPR: polls the REPL until the expression prints true (10 s at most)
-wait_for() {
-  for _ in $(seq 50); do [ "$(repl "print($1)")" = true ] && return 0; sleep 0.2; done
-  return 1
-}
+emu_stat() { emu_stats; grep "^servo $1 " "$T/emu.out" | awk '{print $4, $6, $8}'; }
 
 # ---------------------------------------------------------------- DARwIn-OP, protocol 1.0
 rm -f /dev/shm/hrp."$ROBOT_ID".*
@@ -90,8 +66,7 @@ rm -f /dev/shm/hrp."$ROBOT_ID".*
 start_emu --dead 5 --corrupt 0.01 --seed 3
 # a loaded test machine may schedule the emulator late: a wider answer margin than on a real
 # bus keeps lateness from being counted as loss (the margin is a config value, timeout_margin)
-start_dcm --cycles 1000 --timeout-margin 0.02
-wait "$DCM"; DCM=""
+dcm_to_end --cycles 1000 --timeout-margin 0.02
 echo stats >&3; sleep 0.3
 corrupted=$(grep -o 'corrupted [0-9]*' "$T/emu.out" | tail -1 | awk '{print $2}')
 read -r cycles dead5 dead_others timeouts rx missed < <(repl 'local s = require("shm").open("dcm.stats")

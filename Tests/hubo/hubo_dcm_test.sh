@@ -11,26 +11,13 @@ cd "${HRP_ROOT:-$(dirname "$0")/../..}"
 TOP=$PWD
 source Tests/hubo/tree.sh
 export ROBOT_ID=${ROBOT_ID:-9450} PLATFORM=Hubo ROBOT=hubo2plus
-T=$(mktemp -d)
+source Tests/dcm_emu_lib.sh
 hubo_tree "$T/root"
 mkdir "$T/bus"
 export FAKECAN_DIR=$T/bus
 FAKE=$TOP/build/testlib/libfakecan.so
-EMU="" DCM=""
-n=0 fails=0
-ok() { n=$((n + 1)); if [ "$1" = 0 ]; then echo "ok $n - $2"; else echo "not ok $n - $2"; fails=$((fails + 1)); fi; }
-cleanup() {
-  [ -n "$DCM" ] && kill "$DCM" 2>/dev/null
-  [ -n "$EMU" ] && kill "$EMU" 2>/dev/null
-  wait 2>/dev/null
-  exec 3>&- 2>/dev/null
-  rm -rf "$T"
-  rm -f /dev/shm/hrp."$ROBOT_ID".* 2>/dev/null
-}
-trap cleanup EXIT
 cd "$T/root"
 
-repl() { ./run_repl -e "$1" 2>&1 | tail -1; }
 start_emu() {
   rm -f "$T/emu.in"; mkfifo "$T/emu.in"
   HUBO_FAKE_CAN=1 Platforms/Hubo/emulator/hubo_emulator --stdin --quiet --realtime "$@" <"$T/emu.in" >>"$T/emu.out" 2>>"$T/emu.log" &
@@ -38,22 +25,10 @@ start_emu() {
   exec 3>"$T/emu.in"
   for _ in $(seq 100); do grep -q ready "$T/emu.log" 2>/dev/null && break; sleep 0.05; done
 }
-stop_emu() { echo quit >&3; wait "$EMU" 2>/dev/null; EMU=""; exec 3>&-; }
 start_dcm() { LD_PRELOAD=$FAKE ./run_dcm "$@" 2>>"$T/dcm.log" & DCM=$!; }
-stop_dcm() { kill "$DCM" 2>/dev/null; wait "$DCM" 2>/dev/null; DCM=""; }
 # emu_board NAME: "ref0 ref1 enc0 enc1 fet ctrl home dead" from the emulator's stats
-emu_board() {
-  : >"$T/emu.out"; echo stats >&3
-  for _ in $(seq 100); do grep -q '^end' "$T/emu.out" && break; sleep 0.02; done
-  grep "^board $1 " "$T/emu.out" | awk '{print $8, $9, $11, $12, $14, $16, $18, $20}'
-}
-emu_line() { : >"$T/emu.out"; echo stats >&3
-  for _ in $(seq 100); do grep -q '^end' "$T/emu.out" && break; sleep 0.02; done
-  grep "^$1" "$T/emu.out"; }
-wait_for() {
-  for _ in $(seq 50); do [ "$(repl "print($1)")" = true ] && return 0; sleep 0.2; done
-  return 1
-}
+emu_board() { emu_stats; grep "^board $1 " "$T/emu.out" | awk '{print $8, $9, $11, $12, $14, $16, $18, $20}'; }
+emu_line() { emu_stats; grep "^$1" "$T/emu.out"; }
 # joint indices by name (J.RSP), whatever the body's joint order
 stats() { repl "local s = require('shm').open('dcm.stats'); local J = {}
   for i, name in ipairs(require('Config').load('robot').joints) do J[name] = i - 1 end; print($1)"; }
@@ -143,11 +118,9 @@ stop_dcm
 
 # ---------------------------------------------------------------- 1% corrupted frames
 stop_emu
-rm -f /dev/shm/hrp."$ROBOT_ID".*
-: >"$T/dcm.log"
+fresh_run
 start_emu --corrupt 0.01 --seed 5
-start_dcm --cycles 1000
-wait "$DCM"; DCM=""
+dcm_to_end --cycles 1000
 corrupted=$(emu_line totals | awk '{print $9}')
 read -r cycles missed rate rx to < <(stats 'string.format("%d %d %.1f %d %d", s.cycles[0], s.missed_cycles[0], s.rate[0], s.rx_errors[0], (function() local t = 0 for k = 0, 31 do t = t + s.board_timeouts[k] end return t end)())')
 echo "# 1000 cycles, 1% corrupt: emulator corrupted $corrupted frames; DCM: rate $rate Hz, $missed missed cycles, rx_errors $rx, board timeouts $to"
@@ -163,8 +136,7 @@ ok $([ "${classes% *}" = "${corrupted:-x}" ]; echo $?) "every corrupted frame is
 ok $([ "${to:-99999}" -le $(( ${corrupted:-0} + 20 * ${missed:-0} + 5 )) ]; echo $?) "only the answers hit are lost ($to timeouts for $corrupted corrupted)"
 
 # ---------------------------------------------------------------- a bus goes away and comes back
-rm -f /dev/shm/hrp."$ROBOT_ID".*
-: >"$T/dcm.log"
+fresh_run
 start_dcm
 wait_for 'require("shm").open("dcm.stats").cycles[0] > 50' >/dev/null
 touch "$T/bus/can1.down"
@@ -179,8 +151,7 @@ stop_dcm
 stop_emu
 
 # ---------------------------------------------------------------- boards that come late, homing
-rm -f /dev/shm/hrp."$ROBOT_ID".*
-: >"$T/dcm.log"
+fresh_run
 start_dcm
 sleep 1
 start_emu
@@ -190,19 +161,16 @@ for _ in $(seq 50); do s=$(emu_board JMC2); [ "${s%% *}" = 30557 ] && break; sle
 ok $([ "${s%% *}" = 30557 ]; echo $?) "and switched on when their status says homed: RKN 0.3 rad = 30557 counts ($s)"
 stop_dcm
 stop_emu
-rm -f /dev/shm/hrp."$ROBOT_ID".*
-: >"$T/dcm.log"
+fresh_run
 start_emu --unhomed
-start_dcm --cycles 300
-wait "$DCM"; DCM=""
+dcm_to_end --cycles 300
 s=$(emu_board JMC2)
 ok $([ "$(echo "$s" | awk '{print $5, $6, $7}')" = "0 0 0" ] && grep -q "board JMC2 is not homed (home state 0): left off" "$T/dcm.log"; echo $?) \
   "unhomed boards are left off and reported ($s; $(grep -m2 JMC2 "$T/dcm.log" | tr '\n' ' '))"
 cp Config/platforms/Hubo/dcm.lua "$T/dcm.lua.orig"
 sed -i 's/home_at_start = false/home_at_start = true/' Config/platforms/Hubo/dcm.lua
 rm -f /dev/shm/hrp."$ROBOT_ID".*
-start_dcm --cycles 300
-wait "$DCM"; DCM=""
+dcm_to_end --cycles 300
 s=$(emu_board JMC2)
 ok $([ "$(echo "$s" | awk '{print $5, $6, $7}')" = "1 1 6" ] && grep -q "every board homed" "$T/dcm.log"; echo $?) \
   "home_at_start: homed, then switched on ($s)"

@@ -6,13 +6,8 @@
 set -u
 cd "$(dirname "$0")/../.."
 source Run/env.sh
-dir=$(mktemp -d)
-trap 'kill $rec 2>/dev/null; wait $rec 2>/dev/null; rm -rf "$dir"; Tools/shm/shm remove >/dev/null 2>&1' EXIT
-Tools/shm/shm remove >/dev/null 2>&1
-build/bin/hrp_record --dir "$dir" --quiet > /dev/null 2>&1 &
-rec=$!
-sleep 0.5
-luajit Tests/recorder/fake_robot.lua 1.5 >/dev/null
+source Tests/recorder/lib.sh
+rec_fake 1.5
 ./run_repl -e "
 local t, v = history('dcm.sensor.gyro', 1.0)
 local ok, bad = true, 0

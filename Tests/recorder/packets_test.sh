@@ -8,18 +8,12 @@
 set -u
 cd "$(dirname "$0")/../.."
 source Run/env.sh
-dir=$(mktemp -d)
-trap 'rm -rf "$dir"; Tools/shm/shm remove >/dev/null 2>&1' EXIT
-Tools/shm/shm remove >/dev/null 2>&1
+source Tests/recorder/lib.sh
 port=$((20000 + ROBOT_ID % 20000 * 2))   # two ports of this robot id's own
 
-build/bin/hrp_record --dir "$dir" --camera off --quiet > "$dir/record.out" 2>&1 &
-rec=$!
-sleep 0.5
+rec_start --camera off
 luajit Tests/recorder/packet_sender.lua "$port" "$dir/sent.txt" 10 40
-sleep 0.3
-kill -TERM $rec
-wait $rec
+rec_stop
 echo "# $(cat "$dir/record.out")"
 python3 - "$dir" "$(cat "$dir/record.out")" <<'PY'
 import glob, re, sys

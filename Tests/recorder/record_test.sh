@@ -9,13 +9,9 @@ cd "$(dirname "$0")/../.."
 source Run/env.sh
 source Tests/recorder/lib.sh
 
-build/bin/hrp_record --dir "$dir" --quiet > "$dir/record.out" 2>&1 &
-rec=$!
-sleep 0.5
+rec_start
 luajit Tests/recorder/fake_robot.lua 2.0
-sleep 0.3
-kill -TERM $rec
-wait $rec
+rec_stop
 rc=$?
 echo "# $(cat "$dir/record.out")"
 grep -q "bytes/s" "$dir/record.out"

@@ -6,17 +6,9 @@
 set -u
 cd "$(dirname "$0")/../.."
 source Run/env.sh
-dir=$(mktemp -d)
-trap 'rm -rf "$dir"; Tools/shm/shm remove >/dev/null 2>&1' EXIT
-Tools/shm/shm remove >/dev/null 2>&1
-build/bin/hrp_record --dir "$dir" --quiet > "$dir/record.out" 2>&1 &
-rec=$!
-sleep 0.5
-luajit Tests/recorder/fake_robot.lua 2.0 >/dev/null
-sleep 0.3
-kill -TERM $rec
-wait $rec
-log=$(ls "$dir"/hrp-*.mcap | head -1)
+source Tests/recorder/lib.sh
+rec_fake 2.0
+rec_stop
 # the log times of the ticks at or before 1.003 s and 0.5 s, of the third after the latter, of the last tick
 read -r at1 at05 at05_3 last < <(python3 -c "
 import sys

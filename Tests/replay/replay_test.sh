@@ -14,14 +14,8 @@ source Tests/recorder/lib.sh
 mkdir -p "$dir/site"
 cp Config/site/*.lua "$dir/site/" 2>/dev/null
 printf 'return { flush_s = 0.1 }\n' > "$dir/site/recorder.lua"
-HRP_SITE="$dir/site" build/bin/hrp_record --dir "$dir" --quiet > "$dir/record.out" 2>&1 &
-rec=$!
-sleep 0.5
-luajit Tests/recorder/fake_robot.lua 2.0 >/dev/null
-sleep 0.3
-kill -TERM $rec
-wait $rec
-log=$(ls "$dir"/hrp-*.mcap | head -1)
+HRP_SITE="$dir/site" rec_fake 2.0
+rec_stop
 read -r sensors frames < <(python3 -c "
 import sys
 from mcap.reader import make_reader

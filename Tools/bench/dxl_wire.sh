@@ -11,11 +11,7 @@ source Run/env.sh
 export PLATFORM=OP
 export ROBOT_ID="${ROBOT_ID:-8600}"
 SECS=${1:-4}
-T=$(mktemp -d)
-EMU="" DCM=""
-cleanup() { [ -n "$DCM" ] && kill "$DCM" 2>/dev/null; [ -n "$EMU" ] && kill "$EMU" 2>/dev/null; wait 2>/dev/null
-            rm -rf "$T"; rm -f /dev/shm/hrp."$ROBOT_ID".* 2>/dev/null; }
-trap cleanup EXIT
+source Tests/dcm_emu_lib.sh
 
 stats() {
   ./run_repl -e 'local s = require("shm").open("dcm.stats")

@@ -12,11 +12,7 @@ source Tests/hubo/tree.sh
 export PLATFORM=Hubo ROBOT=hubo2plus
 export ROBOT_ID="${ROBOT_ID:-8650}"
 SECS=${1:-5}
-T=$(mktemp -d)
-EMU="" DCM=""
-cleanup() { [ -n "$DCM" ] && kill "$DCM" 2>/dev/null; [ -n "$EMU" ] && kill "$EMU" 2>/dev/null; wait 2>/dev/null
-            rm -rf "$T"; rm -f /dev/shm/hrp."$ROBOT_ID".* 2>/dev/null; }
-trap cleanup EXIT
+source Tests/dcm_emu_lib.sh
 hubo_tree "$T/root"
 mkdir "$T/bus"
 export FAKECAN_DIR=$T/bus

@@ -25,21 +25,25 @@ return {
   -- joint order of every joint array in shm (dcm.sensor, dcm.actuator): the bus order
   joints = op3.joints,
   groups = op3.groups,
-  -- joint limits, rad { min, max }, in the convention above: the Webots model's motor limits
-  -- (darwin_reference.txt, JOINTS), the only complete public set, taken as they are: each lies
-  -- within the servo's 0..4095 counts and the mechanical range as that model has it. Left and
-  -- right are not exact mirrors in the source (hip yaw and roll); kept.
   -- 6-axis force/torque at the ankles (dcm.sensor.ft), the sim's instruments: the real DARwIn-OP has
   -- none, so on PLATFORM=OP these slots read 0
   ft = { lfoot = 'l_ank_roll', rfoot = 'r_ank_roll' },
+  -- joint limits, rad { min, max }, in the convention above: the Webots model's motor limits
+  -- (darwin_reference.txt, JOINTS), the only complete public set, taken as they are: each lies
+  -- within the servo's 0..4095 counts and the mechanical range as that model has it. Left and
+  -- right are not exact mirrors in the source (hip yaw and roll); kept. A joint of both sides is named
+  -- once with the left's and the right's range (Lib/Config.lua: `knee` for l_knee and r_knee).
   limits = {
     head_pan = { -1.81, 1.81 }, head_tilt = { -0.36, 0.94 },
-    l_sho_pitch = { -3.14, 2.85 }, l_sho_roll = { -2.25, 0.77 }, l_el = { -1.18, 1.63 },
-    r_sho_pitch = { -3.14, 3.14 }, r_sho_roll = { -0.68, 2.30 }, r_el = { -1.65, 1.16 },
-    l_hip_yaw = { -0.69, 2.50 }, l_hip_roll = { -1.00, 0.93 }, l_hip_pitch = { -0.50, 1.68 },
-    l_knee = { -2.25, 0.03 }, l_ank_pitch = { -1.39, 1.22 }, l_ank_roll = { -1.02, 0.60 },
-    r_hip_yaw = { -2.42, 0.66 }, r_hip_roll = { -1.01, 1.01 }, r_hip_pitch = { -1.77, 0.45 },
-    r_knee = { -0.02, 2.25 }, r_ank_pitch = { -1.24, 1.38 }, r_ank_roll = { -0.68, 1.04 },
+    sho_pitch = { l = { -3.14, 2.85 }, r = { -3.14, 3.14 } },
+    sho_roll  = { l = { -2.25, 0.77 }, r = { -0.68, 2.30 } },
+    el        = { l = { -1.18, 1.63 }, r = { -1.65, 1.16 } },
+    hip_yaw   = { l = { -0.69, 2.50 }, r = { -2.42, 0.66 } },
+    hip_roll  = { l = { -1.00, 0.93 }, r = { -1.01, 1.01 } },
+    hip_pitch = { l = { -0.50, 1.68 }, r = { -1.77, 0.45 } },
+    knee      = { l = { -2.25, 0.03 }, r = { -0.02, 2.25 } },
+    ank_pitch = { l = { -1.39, 1.22 }, r = { -1.24, 1.38 } },
+    ank_roll  = { l = { -1.02, 0.60 }, r = { -0.68, 1.04 } },
   },
   -- each joint's actuator model (Config/common/actuators.lua): MX-28 at 11.1 V everywhere
   actuator = actuator,

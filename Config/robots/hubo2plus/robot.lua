@@ -47,37 +47,34 @@ return {
     lleg = { 'LHY', 'LHR', 'LHP', 'LKN', 'LAP', 'LAR' },
     rleg = { 'RHY', 'RHR', 'RHP', 'RKN', 'RAP', 'RAR' },
   },
+  -- 6-axis force/torque sensors (dcm.sensor.ft): between ankle and foot, wrist and hand (the
+  -- FFT/HFT boards of can.lua); named by the joint whose child link carries the sensor
+  ft = { lfoot = 'LAR', rfoot = 'RAR', lhand = 'LWP', rhand = 'RWP' },
   -- joint limits, rad { min, max }: the narrower of openHubo's model limits (the mechanical range)
   -- and HuboCan's software limits (the operating range) for each joint (hubo_reference.txt LIMITS;
   -- left and right hip roll and wrist pitch differ in the source: kept), except the knees' lower
   -- end: openHubo's -0.0698, not HuboCan's 0 (a bound at the straight leg itself, which would flag
-  -- every straight-leg pose as clamped; the walk keeps the knees bent anyway)
-  -- 6-axis force/torque sensors (dcm.sensor.ft): between ankle and foot, wrist and hand (the
-  -- FFT/HFT boards of can.lua); named by the joint whose child link carries the sensor
-  ft = { lfoot = 'LAR', rfoot = 'RAR', lhand = 'LWP', rhand = 'RWP' },
+  -- every straight-leg pose as clamped; the walk keeps the knees bent anyway). A joint of both sides is
+  -- named once (Lib/Config.lua: HY for LHY and RHY), with one range unless its sides differ.
   limits = {
     WST = { -3.14, 3.14 }, NK1 = { -0.5236, 0.5236 }, NK2 = { -0.5236, 0.5236 },
-    RHY = { -1.5708, 1.5708 }, RHR = { -0.4887, 0.4887 }, RHP = { -1.57, 1.57 },
-    RKN = { -0.0698, 2.6005 }, RAP = { -1.2915, 1.693 }, RAR = { -0.192, 0.192 },
-    LHY = { -1.5708, 1.5708 }, LHR = { -0.52, 0.52 }, LHP = { -1.57, 1.57 },
-    LKN = { -0.0698, 2.6005 }, LAP = { -1.2915, 1.693 }, LAR = { -0.192, 0.192 },
-    RSP = { -2.9671, 2.9671 }, RSR = { -2.618, 0.262 }, RSY = { -2.9671, 2.0 },
-    REB = { -2.3213, 0 }, RWY = { -2.9671, 2.9671 }, RWP = { -1.57, 0.35 },
-    LSP = { -2.9671, 2.9671 }, LSR = { -0.262, 2.618 }, LSY = { -2.0, 2.9671 },
-    LEB = { -2.3213, 0 }, LWY = { -2.9671, 2.9671 }, LWP = { -1.57, 0.35 },
+    HY = { -1.5708, 1.5708 }, HP = { -1.57, 1.57 }, KN = { -0.0698, 2.6005 },
+    AP = { -1.2915, 1.693 }, AR = { -0.192, 0.192 },
+    SP = { -2.9671, 2.9671 }, EB = { -2.3213, 0 }, WY = { -2.9671, 2.9671 }, WP = { -1.57, 0.35 },
+    -- the sides differ: the hip roll in the source, the shoulder's roll and yaw as mirror images
+    HR = { l = { -0.52, 0.52 }, r = { -0.4887, 0.4887 } },
+    SR = { l = { -0.262, 2.618 }, r = { -2.618, 0.262 } },
+    SY = { l = { -2.0, 2.9671 }, r = { -2.9671, 2.0 } },
   },
   -- each joint's drive (Config/common/actuators.lua, HUBO2-*: reduction and torque of the joint;
-  -- the motor data no public source gives is chosen there, conservatively, and said so)
+  -- the motor data no public source gives is chosen there, conservatively, and said so), the same
+  -- on both sides
   actuator = {
     WST = 'HUBO2-250-71', NK1 = 'HUBO2-NECK', NK2 = 'HUBO2-NECK',
-    RHY = 'HUBO2-250-71', RHR = 'HUBO2-506-95', RHP = 'HUBO2-200-95',
-    RKN = 'HUBO2-160-95', RAP = 'HUBO2-250-71', RAR = 'HUBO2-316-71',
-    LHY = 'HUBO2-250-71', LHR = 'HUBO2-506-95', LHP = 'HUBO2-200-95',
-    LKN = 'HUBO2-160-95', LAP = 'HUBO2-250-71', LAR = 'HUBO2-316-71',
-    RSP = 'HUBO2-145-35', RSR = 'HUBO2-100-35', RSY = 'HUBO2-100-25',
-    REB = 'HUBO2-100-25', RWY = 'HUBO2-100-9', RWP = 'HUBO2-100-9',
-    LSP = 'HUBO2-145-35', LSR = 'HUBO2-100-35', LSY = 'HUBO2-100-25',
-    LEB = 'HUBO2-100-25', LWY = 'HUBO2-100-9', LWP = 'HUBO2-100-9',
+    HY = 'HUBO2-250-71', HR = 'HUBO2-506-95', HP = 'HUBO2-200-95',
+    KN = 'HUBO2-160-95', AP = 'HUBO2-250-71', AR = 'HUBO2-316-71',
+    SP = 'HUBO2-145-35', SR = 'HUBO2-100-35', SY = 'HUBO2-100-25',
+    EB = 'HUBO2-100-25', WY = 'HUBO2-100-9', WP = 'HUBO2-100-9',
   },
   -- the DCM's control period, s: hubo-ach's 200 Hz
   period = 0.005,

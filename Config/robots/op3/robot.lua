@@ -43,18 +43,16 @@ return {
       r_ank_roll = 0.062,
     },
   },
-  -- joint limits, rad { min, max }: kept inside the mechanical ranges
   -- 6-axis force/torque at the ankles (dcm.sensor.ft), the sim's instruments: the real OP3 has none,
   -- so on PLATFORM=OP these slots read 0
   ft = { lfoot = 'l_ank_roll', rfoot = 'r_ank_roll' },
+  -- joint limits, rad { min, max }: kept inside the mechanical ranges; `knee` is l_knee's and r_knee's
+  -- (a joint of both sides named once: Lib/Config.lua)
   limits = {
     head_pan = { -1.57, 1.57 }, head_tilt = { -1.2, 0.6 },
-    l_sho_pitch = { -3.14, 3.14 }, l_sho_roll = { -1.6, 1.6 }, l_el = { -2.6, 2.6 },
-    r_sho_pitch = { -3.14, 3.14 }, r_sho_roll = { -1.6, 1.6 }, r_el = { -2.6, 2.6 },
-    l_hip_yaw = { -1.2, 1.2 }, l_hip_roll = { -0.8, 0.8 }, l_hip_pitch = { -2.0, 2.0 },
-    l_knee = { -2.6, 2.6 }, l_ank_pitch = { -1.4, 1.4 }, l_ank_roll = { -0.8, 0.8 },
-    r_hip_yaw = { -1.2, 1.2 }, r_hip_roll = { -0.8, 0.8 }, r_hip_pitch = { -2.0, 2.0 },
-    r_knee = { -2.6, 2.6 }, r_ank_pitch = { -1.4, 1.4 }, r_ank_roll = { -0.8, 0.8 },
+    sho_pitch = { -3.14, 3.14 }, sho_roll = { -1.6, 1.6 }, el = { -2.6, 2.6 },
+    hip_yaw = { -1.2, 1.2 }, hip_roll = { -0.8, 0.8 }, hip_pitch = { -2.0, 2.0 },
+    knee = { -2.6, 2.6 }, ank_pitch = { -1.4, 1.4 }, ank_roll = { -0.8, 0.8 },
   },
   -- the Dynamixel bus on the OP platform (Platforms/OP), in the form of ROBOTIS' .robot files
   -- (op3_manager/config/OP3.robot): the buses (port, baud rate; `--port` overrides bus 1's), then one
