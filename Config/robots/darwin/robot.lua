@@ -17,6 +17,16 @@
 local op3 = dofile(require('Config').robot_dir('op3') .. '/robot.lua')
 local actuator = {}
 for _, j in ipairs(op3.joints) do actuator[j] = 'MX-28' end
+-- the servos on the same ids as the OP3's (ROBOTIS numbering), as MX-28s on protocol 1, then the CM-730
+local devices = {}
+for _, row in ipairs(op3.devices) do
+  if row.joint then
+    devices[#devices + 1] = { joint = row.joint, bus = 1, id = row.id, model = 'MX-28', protocol = 1,
+      direction = 1, zero = 2048 }
+  end
+end
+devices[#devices + 1] = { board = 'CM-730', bus = 1, id = 200, protocol = 1,
+  gyro_axes = { '-x', '-y', 'z' }, accel_axes = { 'y', '-x', 'z' } }
 
 return {
   name = 'darwin',
@@ -58,30 +68,7 @@ return {
   buses = {
     { port = '/dev/ttyUSB0', baud = 1000000 },   -- the CM-730's FTDI; MX-28 baud register 1
   },
-  devices = {
-    { joint = 'head_pan',    bus = 1, id = 19, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
-    { joint = 'head_tilt',   bus = 1, id = 20, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
-    { joint = 'l_sho_pitch', bus = 1, id =  2, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
-    { joint = 'l_sho_roll',  bus = 1, id =  4, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
-    { joint = 'l_el',        bus = 1, id =  6, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
-    { joint = 'l_hip_yaw',   bus = 1, id =  8, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
-    { joint = 'l_hip_roll',  bus = 1, id = 10, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
-    { joint = 'l_hip_pitch', bus = 1, id = 12, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
-    { joint = 'l_knee',      bus = 1, id = 14, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
-    { joint = 'l_ank_pitch', bus = 1, id = 16, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
-    { joint = 'l_ank_roll',  bus = 1, id = 18, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
-    { joint = 'r_hip_yaw',   bus = 1, id =  7, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
-    { joint = 'r_hip_roll',  bus = 1, id =  9, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
-    { joint = 'r_hip_pitch', bus = 1, id = 11, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
-    { joint = 'r_knee',      bus = 1, id = 13, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
-    { joint = 'r_ank_pitch', bus = 1, id = 15, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
-    { joint = 'r_ank_roll',  bus = 1, id = 17, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
-    { joint = 'r_sho_pitch', bus = 1, id =  1, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
-    { joint = 'r_sho_roll',  bus = 1, id =  3, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
-    { joint = 'r_el',        bus = 1, id =  5, model = 'MX-28', protocol = 1, direction = 1, zero = 2048 },
-    { board = 'CM-730', bus = 1, id = 200, protocol = 1,
-      gyro_axes = { '-x', '-y', 'z' }, accel_axes = { 'y', '-x', 'z' } },
-  },
+  devices = devices,
   -- massless frames Tools/urdf/gen_urdf.py adds to darwin.urdf (the URDF carries them; nothing else reads
   -- this table): link = the link it is fixed to; xyz = its origin and rpy its orientation (URDF
   -- roll, pitch, yaw), both in the reference frame at the zero pose (soles on z = 0)
