@@ -1,6 +1,7 @@
 -- Ball detection over seeded frames the sim renders (build/bin/sim_ball_frames; written by
 -- ball_frames_test.sh with seeds no training run uses), through the vision pipeline with the camera
--- pose the renderer used. Prints recall, false detections, range and bearing errors and TAP lines for the goals named in GATE.
+-- pose the renderer used. Prints recall, false detections, range and bearing errors, and TAP lines
+-- for the goals named in GATE.
 --   luajit Tests/vision/ball_frames.lua FRAMES KIND [GATE]     KIND: white | orange
 -- GATE: comma-separated goals to fail on (recall, false, range, bearing, robots); the others only print.
 -- DRAW=DIR writes a PNG per frame listed in DRAW_FRAMES (or each miss and false detection) with the
