@@ -4,7 +4,7 @@
 # SOAK_SAMPLE s of robot time (default 30): resident memory, open file descriptors, mapped shm segments
 # (Tests/soak/soak_play.lua), and checks: no process died or was restarted, fds and segments did not grow,
 # and RSS does not grow on after the warm-up (SOAK_WARMUP s, default the first game restart + 30 s or a
-# quarter of the run, whichever is longer; it covers a game restart and falls):
+# quarter of the run, whichever is longer; it covers a game restart, falls and the camera's widest blur):
 # the growth of RSS's high-water mark without its 2 largest steps (one-time high-water marks: buffers,
 # arenas, JIT) per simulated second is at most SOAK_DCM_KB_PER_S (default 0.25) for the DCM and
 # SOAK_LUA_KB_PER_S (default 4) for the LuaJIT processes (Tests/soak/rss_check.lua). Each process's series,

@@ -1,7 +1,7 @@
 -- The soak's GameController and sampler (run by ./run_repl inside the sim's lockstep, Tests/soak/soak.sh):
 --   ./run_repl Tests/soak/soak_play.lua SECONDS RESTART_EVERY GC_PORT MAIN_PID [SAMPLE_EVERY]
 -- Plays SECONDS of robot time; every RESTART_EVERY s the game restarts (INITIAL, READY, SET, PLAYING, the
--- ball and the robot put back). At the start and every SAMPLE_EVERY
+-- ball and the robot put back); at the start the robot is jostled (below). At the start and every SAMPLE_EVERY
 -- s of robot time (default 30) samples each of run_main's children (the DCM too): resident memory, its
 -- anonymous and huge-page parts, open file descriptors, mapped hrp shm segments; prints one line per process
 -- ("proc motion t=30 pid=.. rss_kb=.. anon_kb=.. huge_kb=.. fds=.. shm=..") and one for the robot ("robot
@@ -80,6 +80,17 @@ local function play_for(s)
     end
   end
 end
+-- The sim camera's widest motion blur: its planes (Platforms/Sim/develop.cpp) grow to the widest blur seen
+-- so far, up to three frame widths (2 MB more of the DCM's RSS), which a game restart's teleport gives when
+-- it falls inside a frame's 10 ms exposure (by chance: in some runs at the first restart, in others at the
+-- third). Here the robot turns on the spot by 1.5 rad and back every tick for more than a camera period, so
+-- that a frame's exposure surely spans a jump across the whole image, before the warm-up ends.
+local function jostle()
+  for k = 1, 12 do
+    Sim.teleport_robot(-2.0, 0.0, k % 2 == 0 and 0.0 or 1.5)
+    wait(0.008)
+  end
+end
 local function restart_game()
   games = games + 1
   Sim.teleport_robot(-2.0, 0.0, 0.0)
@@ -89,6 +100,7 @@ local function restart_game()
 end
 
 sample()
+jostle()
 local walked = 0
 while Body.get_time() - t_start < seconds - 1e-6 do
   local left = seconds - (Body.get_time() - t_start)
