@@ -9,8 +9,10 @@
 # arenas, JIT) per simulated second is at most SOAK_DCM_KB_PER_S (default 0.25) for the DCM and
 # SOAK_LUA_KB_PER_S (default 4) for the LuaJIT processes (Tests/soak/rss_check.lua). Each process's series,
 # rate and steps are printed. `make soak` (1 hour), `make soak SOAK_SECONDS=600` (10 minutes).
+# HRP_SOAK_LEAK_BYTES_PER_S=N: the DCM leaks N bytes per simulated second (Tests/soak/leak_shim.c, preloaded),
+# to show that the check catches a leak.
 #   Tests/soak/soak.sh [SECONDS]   env: ROBOT_ID (uses ROBOT_ID+90), SOAK_RESTART, SOAK_SAMPLE, SOAK_WARMUP,
-#                                       SOAK_DCM_KB_PER_S, SOAK_LUA_KB_PER_S
+#                                       SOAK_DCM_KB_PER_S, SOAK_LUA_KB_PER_S, HRP_SOAK_LEAK_BYTES_PER_S
 set -u
 cd "$(dirname "$0")/../.."
 source Run/env.sh
@@ -26,6 +28,13 @@ ID=$(( ${ROBOT_ID:-9200} + 90 ))
 PORT=$((40000 + ID % 20000))
 export ROBOT_ID=$ID HRP_GC_PORT=$PORT HRP_GC_RETURN_PORT=$((PORT + 1)) HRP_TEAM_PORT=$((30000 + ID % 20000))
 Run/shm --robot "$ID" remove >/dev/null 2>&1
+if [ -n "${HRP_SOAK_LEAK_BYTES_PER_S:-}" ]; then
+  # the deliberate leak: a shim around ODE's step, preloaded into every process (only the DCM steps ODE)
+  mkdir -p "$HRP_ROOT/build/soak"
+  cc -O2 -Wall -Wextra -Werror -shared -fPIC -o "$HRP_ROOT/build/soak/leak_shim.so" Tests/soak/leak_shim.c -ldl ||
+    { echo "not ok 1 - the leak shim builds"; exit 1; }
+  export HRP_SOAK_LEAK_BYTES_PER_S LD_PRELOAD="$HRP_ROOT/build/soak/leak_shim.so${LD_PRELOAD:+:$LD_PRELOAD}"
+fi
 ./run_main --sim --quiet --dcm-arg --lockstep --dcm-arg --seed --dcm-arg 1 >"$LOGDIR/main.log" 2>&1 &
 MAIN=$!
 cleanup() { kill -TERM "$MAIN" 2>/dev/null; wait "$MAIN" 2>/dev/null; Run/shm --robot "$ID" remove >/dev/null 2>&1; }
@@ -37,7 +46,8 @@ for _ in $(seq 1 300); do
 done
 t0=$SECONDS
 ./run_repl Tests/soak/soak_play.lua "$SECS" "$EVERY" "$PORT" "$MAIN" "$SAMPLE" >"$LOGDIR/soak.out" 2>&1
-echo "# $SECS s of robot time in $((SECONDS - t0)) s wall"
+unset LD_PRELOAD
+echo "# $SECS s of robot time in $((SECONDS - t0)) s wall${HRP_SOAK_LEAK_BYTES_PER_S:+ (the DCM leaking $HRP_SOAK_LEAK_BYTES_PER_S bytes per simulated s)}"
 n=0; fails=0
 check() { n=$((n + 1)); if [ "$1" = 0 ]; then echo "ok $n - $2"; else fails=$((fails + 1)); echo "not ok $n - $2"; fi; }
 result=$(grep '^result' "$LOGDIR/soak.out")
