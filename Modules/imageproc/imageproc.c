@@ -1,5 +1,6 @@
 /* imageproc: lookup-table labelling, block OR, connected regions, colour statistics. */
 #include "imageproc/imageproc.h"
+#include "imageproc/moments.h"
 
 #include <errno.h>
 #include <math.h>
@@ -203,56 +204,6 @@ int img_count(const uint8_t *labels, int w, int h, uint8_t mask) {
   return n;
 }
 
-/* ---------------------------------------------------------------- moments */
-
-typedef struct acc {
-  int64_t area, sx, sy, sxx, syy, sxy;
-  int32_t xmin, xmax, ymin, ymax;
-} acc;
-
-static void acc_init(acc *a) {
-  memset(a, 0, sizeof *a);
-  a->xmin = a->ymin = INT32_MAX;
-  a->xmax = a->ymax = -1;
-}
-
-/* Adds the horizontal run x0..x1 (inclusive) on row y. */
-static inline void acc_run(acc *a, int64_t x0, int64_t x1, int64_t y) {
-  int64_t n = x1 - x0 + 1;
-  int64_t sx = (x0 + x1) * n / 2;
-  /* sum of x^2 for x in [x0, x1] = S(x1) - S(x0 - 1), S(k) = k(k+1)(2k+1)/6 */
-  int64_t s1 = x1 * (x1 + 1) * (2 * x1 + 1) / 6, s0 = (x0 - 1) * x0 * (2 * x0 - 1) / 6;
-  a->area += n;
-  a->sx += sx;
-  a->sy += n * y;
-  a->sxx += s1 - s0;
-  a->syy += n * y * y;
-  a->sxy += sx * y;
-  if (x0 < a->xmin) a->xmin = (int32_t)x0;
-  if (x1 > a->xmax) a->xmax = (int32_t)x1;
-  if (y < a->ymin) a->ymin = (int32_t)y;
-  if (y > a->ymax) a->ymax = (int32_t)y;
-}
-
-static void acc_finish(const acc *a, img_region *r) {
-  memset(r, 0, sizeof *r);
-  r->area = (int32_t)a->area;
-  if (a->area == 0) return;
-  r->xmin = a->xmin; r->xmax = a->xmax; r->ymin = a->ymin; r->ymax = a->ymax;
-  double n = (double)a->area;
-  r->cx = (double)a->sx / n;
-  r->cy = (double)a->sy / n;
-  r->cxx = (double)a->sxx / n - r->cx * r->cx + 1.0 / 12;   /* + pixel's own extent */
-  r->cyy = (double)a->syy / n - r->cy * r->cy + 1.0 / 12;
-  r->cxy = (double)a->sxy / n - r->cx * r->cy;
-  double m = 0.5 * (r->cxx + r->cyy);
-  double d = sqrt(0.25 * (r->cxx - r->cyy) * (r->cxx - r->cyy) + r->cxy * r->cxy);
-  double l1 = m + d, l2 = m - d;
-  r->axis_major = 4.0 * sqrt(l1 > 0 ? l1 : 0);
-  r->axis_minor = 4.0 * sqrt(l2 > 0 ? l2 : 0);
-  r->orientation = 0.5 * atan2(2.0 * r->cxy, r->cxx - r->cyy);
-}
-
 int img_color_stats(const uint8_t *labels, int w, int h, uint8_t mask,
                     int x0, int x1, int y0, int y1, img_region *out) {
   if (!labels || !out || w <= 0 || h <= 0) return IMG_EARG;
@@ -260,8 +211,8 @@ int img_color_stats(const uint8_t *labels, int w, int h, uint8_t mask,
   if (y0 < 0) y0 = 0;
   if (x1 > w - 1) x1 = w - 1;
   if (y1 > h - 1) y1 = h - 1;
-  acc a;
-  acc_init(&a);
+  img_acc a;
+  img_acc_init(&a);
   for (int y = y0; y <= y1; y++) {
     const uint8_t *row = labels + (size_t)y * w;
     int x = x0;
@@ -270,10 +221,10 @@ int img_color_stats(const uint8_t *labels, int w, int h, uint8_t mask,
       if (x > x1) break;
       int s = x;
       while (x <= x1 && (row[x] & mask)) x++;
-      acc_run(&a, s, x - 1, y);
+      img_acc_run(&a, s, x - 1, y);
     }
   }
-  acc_finish(&a, out);
+  img_acc_finish(&a, out);
   return 0;
 }
 
@@ -294,7 +245,7 @@ struct img_cc {
   int32_t *area;     /* per region: pixels */
   int32_t *slot;     /* per region: its place among the regions returned, -1 none */
   int32_t *sel;      /* the regions returned, largest first */
-  acc *accs;         /* per region returned */
+  img_acc *accs;         /* per region returned */
 };
 
 img_cc *img_cc_new(int max_w, int max_h) {
@@ -435,16 +386,16 @@ int img_regions(img_cc *cc, const uint8_t *labels, int w, int h, uint8_t mask,
     sel[pos] = g;
   }
   /* moments only of the regions returned: a noisy image has thousands of specks nobody asked about */
-  acc *accs = cc->accs;
+  img_acc *accs = cc->accs;
   for (int k = 0; k < nout; k++) {
     slot[sel[k]] = k;
-    acc_init(&accs[k]);
+    img_acc_init(&accs[k]);
   }
   if (nout > 0)
     for (int32_t i = 0; i < nruns; i++) {
       const int32_t k = slot[regid[i]];
-      if (k >= 0) acc_run(&accs[k], runs[i].x0, runs[i].x1, runs[i].y);
+      if (k >= 0) img_acc_run(&accs[k], runs[i].x0, runs[i].x1, runs[i].y);
     }
-  for (int k = 0; k < nout; k++) acc_finish(&accs[k], &out[k]);
+  for (int k = 0; k < nout; k++) img_acc_finish(&accs[k], &out[k]);
   return nreg;
 }
