@@ -492,47 +492,39 @@ int kin_link_poses(const kin_model *m, const double *q, double *out) {
   return flags;
 }
 
-// The tip pose of chain (kind, side) from the chain's own angles q (and qbase above it): a flag set,
-// or KIN_ENOCHAIN (a side the body lacks) / KIN_EINVAL (a side that is not 0 or 1).
-static int chain_tip(const kin_model *m, int kind, int side, const double *q, const double *qbase, Pose *tip) {
+// Forward kinematics of chain (kind, side) from the chain's own angles q (and qbase above it): the
+// tip's position into pos (3), its rotation into rot (9, if not NULL) and *tip (if not NULL). A flag
+// set, or KIN_ENOCHAIN (a side the body lacks) / KIN_EINVAL (a side that is not 0 or 1).
+static int chain_fk(const kin_model *m, int kind, int side, const double *q, const double *qbase, double *pos,
+                    double *rot, Pose *tip) {
   const Chain *c = find_chain(m, kind, side);
   if (!c) return side == 0 || side == 1 ? KIN_ENOCHAIN : KIN_EINVAL;
   int flags = 0;
   double qfull[KIN_MAXJ];
   fill_full(m, *c, q, qbase, qfull);
-  *tip = tip_pose(m, *c, qfull, &flags);
+  Pose T = tip_pose(m, *c, qfull, &flags);
+  for (int k = 0; k < 3; k++) pos[k] = T.p[k];
+  if (rot) put_rot(T.R, rot);
+  if (tip) *tip = T;
   return flags;
 }
 
 int kin_leg_fk(const kin_model *m, int side, const double *q6, const double *qbase, double *pose, double *rot) {
   if (!m || !q6 || !pose) return KIN_EINVAL;
   Pose F;
-  int flags = chain_tip(m, KIN_LEG, side, q6, qbase, &F);
-  if (flags < 0) return flags;
-  for (int k = 0; k < 3; k++) pose[k] = F.p[k];
-  rot_to_rpy(F.R, pose + 3);
-  if (rot) put_rot(F.R, rot);
+  int flags = chain_fk(m, KIN_LEG, side, q6, qbase, pose, rot, &F);
+  if (flags >= 0) rot_to_rpy(F.R, pose + 3);
   return flags;
 }
 
 int kin_arm_fk(const kin_model *m, int side, const double *qn, const double *qbase, double *pos, double *rot) {
   if (!m || !qn || !pos) return KIN_EINVAL;
-  Pose H;
-  int flags = chain_tip(m, KIN_ARM, side, qn, qbase, &H);
-  if (flags < 0) return flags;
-  for (int k = 0; k < 3; k++) pos[k] = H.p[k];
-  if (rot) put_rot(H.R, rot);
-  return flags;
+  return chain_fk(m, KIN_ARM, side, qn, qbase, pos, rot, nullptr);
 }
 
 int kin_head_fk(const kin_model *m, const double *q2, const double *qbase, double *pos, double *rot) {
   if (!m || !q2 || !pos) return KIN_EINVAL;
-  Pose C;
-  int flags = chain_tip(m, KIN_HEAD, 0, q2, qbase, &C);
-  if (flags < 0) return flags;
-  for (int k = 0; k < 3; k++) pos[k] = C.p[k];
-  if (rot) put_rot(C.R, rot);
-  return flags;
+  return chain_fk(m, KIN_HEAD, 0, q2, qbase, pos, rot, nullptr);
 }
 
 int kin_camera_pose(const kin_model *m, const double *q, const double *rpy, double *pos, double *rot,
