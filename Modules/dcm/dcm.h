@@ -75,6 +75,10 @@ int dcm_config_len(const dcm_config *c, const char *key, char *err, size_t errle
 int dcm_config_nums(const dcm_config *c, const char *key, double *out, int min, int max, char *err, size_t errlen);
 int dcm_config_strs(const dcm_config *c, const char *key, char (*out)[DCM_NAME_MAX], int min, int max, char *err,
                     size_t errlen);
+/* The robot's joint order (the list `joints`, 1..DCM_NJ_MAX names) and each joint's limits (rad,
+ * `limits.<joint>` = { min, max } with min below max) into lo and hi; returns the number of joints. */
+int dcm_config_joints(const dcm_config *c, char (*joint)[DCM_NAME_MAX], double *lo, double *hi, char *err,
+                      size_t errlen);
 /* Writes "<files>: <message>" into err (for checks of the caller's own); returns -EINVAL. */
 int dcm_config_fail(const dcm_config *c, char *err, size_t errlen, const char *fmt, ...)
     __attribute__((format(printf, 4, 5)));
