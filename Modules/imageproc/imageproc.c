@@ -1,6 +1,7 @@
 /* imageproc: lookup-table labelling, block OR, connected regions, colour statistics. */
 #include "imageproc/imageproc.h"
 #include "imageproc/moments.h"
+#include "errmsg.h"
 
 #include <errno.h>
 #include <math.h>
@@ -9,14 +10,6 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
-
-static void set_err(char *err, size_t errlen, const char *fmt, ...) {
-  if (!err || errlen == 0) return;
-  va_list ap;
-  va_start(ap, fmt);
-  vsnprintf(err, errlen, fmt, ap);
-  va_end(ap);
-}
 
 /* ---------------------------------------------------------------- LUT files */
 
@@ -46,47 +39,47 @@ static void wr32(uint8_t *p, uint32_t v) {
 }
 
 int img_lut_load(const char *path, uint8_t *lut, char *err, size_t errlen) {
-  if (!path || !lut) { set_err(err, errlen, "img_lut_load: NULL argument"); return IMG_EARG; }
+  if (!path || !lut) { hrp_err(err, errlen, "img_lut_load: NULL argument"); return IMG_EARG; }
   FILE *f = fopen(path, "rb");
-  if (!f) { set_err(err, errlen, "LUT '%s': cannot open: %s", path, strerror(errno)); return IMG_EIO; }
+  if (!f) { hrp_err(err, errlen, "LUT '%s': cannot open: %s", path, strerror(errno)); return IMG_EIO; }
   uint8_t header[LUT_HEADER];
   size_t n = fread(header, 1, LUT_HEADER, f);
   if (n != LUT_HEADER || memcmp(header, IMG_LUT_MAGIC, 8) != 0) {
     fclose(f);
-    set_err(err, errlen, "LUT '%s': not a lookup table (bad magic; expected \"%s\" header)", path,
+    hrp_err(err, errlen, "LUT '%s': not a lookup table (bad magic; expected \"%s\" header)", path,
             IMG_LUT_MAGIC);
     return IMG_EFORMAT;
   }
   uint32_t count = rd32(header + 8), crc = rd32(header + 12);
   if (count != IMG_LUT_SIZE) {
     fclose(f);
-    set_err(err, errlen, "LUT '%s': has %u entries, expected %d", path, count, IMG_LUT_SIZE);
+    hrp_err(err, errlen, "LUT '%s': has %u entries, expected %d", path, count, IMG_LUT_SIZE);
     return IMG_EFORMAT;
   }
   n = fread(lut, 1, IMG_LUT_SIZE, f);
   int extra = fgetc(f);
   int rerr = ferror(f);
   fclose(f);
-  if (rerr) { set_err(err, errlen, "LUT '%s': read error", path); return IMG_EIO; }
+  if (rerr) { hrp_err(err, errlen, "LUT '%s': read error", path); return IMG_EIO; }
   if (n != IMG_LUT_SIZE || extra != EOF) {
-    set_err(err, errlen, "LUT '%s': wrong size (%s; expected %d bytes)", path,
+    hrp_err(err, errlen, "LUT '%s': wrong size (%s; expected %d bytes)", path,
             n != IMG_LUT_SIZE ? "truncated" : "trailing data", LUT_HEADER + IMG_LUT_SIZE);
     return IMG_EFORMAT;
   }
   uint32_t got = img_crc32(lut, IMG_LUT_SIZE);
   if (got != crc) {
-    set_err(err, errlen, "LUT '%s': corrupt (checksum %08x, header says %08x)", path, got, crc);
+    hrp_err(err, errlen, "LUT '%s': corrupt (checksum %08x, header says %08x)", path, got, crc);
     return IMG_EFORMAT;
   }
   return 0;
 }
 
 int img_lut_save(const char *path, const uint8_t *lut, char *err, size_t errlen) {
-  if (!path || !lut) { set_err(err, errlen, "img_lut_save: NULL argument"); return IMG_EARG; }
+  if (!path || !lut) { hrp_err(err, errlen, "img_lut_save: NULL argument"); return IMG_EARG; }
   char tmp[4096];
   snprintf(tmp, sizeof tmp, "%s.tmp.%d", path, (int)getpid());
   FILE *f = fopen(tmp, "wb");
-  if (!f) { set_err(err, errlen, "LUT '%s': cannot write: %s", path, strerror(errno)); return IMG_EIO; }
+  if (!f) { hrp_err(err, errlen, "LUT '%s': cannot write: %s", path, strerror(errno)); return IMG_EIO; }
   uint8_t header[LUT_HEADER];
   memcpy(header, IMG_LUT_MAGIC, 8);
   wr32(header + 8, IMG_LUT_SIZE);
@@ -95,7 +88,7 @@ int img_lut_save(const char *path, const uint8_t *lut, char *err, size_t errlen)
            fwrite(lut, 1, IMG_LUT_SIZE, f) == IMG_LUT_SIZE;
   ok = (fclose(f) == 0) && ok;
   if (!ok || rename(tmp, path) != 0) {
-    set_err(err, errlen, "LUT '%s': write failed: %s", path, strerror(errno));
+    hrp_err(err, errlen, "LUT '%s': write failed: %s", path, strerror(errno));
     unlink(tmp);
     return IMG_EIO;
   }
