@@ -93,6 +93,12 @@ int dcm_blocks_open(const shm_schema *schema, int robot_id, const char *block, c
 /* Binds a block that is already open. */
 int dcm_blocks_bind(shm_block *b, const char *block, const dcm_blk_field *fields, int nfields, void *out,
                     shm_block **blk, char *err, size_t errlen);
+/* A robot's dcm.sensor and dcm.actuator as a process beside its DCM sees them (an emulator serving a
+ * simulated robot): loads the schema into *schema and binds both blocks; on failure nothing stays open. */
+int dcm_robot_attach(int robot_id, shm_schema **schema, dcm_blk_dcm_sensor *sensor, dcm_blk_dcm_actuator *actuator,
+                     char *err, size_t errlen);
+/* Closes what dcm_robot_attach opened (any part of it; a second call does nothing). */
+void dcm_robot_detach(shm_schema **schema, dcm_blk_dcm_sensor *sensor, dcm_blk_dcm_actuator *actuator);
 
 /* ---------------------------------------------------------------- pacing */
 
