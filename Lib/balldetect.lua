@@ -14,37 +14,7 @@
 local ffi = require('ffi')
 local native = require('native')
 
-ffi.cdef [[
-typedef struct bd_view { double f, cx, cy; double R[9]; double height; double blur[2]; } bd_view;
-typedef struct bd bd;
-typedef struct bd_candidate { double u, v, radius; double inner, ring; double score; double prob; } bd_candidate;
-typedef struct bd_mlp bd_mlp;
-typedef struct bd_obstacle {
-  int32_t x0, x1; int32_t top, foot; int32_t foot_visible; int32_t red, blue; int32_t fx0, fx1;
-} bd_obstacle;
-int bd_obstacles(bd *w, const uint8_t *labels, int wl, int hl, const int16_t *top, uint8_t field_mask,
-                 uint8_t red, uint8_t blue, int min_run, int min_below, int max_gap, int leg_gap,
-                 int min_width, bd_obstacle *out, int maxn);
-int bd_column_count(const uint8_t *labels, int wl, int hl, int x, int y0, int y1, uint8_t mask);
-double bd_ball_radius_px(const bd_view *view, double u, double v, double r);
-bd *bd_new(int max_w, int max_h);
-void bd_free(bd *w);
-int bd_field_boundary(bd *w, const uint8_t *labels, int wl, int hl, uint8_t green, int min_run, int16_t *top);
-int bd_candidates(bd *w, const uint8_t *labels, int wl, int hl, int scale, uint8_t green,
-                  const int16_t *top, const bd_view *view, double ball_r, int step, double min_inner,
-                  double max_ring, double min_radius_px, bd_candidate *out, int maxn);
-int bd_settle(const uint8_t *labels, int wl, int hl, int scale, uint8_t green, const int16_t *top, const bd_view *view,
-              double ball_r, bd_candidate *c);
-int bd_fit(const uint8_t *labels, int wl, int hl, int scale, uint8_t green, const int16_t *top, const bd_view *view,
-           double ball_r, double u0, double v0, bd_candidate *c);
-int bd_features(const uint8_t *yuyv, int width, int height, double u, double v, double radius,
-                double margin, float *out);
-bd_mlp *bd_mlp_load(const char *path, char *err, size_t errlen);
-void bd_mlp_free(bd_mlp *m);
-int bd_mlp_nin(const bd_mlp *m);
-double bd_mlp_margin(const bd_mlp *m);
-double bd_mlp_eval(const bd_mlp *m, const float *x);
-]]
+native.cdef('balldetect')   -- Modules/balldetect/balldetect.h
 
 local C = native.load('bd')
 

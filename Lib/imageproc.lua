@@ -11,29 +11,7 @@
 local ffi = require('ffi')
 local native = require('native')
 
-ffi.cdef [[
-typedef struct img_color_range {
-  uint8_t bit; uint8_t ymin, ymax, umin, umax, vmin, vmax;
-} img_color_range;
-typedef struct img_region {
-  int32_t area; int32_t xmin, xmax, ymin, ymax;
-  double cx, cy; double cxx, cyy, cxy; double axis_major, axis_minor; double orientation;
-} img_region;
-typedef struct img_cc img_cc;
-int img_lut_load(const char *path, uint8_t *lut, char *err, size_t errlen);
-int img_lut_save(const char *path, const uint8_t *lut, char *err, size_t errlen);
-int img_lut_add_ranges(uint8_t *lut, const img_color_range *ranges, int nranges);
-int img_label_yuyv(const uint8_t *yuyv, int width, int height, const uint8_t *lut, int scale,
-                   uint8_t *labels);
-int img_block_or(const uint8_t *labels, int w, int h, int bs, uint8_t *out);
-int img_count(const uint8_t *labels, int w, int h, uint8_t mask);
-img_cc *img_cc_new(int max_w, int max_h);
-void img_cc_free(img_cc *cc);
-int img_regions(img_cc *cc, const uint8_t *labels, int w, int h, uint8_t mask,
-                img_region *out, int maxn);
-int img_color_stats(const uint8_t *labels, int w, int h, uint8_t mask,
-                    int x0, int x1, int y0, int y1, img_region *out);
-]]
+native.cdef('imageproc')   -- Modules/imageproc/imageproc.h
 
 local C = native.load('img')
 

@@ -53,42 +53,7 @@ local native = require('native')
 local type, error, tostring, format, pairs, ipairs = type, error, tostring, string.format, pairs, ipairs
 local bor = require('bit').bor
 
-ffi.cdef [[
-typedef struct kin_chain_spec {
-  const char *name;
-  int kind, side;
-  int n;
-  const char *const *joints;
-  const char *tip;
-} kin_chain_spec;
-typedef struct kin_spec {
-  const char *urdf;
-  const char *config;
-  int njoint;
-  const char *const *joints;
-  int nchain;
-  const kin_chain_spec *chains;
-} kin_spec;
-typedef struct kin_model kin_model;
-int kin_model_load(const kin_spec *s, kin_model **out, char *err, size_t errlen);
-void kin_model_destroy(kin_model *m);
-int kin_njoint(const kin_model *m);
-double kin_total_mass(const kin_model *m);
-int kin_joint_info(const kin_model *m, int j, double *axis, double *qmin, double *qmax);
-int kin_chain_joints(const kin_model *m, int kind, int side, int *idx);
-int kin_link_poses(const kin_model *m, const double *q, double *out);
-int kin_leg_fk(const kin_model *m, int side, const double *q6, const double *qbase, double *pose,
-               double *rot);
-int kin_arm_fk(const kin_model *m, int side, const double *qn, const double *qbase, double *pos,
-               double *rot);
-int kin_head_fk(const kin_model *m, const double *q2, const double *qbase, double *pos, double *rot);
-int kin_camera_pose(const kin_model *m, const double *q, const double *rpy,
-                    double *pos, double *rot, double *height);
-int kin_com(const kin_model *m, const double *q, double *com);
-int kin_leg_ik(const kin_model *m, int side, const double *pose, const double *qbase, double *q6);
-int kin_arm_ik(const kin_model *m, int side, const double *pos, const double *qbase, double *qn);
-int kin_head_look_at(const kin_model *m, const double *target, const double *qbase, double *q2);
-]]
+native.cdef('kinematics')   -- Modules/kinematics/kinematics.h
 
 local C = native.load('kin')
 

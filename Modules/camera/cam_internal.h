@@ -6,6 +6,7 @@
 
 #include "camera/camera.h"
 #include "shm/shm.h"
+#include "errmsg.h"
 
 typedef struct cam_driver {
   const char *name;
@@ -51,8 +52,6 @@ void cam_note(cam_camera *cam, const char *fmt, ...) __attribute__((format(print
 void cam_clock(cam_camera *cam, double *time, double head[2], double angle[2]);
 /* Copies a delivered frame into camera.image (no-op without shm). */
 void cam_publish(cam_camera *cam, const cam_frame *frame);
-/* printf into err. */
-void cam_err(char *err, size_t errlen, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
 /* Monotonic wall time, s. */
 double cam_now(void);
 

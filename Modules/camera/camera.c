@@ -8,14 +8,6 @@
 #include <string.h>
 #include <time.h>
 
-void cam_err(char *err, size_t errlen, const char *fmt, ...) {
-  if (!err || errlen == 0) return;
-  va_list ap;
-  va_start(ap, fmt);
-  vsnprintf(err, errlen, fmt, ap);
-  va_end(ap);
-}
-
 void cam_note(cam_camera *cam, const char *fmt, ...) {
   char buf[sizeof cam->stats.last_error];
   va_list ap;
@@ -60,12 +52,12 @@ static void shm_release(cam_camera *cam) {
 static int shm_attach(cam_camera *cam, char *err, size_t errlen) {
   char e[512];
   if (shm_schema_load(NULL, &cam->schema, e, sizeof e) < 0) {
-    cam_err(err, errlen, "camera: shm schema: %s", e);
+    hrp_err(err, errlen, "camera: shm schema: %s", e);
     return CAM_ESHM;
   }
   if (shm_block_open(cam->schema, "camera.image", cam->robot_id, SHM_OPEN_CREATE, &cam->image, e,
                      sizeof e) < 0) {
-    cam_err(err, errlen, "camera: %s", e);
+    hrp_err(err, errlen, "camera: %s", e);
     shm_release(cam);
     return CAM_ESHM;
   }
@@ -79,7 +71,7 @@ static int shm_attach(cam_camera *cam, char *err, size_t errlen) {
   cam->img_angle = cam->img_head ? shm_field_require(b, "angle", SHM_F64, 2, e, sizeof e) : NULL;
   cam->img_yuyv = cam->img_angle ? shm_field_require(b, "yuyv", SHM_U8, 2, e, sizeof e) : NULL;
   if (!cam->img_yuyv) {
-    cam_err(err, errlen, "camera: %s", e);
+    hrp_err(err, errlen, "camera: %s", e);
     shm_release(cam);
     return CAM_ESHM;
   }
@@ -100,7 +92,7 @@ static int shm_attach(cam_camera *cam, char *err, size_t errlen) {
 }
 
 int cam_open(const cam_config *cfg, cam_camera **out, char *err, size_t errlen) {
-  if (!cfg || !out) { cam_err(err, errlen, "cam_open: NULL argument"); return CAM_EARG; }
+  if (!cfg || !out) { hrp_err(err, errlen, "cam_open: NULL argument"); return CAM_EARG; }
   *out = NULL;
   const cam_driver *drv = NULL;
   const char *name = cfg->driver ? cfg->driver : "(null)";
@@ -108,20 +100,20 @@ int cam_open(const cam_config *cfg, cam_camera **out, char *err, size_t errlen) 
   else if (strcmp(name, "dummy") == 0) drv = &cam_driver_dummy;
   else if (strcmp(name, "sim") == 0) drv = &cam_driver_sim;
   if (!drv) {
-    cam_err(err, errlen, "camera: unknown driver '%s' (v4l2, dummy or sim)", name);
+    hrp_err(err, errlen, "camera: unknown driver '%s' (v4l2, dummy or sim)", name);
     return CAM_EARG;
   }
   if (cfg->width <= 0 || cfg->height <= 0 || (cfg->width & 1) || cfg->width > 8192 ||
       cfg->height > 8192) {
-    cam_err(err, errlen, "camera: invalid size %dx%d (width must be even)", cfg->width, cfg->height);
+    hrp_err(err, errlen, "camera: invalid size %dx%d (width must be even)", cfg->width, cfg->height);
     return CAM_EARG;
   }
   if (cfg->fps < 0 || cfg->fps > 1000) {
-    cam_err(err, errlen, "camera: invalid fps %g", cfg->fps);
+    hrp_err(err, errlen, "camera: invalid fps %g", cfg->fps);
     return CAM_EARG;
   }
   cam_camera *cam = calloc(1, sizeof *cam);
-  if (!cam) { cam_err(err, errlen, "camera: out of memory"); return CAM_ENOMEM; }
+  if (!cam) { hrp_err(err, errlen, "camera: out of memory"); return CAM_ENOMEM; }
   cam->cfg = *cfg;
   snprintf(cam->device, sizeof cam->device, "%s", cfg->device ? cfg->device : "/dev/video0");
   cam->cfg.device = cam->device;
@@ -133,14 +125,14 @@ int cam_open(const cam_config *cfg, cam_camera **out, char *err, size_t errlen) 
   cam->robot_id = cfg->robot_id == 0 ? shm_robot_id() : cfg->robot_id;
   if (cfg->robot_id >= 0 || drv == &cam_driver_sim) {
     if (cfg->robot_id < 0) {
-      cam_err(err, errlen, "camera: the sim driver needs shm (robot_id >= 0)");
+      hrp_err(err, errlen, "camera: the sim driver needs shm (robot_id >= 0)");
       free(cam);
       return CAM_EARG;
     }
     int rc = shm_attach(cam, err, errlen);
     if (rc < 0) { free(cam); return rc; }
     if (drv != &cam_driver_sim && cfg->width * cfg->height * 2 > cam->img_capacity) {
-      cam_err(err, errlen, "camera: %dx%d frames do not fit camera.image (%d bytes; see cam_bytes in "
+      hrp_err(err, errlen, "camera: %dx%d frames do not fit camera.image (%d bytes; see cam_bytes in "
               "Config/shm.schema)", cfg->width, cfg->height, cam->img_capacity);
       shm_release(cam);
       free(cam);
@@ -159,7 +151,7 @@ int cam_open(const cam_config *cfg, cam_camera **out, char *err, size_t errlen) 
 }
 
 int cam_grab(cam_camera *cam, cam_frame *frame, double timeout_s, char *err, size_t errlen) {
-  if (!cam || !frame) { cam_err(err, errlen, "cam_grab: NULL argument"); return CAM_EARG; }
+  if (!cam || !frame) { hrp_err(err, errlen, "cam_grab: NULL argument"); return CAM_EARG; }
   int rc = cam->drv->grab(cam, frame, timeout_s, err, errlen);
   if (rc == 0) CAM_STATS(cam, cam->stats.frames++);
   return rc;

@@ -25,9 +25,9 @@ static uint64_t next_rand(uint64_t *s) {   /* xorshift64* */
 
 static int dummy_start(cam_camera *cam, char *err, size_t errlen) {
   dummy *d = calloc(1, sizeof *d);
-  if (!d) { cam_err(err, errlen, "camera dummy: out of memory"); return CAM_ENOMEM; }
+  if (!d) { hrp_err(err, errlen, "camera dummy: out of memory"); return CAM_ENOMEM; }
   d->buf = malloc((size_t)cam->cfg.width * cam->cfg.height * 2);
-  if (!d->buf) { free(d); cam_err(err, errlen, "camera dummy: out of memory"); return CAM_ENOMEM; }
+  if (!d->buf) { free(d); hrp_err(err, errlen, "camera dummy: out of memory"); return CAM_ENOMEM; }
   d->rng = 0x9E3779B97F4A7C15ULL ^ ((uint64_t)cam->cfg.seed << 1 | 1);
   d->next = cam_now();
   cam->priv = d;
@@ -80,7 +80,7 @@ static int dummy_grab(cam_camera *cam, cam_frame *f, double timeout_s, char *err
     double now = cam_now();
     if (d->next > now + timeout_s) {
       sleep_until(now + timeout_s);
-      cam_err(err, errlen, "camera dummy: no frame within %.3f s", timeout_s);
+      hrp_err(err, errlen, "camera dummy: no frame within %.3f s", timeout_s);
       return CAM_ETIMEOUT;
     }
     sleep_until(d->next);

@@ -16,7 +16,7 @@ static int sim_start(cam_camera *cam, char *err, size_t errlen) {
   simcam *s = calloc(1, sizeof *s);
   if (!s || !(s->buf = malloc((size_t)cam->img_capacity))) {
     free(s);
-    cam_err(err, errlen, "camera sim: out of memory");
+    hrp_err(err, errlen, "camera sim: out of memory");
     return CAM_ENOMEM;
   }
   cam->priv = s;
@@ -46,7 +46,7 @@ static int sim_grab(cam_camera *cam, cam_frame *f, double timeout_s, char *err, 
         if (shm_read_retry(cam->image, seq)) continue;
         if (!valid) {
           cam_note(cam, "camera sim: camera.image holds an invalid size %dx%d", w, hh);
-          cam_err(err, errlen, "camera sim: camera.image holds an invalid size %dx%d", w, hh);
+          hrp_err(err, errlen, "camera sim: camera.image holds an invalid size %dx%d", w, hh);
           s->last_frame = f->seq;
           s->have_last = 1;
           return CAM_EFORMAT;
@@ -69,11 +69,11 @@ static int sim_grab(cam_camera *cam, cam_frame *f, double timeout_s, char *err, 
   int pid_known = cam->sensor_pid && *cam->sensor_pid > 0 && shm_pid_alive(*cam->sensor_pid);
   CAM_STATS(cam, cam->stats.connected = pid_known);
   if (!pid_known) {
-    cam_err(err, errlen, "camera sim: no frame within %.3f s and no sim DCM running (start ./run_dcm)",
+    hrp_err(err, errlen, "camera sim: no frame within %.3f s and no sim DCM running (start ./run_dcm)",
             timeout_s);
     return CAM_ENODEV;
   }
-  cam_err(err, errlen, "camera sim: no new frame in camera.image within %.3f s", timeout_s);
+  hrp_err(err, errlen, "camera sim: no new frame in camera.image within %.3f s", timeout_s);
   return CAM_ETIMEOUT;
 }
 

@@ -124,7 +124,7 @@ static int dev_open(v4l2cam *v, char *msg, size_t len) {
   v->fd = open(dev, O_RDWR | O_NONBLOCK);
   if (v->fd < 0) {
     int e = errno;
-    cam_err(msg, len, "camera %s: cannot open: %s", dev, strerror(e));
+    hrp_err(msg, len, "camera %s: cannot open: %s", dev, strerror(e));
     return errno_rc(e);
   }
   int e = 0;
@@ -132,12 +132,12 @@ static int dev_open(v4l2cam *v, char *msg, size_t len) {
   memset(&cap, 0, sizeof cap);
   if (xioctl(v->fd, VIDIOC_QUERYCAP, &cap) < 0) {
     e = errno;
-    cam_err(msg, len, "camera %s: not a V4L2 device (VIDIOC_QUERYCAP: %s)", dev, strerror(e));
+    hrp_err(msg, len, "camera %s: not a V4L2 device (VIDIOC_QUERYCAP: %s)", dev, strerror(e));
     goto fail;
   }
   uint32_t caps = (cap.capabilities & V4L2_CAP_DEVICE_CAPS) ? cap.device_caps : cap.capabilities;
   if (!(caps & V4L2_CAP_VIDEO_CAPTURE) || !(caps & V4L2_CAP_STREAMING)) {
-    cam_err(msg, len, "camera %s: not a streaming capture device (caps %08x)", dev, caps);
+    hrp_err(msg, len, "camera %s: not a streaming capture device (caps %08x)", dev, caps);
     dev_close(v);
     return CAM_EFORMAT;
   }
@@ -150,14 +150,14 @@ static int dev_open(v4l2cam *v, char *msg, size_t len) {
   fmt.fmt.pix.field = V4L2_FIELD_ANY;
   if (xioctl(v->fd, VIDIOC_S_FMT, &fmt) < 0) {
     e = errno;
-    cam_err(msg, len, "camera %s: VIDIOC_S_FMT: %s", dev, strerror(e));
+    hrp_err(msg, len, "camera %s: VIDIOC_S_FMT: %s", dev, strerror(e));
     goto fail;
   }
   /* the driver may substitute another size or format: it must be exactly what we asked */
   if (fmt.fmt.pix.pixelformat != V4L2_PIX_FMT_YUYV || fmt.fmt.pix.width != (uint32_t)c->width ||
       fmt.fmt.pix.height != (uint32_t)c->height) {
     uint32_t pf = fmt.fmt.pix.pixelformat;
-    cam_err(msg, len, "camera %s: device offers %ux%u %c%c%c%c, config asks %dx%d YUYV", dev,
+    hrp_err(msg, len, "camera %s: device offers %ux%u %c%c%c%c, config asks %dx%d YUYV", dev,
             fmt.fmt.pix.width, fmt.fmt.pix.height, (char)(pf & 0xff), (char)((pf >> 8) & 0xff),
             (char)((pf >> 16) & 0xff), (char)(pf >> 24), c->width, c->height);
     dev_close(v);
@@ -183,11 +183,11 @@ static int dev_open(v4l2cam *v, char *msg, size_t len) {
   req.memory = V4L2_MEMORY_MMAP;
   if (xioctl(v->fd, VIDIOC_REQBUFS, &req) < 0) {
     e = errno;
-    cam_err(msg, len, "camera %s: VIDIOC_REQBUFS: %s", dev, strerror(e));
+    hrp_err(msg, len, "camera %s: VIDIOC_REQBUFS: %s", dev, strerror(e));
     goto fail;
   }
   if (req.count < 2 || req.count > MAX_BUFFERS) {
-    cam_err(msg, len, "camera %s: device granted %u buffers (need 2..%d)", dev, req.count, MAX_BUFFERS);
+    hrp_err(msg, len, "camera %s: device granted %u buffers (need 2..%d)", dev, req.count, MAX_BUFFERS);
     dev_close(v);
     return CAM_EFORMAT;
   }
@@ -199,34 +199,34 @@ static int dev_open(v4l2cam *v, char *msg, size_t len) {
     buf.index = i;
     if (xioctl(v->fd, VIDIOC_QUERYBUF, &buf) < 0) {
       e = errno;
-      cam_err(msg, len, "camera %s: VIDIOC_QUERYBUF %u: %s", dev, i, strerror(e));
+      hrp_err(msg, len, "camera %s: VIDIOC_QUERYBUF %u: %s", dev, i, strerror(e));
       goto fail;
     }
     void *p = mmap(NULL, buf.length, PROT_READ | PROT_WRITE, MAP_SHARED, v->fd, buf.m.offset);
     if (p == MAP_FAILED) {
       e = errno;
-      cam_err(msg, len, "camera %s: mmap of buffer %u: %s", dev, i, strerror(e));
+      hrp_err(msg, len, "camera %s: mmap of buffer %u: %s", dev, i, strerror(e));
       goto fail;
     }
     v->bufs[i].start = p;
     v->bufs[i].length = buf.length;
     v->nbufs = (int)i + 1;
     if (buf.length < v->sizeimage) {
-      cam_err(msg, len, "camera %s: buffer %u holds %u bytes, a frame needs %zu", dev, i, buf.length,
+      hrp_err(msg, len, "camera %s: buffer %u holds %u bytes, a frame needs %zu", dev, i, buf.length,
               v->sizeimage);
       dev_close(v);
       return CAM_EFORMAT;
     }
     if (xioctl(v->fd, VIDIOC_QBUF, &buf) < 0) {
       e = errno;
-      cam_err(msg, len, "camera %s: VIDIOC_QBUF %u: %s", dev, i, strerror(e));
+      hrp_err(msg, len, "camera %s: VIDIOC_QBUF %u: %s", dev, i, strerror(e));
       goto fail;
     }
   }
   enum v4l2_buf_type type = V4L2_BUF_TYPE_VIDEO_CAPTURE;
   if (xioctl(v->fd, VIDIOC_STREAMON, &type) < 0) {
     e = errno;
-    cam_err(msg, len, "camera %s: VIDIOC_STREAMON: %s", dev, strerror(e));
+    hrp_err(msg, len, "camera %s: VIDIOC_STREAMON: %s", dev, strerror(e));
     goto fail;
   }
   return 0;
@@ -249,7 +249,7 @@ static void set_state(v4l2cam *v, int connected, int rc, const char *reason) {
 
 static void lost(v4l2cam *v, const char *what, int e) {
   char msg[256];
-  cam_err(msg, sizeof msg, "camera %s: lost (%s: %s); reopening", v->cam->device, what, strerror(e));
+  hrp_err(msg, sizeof msg, "camera %s: lost (%s: %s); reopening", v->cam->device, what, strerror(e));
   dev_close(v);
   cam_camera *cam = v->cam;
   CAM_STATS(cam, cam->stats.lost++);
@@ -356,7 +356,7 @@ static void v4l2_free(v4l2cam *v) {
 
 static int v4l2_start(cam_camera *cam, char *err, size_t errlen) {
   v4l2cam *v = calloc(1, sizeof *v);
-  if (!v) { cam_err(err, errlen, "camera v4l2: out of memory"); return CAM_ENOMEM; }
+  if (!v) { hrp_err(err, errlen, "camera v4l2: out of memory"); return CAM_ENOMEM; }
   v->cam = cam;
   v->fd = -1;
   v->running = 1;
@@ -373,14 +373,14 @@ static int v4l2_start(cam_camera *cam, char *err, size_t errlen) {
   v->out = malloc(bytes);
   if (!v->ready || !v->out) {
     v4l2_free(v);
-    cam_err(err, errlen, "camera v4l2: out of memory");
+    hrp_err(err, errlen, "camera v4l2: out of memory");
     return CAM_ENOMEM;
   }
   cam->priv = v;
   if (pthread_create(&v->thread, NULL, capture_thread, v) != 0) {
     cam->priv = NULL;
     v4l2_free(v);
-    cam_err(err, errlen, "camera v4l2: cannot start the capture thread");
+    hrp_err(err, errlen, "camera v4l2: cannot start the capture thread");
     return CAM_ENOMEM;
   }
   v->thread_started = 1;
@@ -398,9 +398,9 @@ static int v4l2_grab(cam_camera *cam, cam_frame *f, double timeout_s, char *err,
   if (v->ready_seq == v->taken_seq) {
     int rc = v->connected ? CAM_ETIMEOUT : v->state_rc;
     if (v->connected)
-      cam_err(err, errlen, "camera %s: no frame within %.3f s", cam->device, timeout_s);
+      hrp_err(err, errlen, "camera %s: no frame within %.3f s", cam->device, timeout_s);
     else
-      cam_err(err, errlen, "%s", v->reason);
+      hrp_err(err, errlen, "%s", v->reason);
     pthread_mutex_unlock(&v->lock);
     return rc;
   }

@@ -34,3 +34,23 @@ int dcm_blocks_open(const shm_schema *schema, int robot_id, const char *block, c
   if (rc < 0) shm_block_close(b);
   return rc;
 }
+
+int dcm_robot_attach(int robot_id, shm_schema **schema, dcm_blk_dcm_sensor *sensor, dcm_blk_dcm_actuator *actuator,
+                     char *err, size_t errlen) {
+  int r = shm_schema_load(NULL, schema, err, errlen);
+  if (r < 0) return r;
+  if ((r = dcm_blocks_open(*schema, robot_id, DCM_BLK_dcm_sensor(sensor), err, errlen)) < 0 ||
+      (r = dcm_blocks_open(*schema, robot_id, DCM_BLK_dcm_actuator(actuator), err, errlen)) < 0) {
+    dcm_robot_detach(schema, sensor, actuator);
+    return r;
+  }
+  return 0;
+}
+
+void dcm_robot_detach(shm_schema **schema, dcm_blk_dcm_sensor *sensor, dcm_blk_dcm_actuator *actuator) {
+  if (sensor->blk) shm_block_close(sensor->blk);
+  if (actuator->blk) shm_block_close(actuator->blk);
+  if (*schema) shm_schema_free(*schema);
+  sensor->blk = actuator->blk = NULL;
+  *schema = NULL;
+}

@@ -280,3 +280,19 @@ int dcm_config_strs(const dcm_config *c, const char *key, char (*out)[DCM_NAME_M
   }
   return n;
 }
+
+int dcm_config_joints(const dcm_config *c, char (*joint)[DCM_NAME_MAX], double *lo, double *hi, char *err,
+                      size_t errlen) {
+  int nj = dcm_config_strs(c, "joints", joint, 1, DCM_NJ_MAX, err, errlen);
+  for (int j = 0; j < nj; j++) {
+    char key[128];
+    double lh[2];
+    snprintf(key, sizeof key, "limits.%s", joint[j]);
+    if (dcm_config_nums(c, key, lh, 2, 2, err, errlen) < 0) return -EINVAL;
+    if (!(lh[0] < lh[1]))
+      return dcm_config_fail(c, err, errlen, "limits.%s: min %g must be below max %g", joint[j], lh[0], lh[1]);
+    lo[j] = lh[0];
+    hi[j] = lh[1];
+  }
+  return nj;
+}

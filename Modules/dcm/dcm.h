@@ -75,6 +75,10 @@ int dcm_config_len(const dcm_config *c, const char *key, char *err, size_t errle
 int dcm_config_nums(const dcm_config *c, const char *key, double *out, int min, int max, char *err, size_t errlen);
 int dcm_config_strs(const dcm_config *c, const char *key, char (*out)[DCM_NAME_MAX], int min, int max, char *err,
                     size_t errlen);
+/* The robot's joint order (the list `joints`, 1..DCM_NJ_MAX names) and each joint's limits (rad,
+ * `limits.<joint>` = { min, max } with min below max) into lo and hi; returns the number of joints. */
+int dcm_config_joints(const dcm_config *c, char (*joint)[DCM_NAME_MAX], double *lo, double *hi, char *err,
+                      size_t errlen);
 /* Writes "<files>: <message>" into err (for checks of the caller's own); returns -EINVAL. */
 int dcm_config_fail(const dcm_config *c, char *err, size_t errlen, const char *fmt, ...)
     __attribute__((format(printf, 4, 5)));
@@ -89,6 +93,12 @@ int dcm_blocks_open(const shm_schema *schema, int robot_id, const char *block, c
 /* Binds a block that is already open. */
 int dcm_blocks_bind(shm_block *b, const char *block, const dcm_blk_field *fields, int nfields, void *out,
                     shm_block **blk, char *err, size_t errlen);
+/* A robot's dcm.sensor and dcm.actuator as a process beside its DCM sees them (an emulator serving a
+ * simulated robot): loads the schema into *schema and binds both blocks; on failure nothing stays open. */
+int dcm_robot_attach(int robot_id, shm_schema **schema, dcm_blk_dcm_sensor *sensor, dcm_blk_dcm_actuator *actuator,
+                     char *err, size_t errlen);
+/* Closes what dcm_robot_attach opened (any part of it; a second call does nothing). */
+void dcm_robot_detach(shm_schema **schema, dcm_blk_dcm_sensor *sensor, dcm_blk_dcm_actuator *actuator);
 
 /* ---------------------------------------------------------------- pacing */
 

@@ -224,13 +224,16 @@ int hcan_dec_current(const hcan_frame *f, double amps[2], double *temp) {
   return 0;
 }
 
-int hcan_dec_ft(const hcan_frame *f, double ft[3]) {
+/* Three signed 16-bit fields, each divided by its scale: the layout of the ft, tilt and power frames. */
+static int dec3(const hcan_frame *f, double out[3], double s0, double s1, double s2) {
   if (need(f, 6)) return HCAN_E_SHORT;
-  ft[0] = get16(f->data) / 100.0;
-  ft[1] = get16(f->data + 2) / 100.0;
-  ft[2] = get16(f->data + 4) / 10.0;
+  out[0] = get16(f->data) / s0;
+  out[1] = get16(f->data + 2) / s1;
+  out[2] = get16(f->data + 4) / s2;
   return 0;
 }
+
+int hcan_dec_ft(const hcan_frame *f, double ft[3]) { return dec3(f, ft, 100.0, 100.0, 10.0); }
 
 int hcan_dec_imu(const hcan_frame *f, double imu[4]) {
   if (need(f, 8)) return HCAN_E_SHORT;
@@ -239,20 +242,13 @@ int hcan_dec_imu(const hcan_frame *f, double imu[4]) {
 }
 
 int hcan_dec_tilt(const hcan_frame *f, double tilt[3]) {
-  if (need(f, 6)) return HCAN_E_SHORT;
-  tilt[0] = get16(f->data) / 100.0 * DEG;
-  tilt[1] = get16(f->data + 2) / 100.0 * DEG;
-  tilt[2] = get16(f->data + 4) / 750.0;
+  if (dec3(f, tilt, 100.0, 100.0, 750.0)) return HCAN_E_SHORT;
+  tilt[0] *= DEG;   /* 0.01 deg -> rad */
+  tilt[1] *= DEG;
   return 0;
 }
 
-int hcan_dec_power(const hcan_frame *f, double p[3]) {
-  if (need(f, 6)) return HCAN_E_SHORT;
-  p[0] = get16(f->data) / 100.0;
-  p[1] = get16(f->data + 2) / 100.0;
-  p[2] = get16(f->data + 4) / 10.0;
-  return 0;
-}
+int hcan_dec_power(const hcan_frame *f, double p[3]) { return dec3(f, p, 100.0, 100.0, 10.0); }
 
 /* ---------------------------------------------------------------- units */
 

@@ -34,19 +34,10 @@ double ht_counts_to_rad(const ht_channel *c, int32_t counts) {
 /* ---------------------------------------------------------------- the body */
 
 static int load_body(const dcm_config *c, ht_table *t, char *err, size_t n) {
-  int nj = dcm_config_strs(c, "joints", t->joint, 1, DCM_NJ_MAX, err, n);
+  int nj = dcm_config_joints(c, t->joint, t->lo, t->hi, err, n);
   if (nj < 0) return nj;
   t->nj = nj;
-  for (int j = 0; j < nj; j++) {
-    char key[128];
-    double lh[2];
-    snprintf(key, sizeof key, "limits.%s", t->joint[j]);
-    if (dcm_config_nums(c, key, lh, 2, 2, err, n) < 0) return -EINVAL;
-    if (!(lh[0] < lh[1])) return dcm_config_fail(c, err, n, "limits.%s: min %g must be below max %g", t->joint[j], lh[0], lh[1]);
-    t->lo[j] = lh[0];
-    t->hi[j] = lh[1];
-    t->joint_board[j] = t->joint_ch[j] = -1;
-  }
+  for (int j = 0; j < nj; j++) t->joint_board[j] = t->joint_ch[j] = -1;
   if (dcm_config_num(c, "period", &t->period, err, n) < 0) return -EINVAL;
   return dcm_config_str(c, "name", t->name, sizeof t->name, err, n);
 }

@@ -1,5 +1,7 @@
 /* imageproc: lookup-table labelling, block OR, connected regions, colour statistics. */
 #include "imageproc/imageproc.h"
+#include "imageproc/moments.h"
+#include "errmsg.h"
 
 #include <errno.h>
 #include <math.h>
@@ -8,14 +10,6 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
-
-static void set_err(char *err, size_t errlen, const char *fmt, ...) {
-  if (!err || errlen == 0) return;
-  va_list ap;
-  va_start(ap, fmt);
-  vsnprintf(err, errlen, fmt, ap);
-  va_end(ap);
-}
 
 /* ---------------------------------------------------------------- LUT files */
 
@@ -45,47 +39,47 @@ static void wr32(uint8_t *p, uint32_t v) {
 }
 
 int img_lut_load(const char *path, uint8_t *lut, char *err, size_t errlen) {
-  if (!path || !lut) { set_err(err, errlen, "img_lut_load: NULL argument"); return IMG_EARG; }
+  if (!path || !lut) { hrp_err(err, errlen, "img_lut_load: NULL argument"); return IMG_EARG; }
   FILE *f = fopen(path, "rb");
-  if (!f) { set_err(err, errlen, "LUT '%s': cannot open: %s", path, strerror(errno)); return IMG_EIO; }
+  if (!f) { hrp_err(err, errlen, "LUT '%s': cannot open: %s", path, strerror(errno)); return IMG_EIO; }
   uint8_t header[LUT_HEADER];
   size_t n = fread(header, 1, LUT_HEADER, f);
   if (n != LUT_HEADER || memcmp(header, IMG_LUT_MAGIC, 8) != 0) {
     fclose(f);
-    set_err(err, errlen, "LUT '%s': not a lookup table (bad magic; expected \"%s\" header)", path,
+    hrp_err(err, errlen, "LUT '%s': not a lookup table (bad magic; expected \"%s\" header)", path,
             IMG_LUT_MAGIC);
     return IMG_EFORMAT;
   }
   uint32_t count = rd32(header + 8), crc = rd32(header + 12);
   if (count != IMG_LUT_SIZE) {
     fclose(f);
-    set_err(err, errlen, "LUT '%s': has %u entries, expected %d", path, count, IMG_LUT_SIZE);
+    hrp_err(err, errlen, "LUT '%s': has %u entries, expected %d", path, count, IMG_LUT_SIZE);
     return IMG_EFORMAT;
   }
   n = fread(lut, 1, IMG_LUT_SIZE, f);
   int extra = fgetc(f);
   int rerr = ferror(f);
   fclose(f);
-  if (rerr) { set_err(err, errlen, "LUT '%s': read error", path); return IMG_EIO; }
+  if (rerr) { hrp_err(err, errlen, "LUT '%s': read error", path); return IMG_EIO; }
   if (n != IMG_LUT_SIZE || extra != EOF) {
-    set_err(err, errlen, "LUT '%s': wrong size (%s; expected %d bytes)", path,
+    hrp_err(err, errlen, "LUT '%s': wrong size (%s; expected %d bytes)", path,
             n != IMG_LUT_SIZE ? "truncated" : "trailing data", LUT_HEADER + IMG_LUT_SIZE);
     return IMG_EFORMAT;
   }
   uint32_t got = img_crc32(lut, IMG_LUT_SIZE);
   if (got != crc) {
-    set_err(err, errlen, "LUT '%s': corrupt (checksum %08x, header says %08x)", path, got, crc);
+    hrp_err(err, errlen, "LUT '%s': corrupt (checksum %08x, header says %08x)", path, got, crc);
     return IMG_EFORMAT;
   }
   return 0;
 }
 
 int img_lut_save(const char *path, const uint8_t *lut, char *err, size_t errlen) {
-  if (!path || !lut) { set_err(err, errlen, "img_lut_save: NULL argument"); return IMG_EARG; }
+  if (!path || !lut) { hrp_err(err, errlen, "img_lut_save: NULL argument"); return IMG_EARG; }
   char tmp[4096];
   snprintf(tmp, sizeof tmp, "%s.tmp.%d", path, (int)getpid());
   FILE *f = fopen(tmp, "wb");
-  if (!f) { set_err(err, errlen, "LUT '%s': cannot write: %s", path, strerror(errno)); return IMG_EIO; }
+  if (!f) { hrp_err(err, errlen, "LUT '%s': cannot write: %s", path, strerror(errno)); return IMG_EIO; }
   uint8_t header[LUT_HEADER];
   memcpy(header, IMG_LUT_MAGIC, 8);
   wr32(header + 8, IMG_LUT_SIZE);
@@ -94,7 +88,7 @@ int img_lut_save(const char *path, const uint8_t *lut, char *err, size_t errlen)
            fwrite(lut, 1, IMG_LUT_SIZE, f) == IMG_LUT_SIZE;
   ok = (fclose(f) == 0) && ok;
   if (!ok || rename(tmp, path) != 0) {
-    set_err(err, errlen, "LUT '%s': write failed: %s", path, strerror(errno));
+    hrp_err(err, errlen, "LUT '%s': write failed: %s", path, strerror(errno));
     unlink(tmp);
     return IMG_EIO;
   }
@@ -203,56 +197,6 @@ int img_count(const uint8_t *labels, int w, int h, uint8_t mask) {
   return n;
 }
 
-/* ---------------------------------------------------------------- moments */
-
-typedef struct acc {
-  int64_t area, sx, sy, sxx, syy, sxy;
-  int32_t xmin, xmax, ymin, ymax;
-} acc;
-
-static void acc_init(acc *a) {
-  memset(a, 0, sizeof *a);
-  a->xmin = a->ymin = INT32_MAX;
-  a->xmax = a->ymax = -1;
-}
-
-/* Adds the horizontal run x0..x1 (inclusive) on row y. */
-static inline void acc_run(acc *a, int64_t x0, int64_t x1, int64_t y) {
-  int64_t n = x1 - x0 + 1;
-  int64_t sx = (x0 + x1) * n / 2;
-  /* sum of x^2 for x in [x0, x1] = S(x1) - S(x0 - 1), S(k) = k(k+1)(2k+1)/6 */
-  int64_t s1 = x1 * (x1 + 1) * (2 * x1 + 1) / 6, s0 = (x0 - 1) * x0 * (2 * x0 - 1) / 6;
-  a->area += n;
-  a->sx += sx;
-  a->sy += n * y;
-  a->sxx += s1 - s0;
-  a->syy += n * y * y;
-  a->sxy += sx * y;
-  if (x0 < a->xmin) a->xmin = (int32_t)x0;
-  if (x1 > a->xmax) a->xmax = (int32_t)x1;
-  if (y < a->ymin) a->ymin = (int32_t)y;
-  if (y > a->ymax) a->ymax = (int32_t)y;
-}
-
-static void acc_finish(const acc *a, img_region *r) {
-  memset(r, 0, sizeof *r);
-  r->area = (int32_t)a->area;
-  if (a->area == 0) return;
-  r->xmin = a->xmin; r->xmax = a->xmax; r->ymin = a->ymin; r->ymax = a->ymax;
-  double n = (double)a->area;
-  r->cx = (double)a->sx / n;
-  r->cy = (double)a->sy / n;
-  r->cxx = (double)a->sxx / n - r->cx * r->cx + 1.0 / 12;   /* + pixel's own extent */
-  r->cyy = (double)a->syy / n - r->cy * r->cy + 1.0 / 12;
-  r->cxy = (double)a->sxy / n - r->cx * r->cy;
-  double m = 0.5 * (r->cxx + r->cyy);
-  double d = sqrt(0.25 * (r->cxx - r->cyy) * (r->cxx - r->cyy) + r->cxy * r->cxy);
-  double l1 = m + d, l2 = m - d;
-  r->axis_major = 4.0 * sqrt(l1 > 0 ? l1 : 0);
-  r->axis_minor = 4.0 * sqrt(l2 > 0 ? l2 : 0);
-  r->orientation = 0.5 * atan2(2.0 * r->cxy, r->cxx - r->cyy);
-}
-
 int img_color_stats(const uint8_t *labels, int w, int h, uint8_t mask,
                     int x0, int x1, int y0, int y1, img_region *out) {
   if (!labels || !out || w <= 0 || h <= 0) return IMG_EARG;
@@ -260,8 +204,8 @@ int img_color_stats(const uint8_t *labels, int w, int h, uint8_t mask,
   if (y0 < 0) y0 = 0;
   if (x1 > w - 1) x1 = w - 1;
   if (y1 > h - 1) y1 = h - 1;
-  acc a;
-  acc_init(&a);
+  img_acc a;
+  img_acc_init(&a);
   for (int y = y0; y <= y1; y++) {
     const uint8_t *row = labels + (size_t)y * w;
     int x = x0;
@@ -270,10 +214,10 @@ int img_color_stats(const uint8_t *labels, int w, int h, uint8_t mask,
       if (x > x1) break;
       int s = x;
       while (x <= x1 && (row[x] & mask)) x++;
-      acc_run(&a, s, x - 1, y);
+      img_acc_run(&a, s, x - 1, y);
     }
   }
-  acc_finish(&a, out);
+  img_acc_finish(&a, out);
   return 0;
 }
 
@@ -294,7 +238,7 @@ struct img_cc {
   int32_t *area;     /* per region: pixels */
   int32_t *slot;     /* per region: its place among the regions returned, -1 none */
   int32_t *sel;      /* the regions returned, largest first */
-  acc *accs;         /* per region returned */
+  img_acc *accs;         /* per region returned */
 };
 
 img_cc *img_cc_new(int max_w, int max_h) {
@@ -435,16 +379,16 @@ int img_regions(img_cc *cc, const uint8_t *labels, int w, int h, uint8_t mask,
     sel[pos] = g;
   }
   /* moments only of the regions returned: a noisy image has thousands of specks nobody asked about */
-  acc *accs = cc->accs;
+  img_acc *accs = cc->accs;
   for (int k = 0; k < nout; k++) {
     slot[sel[k]] = k;
-    acc_init(&accs[k]);
+    img_acc_init(&accs[k]);
   }
   if (nout > 0)
     for (int32_t i = 0; i < nruns; i++) {
       const int32_t k = slot[regid[i]];
-      if (k >= 0) acc_run(&accs[k], runs[i].x0, runs[i].x1, runs[i].y);
+      if (k >= 0) img_acc_run(&accs[k], runs[i].x0, runs[i].x1, runs[i].y);
     }
-  for (int k = 0; k < nout; k++) acc_finish(&accs[k], &out[k]);
+  for (int k = 0; k < nout; k++) img_acc_finish(&accs[k], &out[k]);
   return nreg;
 }

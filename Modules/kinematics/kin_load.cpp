@@ -3,6 +3,7 @@
 // frame at the zero pose and hands it to kin_model_create.
 #include "description/description.h"
 #include "kinematics/kinematics.h"
+#include "kinematics/kin_arrays.hpp"
 
 #include <cstdio>
 #include <map>
@@ -53,32 +54,24 @@ extern "C" int kin_model_load(const kin_spec *s, kin_model **out, char *err, siz
   std::vector<desc::Vec3> pos;
   std::vector<desc::Mat3> rot;
   md.zero_pose(&pos, &rot);
-  std::vector<int> parent(n);
-  std::vector<double> axis(3 * n), anchor(3 * n), com(3 * n), mass(n), qmin(n), qmax(n);
+  KinArrays arr(n);
   for (int j = 0; j < n; j++) {
     const int li = link_of[j];
     const desc::Link &l = md.links[li];
     const int pl = l.parent;
-    parent[j] = pl <= 0 ? -1 : index.at(md.links[pl].joint);
+    arr.parent[j] = pl <= 0 ? -1 : index.at(md.links[pl].joint);
     desc::Vec3 a = rot[li] * l.axis, c = pos[li] + rot[li] * l.com;
     for (int k = 0; k < 3; k++) {
-      axis[3 * j + k] = a[k];
-      anchor[3 * j + k] = pos[li][k];
-      com[3 * j + k] = c[k];
+      arr.axis[3 * j + k] = a[k];
+      arr.anchor[3 * j + k] = pos[li][k];
+      arr.com[3 * j + k] = c[k];
     }
-    mass[j] = l.mass;
-    qmin[j] = l.lower;
-    qmax[j] = l.upper;
+    arr.mass[j] = l.mass;
+    arr.qmin[j] = l.lower;
+    arr.qmax[j] = l.upper;
   }
   kin_desc d{};
-  d.njoint = n;
-  d.parent = parent.data();
-  d.axis = axis.data();
-  d.anchor = anchor.data();
-  d.mass = mass.data();
-  d.com = com.data();
-  d.qmin = qmin.data();
-  d.qmax = qmax.data();
+  arr.describe(d);
   d.names = s->joints;
   const desc::Link &torso = md.links[0];
   d.torso_mass = torso.mass;

@@ -2,6 +2,7 @@
 // joint tree in any order, analytic 6-joint leg IK, damped least squares arm IK of any length,
 // head look-at, centre of mass. See kinematics.h; kin_load.cpp reads a URDF into a kin_desc.
 #include "kinematics/kinematics.h"
+#include "errmsg.h"
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -67,14 +68,6 @@ struct kin_model {
 };
 
 namespace {
-
-void set_err(char *err, size_t errlen, const char *fmt, ...) {
-  if (!err || errlen == 0) return;
-  va_list ap;
-  va_start(ap, fmt);
-  vsnprintf(err, errlen, fmt, ap);
-  va_end(ap);
-}
 
 inline bool finite3(const Vector3d &v) { return std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z()); }
 
@@ -179,19 +172,19 @@ bool setup_chain(kin_model *m, const kin_desc *d, const kin_chain &c, Chain *out
   const std::string what = chain_label(c);
   const int want = c.kind == KIN_LEG ? 6 : c.kind == KIN_HEAD ? 2 : -1;
   if (!c.joints || c.n < 1 || (want > 0 && c.n != want) || (c.kind == KIN_ARM && c.n > KIN_MAXARM)) {
-    if (want > 0) set_err(err, errlen, "%s: needs %d joints, has %d", what.c_str(), want, c.n);
-    else set_err(err, errlen, "%s: needs 1..%d joints, has %d", what.c_str(), KIN_MAXARM, c.n);
+    if (want > 0) hrp_err(err, errlen, "%s: needs %d joints, has %d", what.c_str(), want, c.n);
+    else hrp_err(err, errlen, "%s: needs 1..%d joints, has %d", what.c_str(), KIN_MAXARM, c.n);
     return false;
   }
   out->idx.assign(c.joints, c.joints + c.n);
   for (int k = 0; k < c.n; k++) {
     const int j = c.joints[k];
     if (j < 0 || j >= d->njoint) {
-      set_err(err, errlen, "%s: joint %d: index %d out of range", what.c_str(), k + 1, j);
+      hrp_err(err, errlen, "%s: joint %d: index %d out of range", what.c_str(), k + 1, j);
       return false;
     }
     if (k > 0 && m->joints[j].parent != c.joints[k - 1]) {
-      set_err(err, errlen, "%s: joint %s does not hang from the chain's previous joint %s", what.c_str(),
+      hrp_err(err, errlen, "%s: joint %s does not hang from the chain's previous joint %s", what.c_str(),
               joint_label(d, j).c_str(), joint_label(d, c.joints[k - 1]).c_str());
       return false;
     }
@@ -202,7 +195,7 @@ bool setup_chain(kin_model *m, const kin_desc *d, const kin_chain &c, Chain *out
     for (int k = 0; k < 3; k++) out->tip_rot(i, k) = c.tip_rot[3 * i + k];
   if (!finite3(out->tip) || !out->tip_rot.allFinite() ||
       (out->tip_rot.transpose() * out->tip_rot - Matrix3d::Identity()).norm() > 1e-6 || out->tip_rot.determinant() < 0) {
-    set_err(err, errlen, "%s: the tip frame is not a finite point with a rotation", what.c_str());
+    hrp_err(err, errlen, "%s: the tip frame is not a finite point with a rotation", what.c_str());
     return false;
   }
   out->present = true;
@@ -217,7 +210,7 @@ bool setup_leg(kin_model *m, const kin_desc *d, const kin_chain &c, char *err, s
   static const char *names[6] = {"hip yaw", "hip roll", "hip pitch", "knee", "ankle pitch", "ankle roll"};
   for (int k = 0; k < 6; k++) {
     if (!is_axis(m->joints[C.idx[k]].axis, canon[k], &L.sign[k])) {
-      set_err(err, errlen, "%s: %s joint %s: axis must be along %c for the analytic leg IK", what.c_str(), names[k],
+      hrp_err(err, errlen, "%s: %s joint %s: axis must be along %c for the analytic leg IK", what.c_str(), names[k],
               joint_label(d, C.idx[k]).c_str(), "xyz"[canon[k]]);
       return false;
     }
@@ -226,11 +219,11 @@ bool setup_leg(kin_model *m, const kin_desc *d, const kin_chain &c, char *err, s
                  &rp = m->joints[C.idx[2]].anchor, &rk = m->joints[C.idx[3]].anchor,
                  &rap = m->joints[C.idx[4]].anchor, &rar = m->joints[C.idx[5]].anchor;
   if (std::fabs(rr.z() - rp.z()) > kAxisTol) {
-    set_err(err, errlen, "%s: hip roll and hip pitch axes do not meet (z %g vs %g)", what.c_str(), rr.z(), rp.z());
+    hrp_err(err, errlen, "%s: hip roll and hip pitch axes do not meet (z %g vs %g)", what.c_str(), rr.z(), rp.z());
     return false;
   }
   if (std::fabs(rap.z() - rar.z()) > kAxisTol) {
-    set_err(err, errlen, "%s: ankle pitch and roll axes do not meet (z %g vs %g)", what.c_str(), rap.z(), rar.z());
+    hrp_err(err, errlen, "%s: ankle pitch and roll axes do not meet (z %g vs %g)", what.c_str(), rap.z(), rar.z());
     return false;
   }
   L.yaw_pt = ry_;
@@ -246,7 +239,7 @@ bool setup_leg(kin_model *m, const kin_desc *d, const kin_chain &c, char *err, s
   L.ls2 = L.sx * L.sx + L.sz * L.sz;
   L.lts = std::sqrt(L.lt2 * L.ls2);
   if (L.lts < 1e-6) {
-    set_err(err, errlen, "%s: thigh or tibia has no length", what.c_str());
+    hrp_err(err, errlen, "%s: thigh or tibia has no length", what.c_str());
     return false;
   }
   // t . Ry(d) s = P cos d + Q sin d = |t||s| cos(d - phi)
@@ -266,23 +259,23 @@ bool setup_head(kin_model *m, const kin_desc *d, const kin_chain &c, char *err, 
     // the optical axis must not lie along either axis: each tilt must move it
     Vector3d opt = H.tip_rot.col(0);
     if (opt.cross(a0).norm() < 0.1 || opt.cross(a1).norm() < 0.1) {
-      set_err(err, errlen, "%s: the camera's optical axis (the tip frame's x) lies along a tilt axis", what.c_str());
+      hrp_err(err, errlen, "%s: the camera's optical axis (the tip frame's x) lies along a tilt axis", what.c_str());
       return false;
     }
     return true;
   }
   if (!is_axis(a0, 2, &m->head_sign[0])) {
-    set_err(err, errlen, "%s: pan joint %s: axis must be along z for look-at (or two horizontal tilt axes)",
+    hrp_err(err, errlen, "%s: pan joint %s: axis must be along z for look-at (or two horizontal tilt axes)",
             what.c_str(), joint_label(d, H.idx[0]).c_str());
     return false;
   }
   if (!is_axis(a1, 1, &m->head_sign[1])) {
-    set_err(err, errlen, "%s: tilt joint %s: axis must be along y for look-at", what.c_str(),
+    hrp_err(err, errlen, "%s: tilt joint %s: axis must be along y for look-at", what.c_str(),
             joint_label(d, H.idx[1]).c_str());
     return false;
   }
   if (std::fabs(H.tip_rot(1, 0)) > 1e-9) {
-    set_err(err, errlen, "%s: the camera's optical axis (the tip frame's x) must be perpendicular to the tilt axis",
+    hrp_err(err, errlen, "%s: the camera's optical axis (the tip frame's x) must be perpendicular to the tilt axis",
             what.c_str());
     return false;
   }
@@ -360,7 +353,7 @@ bool sort_joints(kin_model *m, const kin_desc *d, char *err, size_t errlen) {
     int k = 0;
     for (int p = m->joints[j].parent; p >= 0; p = m->joints[p].parent) {
       if (++k > n) {
-        set_err(err, errlen, "joint %s: its parents form a cycle", joint_label(d, j).c_str());
+        hrp_err(err, errlen, "joint %s: its parents form a cycle", joint_label(d, j).c_str());
         return false;
       }
     }
@@ -384,18 +377,18 @@ extern "C" {
 
 int kin_model_create(const kin_desc *d, kin_model **out, char *err, size_t errlen) {
   if (!d || !out) {
-    set_err(err, errlen, "kin_model_create: NULL argument");
+    hrp_err(err, errlen, "kin_model_create: NULL argument");
     return KIN_EINVAL;
   }
   *out = nullptr;
   if (d->njoint <= 0 || d->njoint > KIN_MAXJ || !d->parent || !d->axis || !d->anchor || !d->mass || !d->com ||
       d->nchain < 0 || (d->nchain > 0 && !d->chains)) {
-    set_err(err, errlen, "kin_model_create: need 1..%d joints with parent, axis, anchor, mass, com", KIN_MAXJ);
+    hrp_err(err, errlen, "kin_model_create: need 1..%d joints with parent, axis, anchor, mass, com", KIN_MAXJ);
     return KIN_EINVAL;
   }
   kin_model *m = new (std::nothrow) kin_model();
   if (!m) {
-    set_err(err, errlen, "kin_model_create: out of memory");
+    hrp_err(err, errlen, "kin_model_create: out of memory");
     return KIN_EMODEL;
   }
   auto fail = [&]() {
@@ -420,7 +413,7 @@ int kin_model_create(const kin_desc *d, kin_model **out, char *err, size_t errle
     else if (!std::isfinite(J.mass) || J.mass < 0) bad = "mass must be finite and >= 0";
     else if (std::isnan(J.qmin) || std::isnan(J.qmax) || J.qmin > J.qmax) bad = "limits: need min <= max";
     if (bad) {
-      set_err(err, errlen, "joint %s: %s", joint_label(d, j).c_str(), bad);
+      hrp_err(err, errlen, "joint %s: %s", joint_label(d, j).c_str(), bad);
       return fail();
     }
     J.axis.normalize();
@@ -432,19 +425,19 @@ int kin_model_create(const kin_desc *d, kin_model **out, char *err, size_t errle
   m->origin = Vector3d(d->origin[0], d->origin[1], d->origin[2]);
   if (!std::isfinite(d->torso_mass) || d->torso_mass < 0 || !finite3(m->torso_com) || !finite3(m->origin) ||
       !(m->total_mass > 0)) {
-    set_err(err, errlen, "torso mass/com or origin not finite, or total mass not positive");
+    hrp_err(err, errlen, "torso mass/com or origin not finite, or total mass not positive");
     return fail();
   }
   for (int i = 0; i < d->nchain; i++) {
     const kin_chain &c = d->chains[i];
     const bool sided = c.kind == KIN_LEG || c.kind == KIN_ARM;
     if ((!sided && c.kind != KIN_HEAD) || (sided && c.side != KIN_LEFT && c.side != KIN_RIGHT)) {
-      set_err(err, errlen, "%s: unknown kind %d or side %d", chain_label(c).c_str(), c.kind, c.side);
+      hrp_err(err, errlen, "%s: unknown kind %d or side %d", chain_label(c).c_str(), c.kind, c.side);
       return fail();
     }
     Chain *C = c.kind == KIN_LEG ? &m->leg[c.side] : c.kind == KIN_ARM ? &m->arm[c.side] : &m->head;
     if (C->present) {
-      set_err(err, errlen, "%s: a second chain of this kind", chain_label(c).c_str());
+      hrp_err(err, errlen, "%s: a second chain of this kind", chain_label(c).c_str());
       return fail();
     }
     if (!setup_chain(m, d, c, C, err, errlen)) return fail();
@@ -492,44 +485,39 @@ int kin_link_poses(const kin_model *m, const double *q, double *out) {
   return flags;
 }
 
-int kin_leg_fk(const kin_model *m, int side, const double *q6, const double *qbase, double *pose, double *rot) {
-  if (!m || !q6 || !pose) return KIN_EINVAL;
-  const Chain *c = find_chain(m, KIN_LEG, side);
+// Forward kinematics of chain (kind, side) from the chain's own angles q (and qbase above it): the
+// tip's position into pos (3), its rotation into rot (9, if not NULL) and *tip (if not NULL). A flag
+// set, or KIN_ENOCHAIN (a side the body lacks) / KIN_EINVAL (a side that is not 0 or 1).
+static int chain_fk(const kin_model *m, int kind, int side, const double *q, const double *qbase, double *pos,
+                    double *rot, Pose *tip) {
+  const Chain *c = find_chain(m, kind, side);
   if (!c) return side == 0 || side == 1 ? KIN_ENOCHAIN : KIN_EINVAL;
   int flags = 0;
   double qfull[KIN_MAXJ];
-  fill_full(m, *c, q6, qbase, qfull);
-  Pose F = tip_pose(m, *c, qfull, &flags);
-  for (int k = 0; k < 3; k++) pose[k] = F.p[k];
-  rot_to_rpy(F.R, pose + 3);
-  if (rot) put_rot(F.R, rot);
+  fill_full(m, *c, q, qbase, qfull);
+  Pose T = tip_pose(m, *c, qfull, &flags);
+  for (int k = 0; k < 3; k++) pos[k] = T.p[k];
+  if (rot) put_rot(T.R, rot);
+  if (tip) *tip = T;
+  return flags;
+}
+
+int kin_leg_fk(const kin_model *m, int side, const double *q6, const double *qbase, double *pose, double *rot) {
+  if (!m || !q6 || !pose) return KIN_EINVAL;
+  Pose F;
+  int flags = chain_fk(m, KIN_LEG, side, q6, qbase, pose, rot, &F);
+  if (flags >= 0) rot_to_rpy(F.R, pose + 3);
   return flags;
 }
 
 int kin_arm_fk(const kin_model *m, int side, const double *qn, const double *qbase, double *pos, double *rot) {
   if (!m || !qn || !pos) return KIN_EINVAL;
-  const Chain *c = find_chain(m, KIN_ARM, side);
-  if (!c) return side == 0 || side == 1 ? KIN_ENOCHAIN : KIN_EINVAL;
-  int flags = 0;
-  double qfull[KIN_MAXJ];
-  fill_full(m, *c, qn, qbase, qfull);
-  Pose H = tip_pose(m, *c, qfull, &flags);
-  for (int k = 0; k < 3; k++) pos[k] = H.p[k];
-  if (rot) put_rot(H.R, rot);
-  return flags;
+  return chain_fk(m, KIN_ARM, side, qn, qbase, pos, rot, nullptr);
 }
 
 int kin_head_fk(const kin_model *m, const double *q2, const double *qbase, double *pos, double *rot) {
   if (!m || !q2 || !pos) return KIN_EINVAL;
-  const Chain *c = find_chain(m, KIN_HEAD, 0);
-  if (!c) return KIN_ENOCHAIN;
-  int flags = 0;
-  double qfull[KIN_MAXJ];
-  fill_full(m, *c, q2, qbase, qfull);
-  Pose C = tip_pose(m, *c, qfull, &flags);
-  for (int k = 0; k < 3; k++) pos[k] = C.p[k];
-  if (rot) put_rot(C.R, rot);
-  return flags;
+  return chain_fk(m, KIN_HEAD, 0, q2, qbase, pos, rot, nullptr);
 }
 
 int kin_camera_pose(const kin_model *m, const double *q, const double *rpy, double *pos, double *rot,

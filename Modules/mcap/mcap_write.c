@@ -197,6 +197,17 @@ int mcap_writer_message(mcap_writer *w, int channel, uint32_t sequence, uint64_t
   return w->chunk.len >= w->chunk_bytes ? close_chunk(w) : 0;
 }
 
+/* Writes the record staged in w->rec (it began at offset start), then stages the start of its summary
+ * index record: the record's offset and length. */
+static int emit_indexed(mcap_writer *w, uint8_t op, uint64_t start) {
+  int rc = emit(w, op, NULL);
+  if (rc < 0) return rc;
+  w->rec.len = 0;
+  mb_u64(&w->rec, start);
+  mb_u64(&w->rec, w->pos - start);
+  return 0;
+}
+
 int mcap_writer_attachment(mcap_writer *w, const char *name, const char *media_type, uint64_t log_time,
                            const void *data, size_t len) {
   const uint64_t start = w->pos;
@@ -208,11 +219,8 @@ int mcap_writer_attachment(mcap_writer *w, const char *name, const char *media_t
   mb_u64(&w->rec, len);
   mb_put(&w->rec, data, len);
   mb_u32(&w->rec, w->rec.oom ? 0 : mcap_crc32(0, w->rec.p, w->rec.len));
-  int rc = emit(w, OP_ATTACHMENT, NULL);
+  int rc = emit_indexed(w, OP_ATTACHMENT, start);
   if (rc < 0) return rc;
-  w->rec.len = 0;
-  mb_u64(&w->rec, start);
-  mb_u64(&w->rec, w->pos - start);
   mb_u64(&w->rec, log_time);
   mb_u64(&w->rec, log_time);
   mb_u64(&w->rec, len);
@@ -227,11 +235,8 @@ int mcap_writer_metadata(mcap_writer *w, const char *name, const char *const *me
   w->rec.len = 0;
   mb_str(&w->rec, name);
   mb_map(&w->rec, meta, meta ? nmeta : 0);
-  int rc = emit(w, OP_METADATA, NULL);
+  int rc = emit_indexed(w, OP_METADATA, start);
   if (rc < 0) return rc;
-  w->rec.len = 0;
-  mb_u64(&w->rec, start);
-  mb_u64(&w->rec, w->pos - start);
   mb_str(&w->rec, name);
   w->metadata++;
   return emit(w, OP_METADATA_INDEX, &w->metadata_index);

@@ -42,18 +42,9 @@ double op_count_to_rad(const op_servo *s, int count) { return s->dir * (count - 
 /* ---------------------------------------------------------------- reading */
 
 static int load_joints(const dcm_config *c, op_body *b, char *err, size_t n) {
-  int nj = dcm_config_strs(c, "joints", b->joint, 1, DCM_NJ_MAX, err, n);
+  int nj = dcm_config_joints(c, b->joint, b->lo, b->hi, err, n);
   if (nj < 0) return nj;
   b->nj = nj;
-  for (int j = 0; j < nj; j++) {
-    char key[128];
-    double lh[2];
-    snprintf(key, sizeof key, "limits.%s", b->joint[j]);
-    if (dcm_config_nums(c, key, lh, 2, 2, err, n) < 0) return -EINVAL;
-    if (!(lh[0] < lh[1])) return dcm_config_fail(c, err, n, "limits.%s: min %g must be below max %g", b->joint[j], lh[0], lh[1]);
-    b->lo[j] = lh[0];
-    b->hi[j] = lh[1];
-  }
   if (dcm_config_num(c, "period", &b->period, err, n) < 0) return -EINVAL;
   return dcm_config_str(c, "name", b->name, sizeof b->name, err, n);
 }

@@ -159,25 +159,28 @@ static void board_frames(void) {
 }
 
 static void identifiers(void) {
-  int num;
+  static const struct {
+    uint32_t id;
+    hcan_kind kind;
+    int num;   /* -1: not checked */
+    const char *name;
+  } cases[] = {
+    {0x013, HCAN_K_REF, 3, "3: 0x013 is board 3's reference"},
+    {0x041, HCAN_K_FT, 1, "3: 0x041 is sensor 1's F/T"},
+    {0x053, HCAN_K_IMU, 3, "3: 0x053 is sensor 3's IMU reply"},
+    {0x06E, HCAN_K_ENC, 0x0E, "3: 0x06E lies in the encoder range (power board 0x0E)"},
+    {0x17F, HCAN_K_STATUS, 0x2F, "3: 0x17F is board 0x2F's status"},
+    {0x1C0, HCAN_K_CURRENT, 0, "3: 0x1C0 is board 0's current"},
+    {0x7FF, HCAN_K_NONE, -1, "an unused identifier is none of them"},
+    {HCAN_EFF | 0x063, HCAN_K_NONE, -1, "an extended identifier is none of them"},
+    {HCAN_ERR | 0x004, HCAN_K_ERROR, -1, "an error frame is classified as one"},
+  };
   hcan_frame f = F(0x013, 6, 0, 0, 0, 0, 0, 0);
-  check(hcan_classify(&f, &num) == HCAN_K_REF && num == 3, "3: 0x013 is board 3's reference");
-  f.id = 0x041;
-  check(hcan_classify(&f, &num) == HCAN_K_FT && num == 1, "3: 0x041 is sensor 1's F/T");
-  f.id = 0x053;
-  check(hcan_classify(&f, &num) == HCAN_K_IMU && num == 3, "3: 0x053 is sensor 3's IMU reply");
-  f.id = 0x06E;
-  check(hcan_classify(&f, &num) == HCAN_K_ENC && num == 0x0E, "3: 0x06E lies in the encoder range (power board 0x0E)");
-  f.id = 0x17F;
-  check(hcan_classify(&f, &num) == HCAN_K_STATUS && num == 0x2F, "3: 0x17F is board 0x2F's status");
-  f.id = 0x1C0;
-  check(hcan_classify(&f, &num) == HCAN_K_CURRENT && num == 0, "3: 0x1C0 is board 0's current");
-  f.id = 0x7FF;
-  check(hcan_classify(&f, &num) == HCAN_K_NONE, "an unused identifier is none of them");
-  f.id = HCAN_EFF | 0x063;
-  check(hcan_classify(&f, &num) == HCAN_K_NONE, "an extended identifier is none of them");
-  f.id = HCAN_ERR | 0x004;
-  check(hcan_classify(&f, &num) == HCAN_K_ERROR, "an error frame is classified as one");
+  for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+    int num;
+    f.id = cases[i].id;
+    check(hcan_classify(&f, &num) == cases[i].kind && (cases[i].num < 0 || num == cases[i].num), cases[i].name);
+  }
 }
 
 static void units(void) {

@@ -36,6 +36,24 @@ void set3(double *a, int j, double x, double y, double z) {
   a[3 * j + 2] = z;
 }
 
+// Points the description at the geometry's own arrays (needed after every copy).
+const kin_desc *bind(Geometry &g) {
+  g.d.parent = g.parent;
+  g.d.axis = g.axis;
+  g.d.anchor = g.anchor;
+  g.d.mass = g.mass;
+  g.d.com = g.com;
+  g.d.qmin = g.qmin;
+  g.d.qmax = g.qmax;
+  for (int s = 0; s < 2; s++) {
+    g.chains[s].joints = g.leg[s];
+    g.chains[2 + s].joints = g.arm[s];
+  }
+  g.chains[4].joints = g.head;
+  g.d.chains = g.chains;
+  return &g.d;
+}
+
 // A leg-and-arm robot. thigh/tibia lengths, hip yaw axis offset (dx, dy) from the hip centre,
 // knee x offset, sole offset (sx, sy) from the ankle, foot height fh, and axis sign flips.
 Geometry make_geometry(double thigh, double tibia, double yaw_dx, double yaw_dy, double knee_x, double sole_x,
@@ -98,13 +116,7 @@ Geometry make_geometry(double thigh, double tibia, double yaw_dx, double yaw_dy,
     g.qmax[j] = limits ? 2.5 : INFINITY;
   }
   g.d.njoint = 20;
-  g.d.parent = g.parent;
-  g.d.axis = g.axis;
-  g.d.anchor = g.anchor;
-  g.d.mass = g.mass;
-  g.d.com = g.com;
-  g.d.qmin = g.qmin;
-  g.d.qmax = g.qmax;
+  bind(g);
   g.d.torso_mass = 1.0;
   set3(g.d.torso_com, 0, -0.01, 0.0, hip_z + 0.08);
   set3(g.d.origin, 0, 0.0, 0.0, hip_z);
@@ -118,24 +130,6 @@ Geometry make_geometry(double thigh, double tibia, double yaw_dx, double yaw_dy,
   identity(H.tip_rot);
   g.d.nchain = 5;
   return g;
-}
-
-// Points the description at the geometry's own arrays (needed after every copy).
-const kin_desc *bind(Geometry &g) {
-  g.d.parent = g.parent;
-  g.d.axis = g.axis;
-  g.d.anchor = g.anchor;
-  g.d.mass = g.mass;
-  g.d.com = g.com;
-  g.d.qmin = g.qmin;
-  g.d.qmax = g.qmax;
-  for (int s = 0; s < 2; s++) {
-    g.chains[s].joints = g.leg[s];
-    g.chains[2 + s].joints = g.arm[s];
-  }
-  g.chains[4].joints = g.head;
-  g.d.chains = g.chains;
-  return &g.d;
 }
 
 double rot_angle_between(const double *R1, const double *R2) {

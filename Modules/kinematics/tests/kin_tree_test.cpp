@@ -2,6 +2,7 @@
 // order, a waist carrying the arms and the head, arms of 4 joints, a leg hanging from a moving
 // link, a camera pitched down at the zero pose, and descriptions the model must refuse.
 #include "kinematics/kinematics.h"
+#include "kinematics/kin_arrays.hpp"
 #include "tap.h"
 
 #include <Eigen/Dense>
@@ -22,9 +23,7 @@ void ok(bool cond, const std::string &name, const std::string &detail = "") {
 }
 
 // A description built joint by joint (std::vector storage; desc() points a kin_desc into it).
-struct Body {
-  std::vector<int> parent;
-  std::vector<double> axis, anchor, mass, com, qmin, qmax;
+struct Body : KinArrays {
   std::vector<std::vector<int>> chain_joints;
   std::vector<kin_chain> chains;
   kin_desc d{};
@@ -54,14 +53,7 @@ struct Body {
     chains.push_back(c);
   }
   const kin_desc *desc() {
-    d.njoint = (int)parent.size();
-    d.parent = parent.data();
-    d.axis = axis.data();
-    d.anchor = anchor.data();
-    d.mass = mass.data();
-    d.com = com.data();
-    d.qmin = qmin.data();
-    d.qmax = qmax.data();
+    describe(d);
     d.torso_mass = 1.2;
     d.torso_com[0] = -0.01;
     d.torso_com[2] = 0.05;

@@ -53,6 +53,14 @@ static void test_schema_errors(void) {
   check(rc < 0 && strstr(err, "/nonexistent/x.schema"), "missing schema file is named");
 }
 
+/* Loads SCHEMA_A into *s and creates block t.a afresh (one left by an earlier run is unlinked first).
+ * Returns shm_block_open's code. */
+static int create_a(shm_schema **s, shm_block **b, char *err, size_t errlen) {
+  shm_schema_load(write_file("a.schema", SCHEMA_A), s, err, errlen);
+  shm_block_unlink("t.a", robot);
+  return shm_block_open(*s, "t.a", robot, SHM_OPEN_CREATE, b, err, errlen);
+}
+
 static void test_create_attach(void) {
   char err[512];
   shm_schema *s = NULL;
@@ -107,10 +115,8 @@ static void test_create_attach(void) {
 static void test_replaced(void) {
   char err[512];
   shm_schema *s = NULL;
-  shm_schema_load(write_file("a.schema", SCHEMA_A), &s, err, sizeof err);
-  shm_block_unlink("t.a", robot);
   shm_block *w = NULL, *r = NULL, *again = NULL;
-  int rc = shm_block_open(s, "t.a", robot, SHM_OPEN_CREATE, &w, err, sizeof err);
+  int rc = create_a(&s, &w, err, sizeof err);
   rc |= shm_block_open(s, "t.a", robot, 0, &r, err, sizeof err);
   check(rc == 0 && shm_block_replaced(w) == 0 && shm_block_replaced(r) == 0,
         "creator and attacher: the name leads to their segment");
@@ -177,10 +183,8 @@ static void test_layout_mismatch(void) {
 static void test_seqlock_consistency(void) {
   char err[512];
   shm_schema *s = NULL;
-  shm_schema_load(write_file("a.schema", SCHEMA_A), &s, err, sizeof err);
-  shm_block_unlink("t.a", robot);
   shm_block *b = NULL;
-  shm_block_open(s, "t.a", robot, SHM_OPEN_CREATE, &b, err, sizeof err);
+  create_a(&s, &b, err, sizeof err);
   volatile double *x = shm_field_ptr(b, "x", NULL, NULL);
   pid_t writers[2];
   for (int wi = 0; wi < 2; wi++) {
@@ -231,10 +235,8 @@ static void test_seqlock_consistency(void) {
 static void test_dead_writer(void) {
   char err[512];
   shm_schema *s = NULL;
-  shm_schema_load(write_file("a.schema", SCHEMA_A), &s, err, sizeof err);
-  shm_block_unlink("t.a", robot);
   shm_block *b = NULL;
-  shm_block_open(s, "t.a", robot, SHM_OPEN_CREATE, &b, err, sizeof err);
+  create_a(&s, &b, err, sizeof err);
   pid_t pid = fork();
   if (pid == 0) {
     shm_block *wb = NULL;

@@ -6,23 +6,10 @@
 
 int emu_sim_open(emu_sim *s, int sim_id, char *err, size_t errlen) {
   memset(s, 0, sizeof *s);
-  int r = shm_schema_load(NULL, &s->schema, err, errlen);
-  if (r < 0) return r;
-  if ((r = dcm_blocks_open(s->schema, sim_id, DCM_BLK_dcm_sensor(&s->sensor), err, errlen)) < 0 ||
-      (r = dcm_blocks_open(s->schema, sim_id, DCM_BLK_dcm_actuator(&s->actuator), err, errlen)) < 0) {
-    emu_sim_close(s);
-    return r;
-  }
-  return 0;
+  return dcm_robot_attach(sim_id, &s->schema, &s->sensor, &s->actuator, err, errlen);
 }
 
-void emu_sim_close(emu_sim *s) {
-  if (s->sensor.blk) shm_block_close(s->sensor.blk);
-  if (s->actuator.blk) shm_block_close(s->actuator.blk);
-  if (s->schema) shm_schema_free(s->schema);
-  s->sensor.blk = s->actuator.blk = NULL;
-  s->schema = NULL;
-}
+void emu_sim_close(emu_sim *s) { dcm_robot_detach(&s->schema, &s->sensor, &s->actuator); }
 
 static void command(emu_sim *s, const emu_world *w) {
   shm_write_begin(s->actuator.blk);

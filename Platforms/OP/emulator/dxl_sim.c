@@ -29,12 +29,7 @@ int dxl_sim_open(dxl_sim *s, int sim_id, char *err, size_t errlen) {
     return -1;
   }
   s->bus = &s->body.bus[0];
-  if ((r = shm_schema_load(NULL, &s->schema, err, errlen)) < 0) return r;
-  if ((r = dcm_blocks_open(s->schema, sim_id, DCM_BLK_dcm_sensor(&s->sensor), err, errlen)) < 0 ||
-      (r = dcm_blocks_open(s->schema, sim_id, DCM_BLK_dcm_actuator(&s->actuator), err, errlen)) < 0) {
-    dxl_sim_close(s);
-    return r;
-  }
+  if ((r = dcm_robot_attach(sim_id, &s->schema, &s->sensor, &s->actuator, err, errlen)) < 0) return r;
   /* until the DCM asks for anything, the simulated robot holds where it is */
   for (int i = 0; i < s->bus->nservo; i++) {
     const op_servo *sv = &s->bus->servo[i];
@@ -45,13 +40,7 @@ int dxl_sim_open(dxl_sim *s, int sim_id, char *err, size_t errlen) {
   return 0;
 }
 
-void dxl_sim_close(dxl_sim *s) {
-  if (s->sensor.blk) shm_block_close(s->sensor.blk);
-  if (s->actuator.blk) shm_block_close(s->actuator.blk);
-  if (s->schema) shm_schema_free(s->schema);
-  s->sensor.blk = s->actuator.blk = NULL;
-  s->schema = NULL;
-}
+void dxl_sim_close(dxl_sim *s) { dcm_robot_detach(&s->schema, &s->sensor, &s->actuator); }
 
 void dxl_sim_command(dxl_sim *s, int i, double goal_count, int torque, double hard_reg) {
   const op_servo *sv = &s->bus->servo[i];
