@@ -49,24 +49,62 @@ static int get_count(const op_servo_model *m, const uint8_t *p) {
   return m->pos_len == 2 ? dxl_get16(p) : (int32_t)dxl_get32(p);
 }
 
+/* No servo answered the probe: one line for the likely cause instead of a timeout per servo. The
+ * servos answering a ping in the other protocol means the body (ROBOT) or the servos' protocol
+ * setting is wrong; bytes that parse as neither point at another baud rate (or a noisy bus);
+ * silence at the power, the cable or the port. `garbled` is the first servo whose read brought
+ * bytes back, -1 if none did. */
+static void diagnose(op_bus *b, const dcm *d, int garbled, uint64_t bytes) {
+  const op_busdef *bd = b->def;
+  const int proto = bd->protocol, other = 3 - proto;
+  /* a few pings, each as patient as the probe: the first servos of the table are enough to tell */
+  static dxl_bus ob;
+  dxl_bus_init(&ob, b->port, other);
+  ob.timeout_margin = b->bus.timeout_margin;
+  for (int k = 0; k < bd->nservo && k < 3; k++) {
+    if (dxl_ping(&ob, bd->servo[k].id, NULL, NULL, NULL) == 0) {
+      dcm_log(d, "servo %d answers in another protocol? (got protocol %d.0 bytes, expected %d.0; check ROBOT and the bus)",
+              bd->servo[k].id, other, proto);
+      return;
+    }
+  }
+  if (garbled >= 0) {
+    dcm_log(d, "servo %d answers in another protocol or baud? (got %llu bytes, no protocol %d.0 packet at %d baud; "
+            "check ROBOT, the baud and the bus)", bd->servo[garbled].id, (unsigned long long)bytes, proto,
+            dxl_port_baud(b->port));
+    return;
+  }
+  dcm_log(d, "bus %d: none of its %d servos answers (%s, protocol %d.0, %d baud): check the power, the cable and the port",
+          b->index + 1, bd->nservo, bd->port, proto, dxl_port_baud(b->port));
+}
+
 int op_bus_probe(op_bus *b, const dcm *d, op_state *st) {
-  int found = 0;
+  int found = 0, garbled = -1, result[DCM_NJ_MAX];
   const double margin = b->bus.timeout_margin;
+  const uint64_t rx_bytes0 = b->bus.stats.rx_bytes;
   b->bus.timeout_margin = 0.05;   /* start-up is not real time: be patient once */
   for (int k = 0; k < b->def->nservo; k++) {
     const op_servo *s = &b->def->servo[k];
     uint8_t buf[4], e;
-    int r = dxl_read(&b->bus, s->id, s->model->pos_addr, s->model->pos_len, buf, &e);
-    if (r == 0) {
+    const uint64_t rx0 = b->bus.stats.rx_bytes;
+    result[k] = dxl_read(&b->bus, s->id, s->model->pos_addr, s->model->pos_len, buf, &e);
+    if (result[k] == 0) {
       st->pos[s->joint] = op_count_to_rad(s, get_count(s->model, buf));
       st->have_pos[s->joint] = 1;
       found++;
     } else {
       st->dead[s->joint] = 1;
       b->retry_at[k] = 0;
-      dcm_log(d, "servo %d (%s) does not answer: %s", s->id, b->body->joint[s->joint], dxl_result_str(r));
+      if (garbled < 0 && b->bus.stats.rx_bytes > rx0) garbled = k;
     }
   }
+  if (found == 0 && b->def->nservo > 0 && b->port && dxl_port_is_open(b->port))
+    diagnose(b, d, garbled, b->bus.stats.rx_bytes - rx_bytes0);
+  else
+    for (int k = 0; k < b->def->nservo; k++) {
+      const op_servo *s = &b->def->servo[k];
+      if (result[k]) dcm_log(d, "servo %d (%s) does not answer: %s", s->id, b->body->joint[s->joint], dxl_result_str(result[k]));
+    }
   b->bus.timeout_margin = margin;
   return found;
 }

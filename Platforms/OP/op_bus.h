@@ -45,7 +45,9 @@ typedef struct op_bus {
 void op_bus_init(op_bus *b, const op_body *body, int index, op_bus_settings set);
 /* Opens the port (or reopens a lost one); -EAGAIN while it cannot be opened. */
 int op_bus_open(op_bus *b, const dcm *d, char *err, size_t errlen);
-/* Reads every servo once (start-up): the missing ones are marked dead. Returns how many answer. */
+/* Reads every servo once (start-up): the missing ones are marked dead, each with a line; when none
+ * answers, one line instead says what the bus gave back (another protocol, bytes of no packet, or
+ * silence). Returns how many answer. */
 int op_bus_probe(op_bus *b, const dcm *d, op_state *st);
 /* A cycle's commands out (reopens a lost port every 0.5 s); then the state in, one dead servo retried. */
 void op_bus_write(op_bus *b, const dcm *d, const dcm_command *c, double now);

@@ -1,12 +1,16 @@
 /* dxl_emulator: a virtual Dynamixel bus on a pseudo-terminal, for tests and bring-up without
  * hardware.
  *
- *   dxl_emulator [--link PATH] [--protocol 1|2] [--ids A-B] [--baud N] [--timing]
+ *   dxl_emulator [--link PATH] [--robot NAME | --protocol 1|2 [--ids A-B]] [--baud N] [--timing]
  *                [--drop P] [--corrupt P] [--delay S] [--dead ID]... [--tau S] [--seed N]
  *                [--stdin] [--realtime] [--quiet] [--sim-id N] [--trace FILE]
  *
- * --protocol 1 (default): a DARwIn-OP chain: MX-28 servos (ids 1-20) and the CM-730 (id 200).
- * --protocol 2: an OP3 chain: XM430-W350 servos (ids 1-20) and the OpenCR (id 200).
+ * The devices are the body's by default: $ROBOT's (--robot NAME: that body's) robot.lua `devices`,
+ * bus 1, read by the OP DCM's own reader (Modules/op_devices): its protocol, ids, models and board,
+ * so `PLATFORM=OP ./run_dcm` finds every servo it expects. Its baud rate is the bus's unless --baud.
+ * A generic chain instead, with --protocol or --ids (servos A-B, default 1-20, and the board at 200):
+ * --protocol 1 (default): a DARwIn-OP chain: MX-28 servos and the CM-730.
+ * --protocol 2: an OP3 chain: XM430-W350 servos and the OpenCR.
  * Servos move first-order towards the goal (time constant --tau, capped at the servo's no-load
  * speed). --timing adds the wire time of every packet at --baud (10 bits a byte) and each
  * device's return delay time. Faults: --drop P (no answer), --corrupt P (one byte of an answer
@@ -14,20 +18,22 @@
  * --realtime asks for SCHED_FIFO so answers leave on time on a loaded machine.
  * --stdin reads commands, one per line:  button MASK | gyro X Y Z (rad/s) | accel X Y Z (m/s^2)
  *   | dead ID | alive ID | stats | quit.
- * --sim-id N: hardware in the loop. The devices are the body's ($ROBOT's robot.lua `devices`, bus 1)
- *   and the physics world moves them: goals, torque enables and hardness registers go to the sim
- *   DCM's robot N (dcm.actuator), present positions, speeds, loads, IMU and buttons come from its
- *   dcm.sensor (dxl_sim.h); --protocol, --ids, --tau and the stdin IMU commands do not apply.
+ * --sim-id N: hardware in the loop. The devices are the body's and the physics world moves them:
+ *   goals, torque enables and hardness registers go to the sim DCM's robot N (dcm.actuator), present
+ *   positions, speeds, loads, IMU and buttons come from its dcm.sensor (dxl_sim.h); --tau and the
+ *   stdin IMU commands do not apply, --protocol and --ids are refused.
  * --trace FILE: what the servos receive, one line per change, wall-clock (CLOCK_REALTIME) seconds
  *   first: "T ID torque V" and "T ID hardness V" (MX torque limit, XM position P gain), and "T goals N"
  *   for a packet that changed the goals of N servos (Tests/fault/dxl_faults_test.sh times the
  *   DCM's safe state and the commands' return with it).
  * Prints "dxl_emulator: ready <pty>" on stderr when the port can be opened.
  */
+#include "dcm/args.h"
 #include "dynamixel/dynamixel.h"
 #include "dxl_sim.h"
 
 #include <errno.h>
+#include <limits.h>
 #include <fcntl.h>
 #include <math.h>
 #include <poll.h>
@@ -58,7 +64,7 @@ typedef struct device {
 
 static device dev[MAXDEV];
 static int ndev;
-static int protocol = 1;
+static int protocol;        /* 0 until --protocol or the body sets it */
 static int baud = 1000000;
 static int timing;
 static double p_drop, p_corrupt, extra_delay, tau = 0.03;
@@ -443,67 +449,115 @@ static void command(char *line) {
 
 static void on_signal(int s) { (void)s; stop = 1; }
 
-static void usage(void) {
-  fprintf(stderr, "usage: dxl_emulator [--link PATH] [--protocol 1|2] [--ids A-B] [--baud N] [--timing]\n"
-                  "       [--drop P] [--corrupt P] [--delay S] [--dead ID]... [--tau S] [--seed N] [--stdin] [--realtime] [--quiet]\n"
-                  "       [--sim-id N]  (the sim DCM's robot N behind the body's devices: $ROBOT) [--trace FILE]\n");
+/* --ids A-B: both ends strict, inside the unicast ids */
+typedef struct { long lo, hi; int given; } id_range;
+static int parse_ids(const char *v, void *out, char *err, size_t errlen) {
+  id_range *r = out;
+  char lo[16], hi[16];
+  const char *dash = strchr(v, '-');
+  if (!dash || dash == v || (size_t)(dash - v) >= sizeof lo || strlen(dash + 1) >= sizeof hi) {
+    snprintf(err, errlen, "'%s' is not A-B", v);
+    return -EINVAL;
+  }
+  snprintf(lo, sizeof lo, "%.*s", (int)(dash - v), v);
+  snprintf(hi, sizeof hi, "%s", dash + 1);
+  if (dcm_args_long(lo, 0, DXL_MAX_ID, &r->lo, err, errlen) < 0 || dcm_args_long(hi, r->lo, DXL_MAX_ID, &r->hi, err, errlen) < 0)
+    return -EINVAL;
+  r->given = 1;
+  return 0;
+}
+
+/* --dead ID, once per servo */
+#define MAXDEAD 64
+typedef struct { long id[MAXDEAD]; int n; } id_list;
+static int parse_dead(const char *v, void *out, char *err, size_t errlen) {
+  id_list *l = out;
+  long id;
+  if (dcm_args_long(v, 0, DXL_MAX_ID, &id, err, errlen) < 0) return -EINVAL;
+  if (l->n < MAXDEAD) l->id[l->n++] = id;
+  return 0;
 }
 
 int main(int argc, char **argv) {
-  const char *link_path = NULL;
-  int id_lo = 1, id_hi = 20, use_stdin = 0;
-  int dead[64], ndead = 0, realtime = 0, sim_id = 0;
-  unsigned seed = 1;
-  for (int i = 1; i < argc; i++) {
-    const char *o = argv[i];
-    const char *v = i + 1 < argc ? argv[i + 1] : NULL;
-    if (!strcmp(o, "--link") && v) { link_path = v; i++; }
-    else if (!strcmp(o, "--protocol") && v) { protocol = atoi(v); i++; }
-    else if (!strcmp(o, "--ids") && v) { if (sscanf(v, "%d-%d", &id_lo, &id_hi) != 2) { usage(); return 2; } i++; }
-    else if (!strcmp(o, "--baud") && v) { baud = atoi(v); i++; }
-    else if (!strcmp(o, "--timing")) timing = 1;
-    else if (!strcmp(o, "--drop") && v) { p_drop = atof(v); i++; }
-    else if (!strcmp(o, "--corrupt") && v) { p_corrupt = atof(v); i++; }
-    else if (!strcmp(o, "--delay") && v) { extra_delay = atof(v); i++; }
-    else if (!strcmp(o, "--dead") && v) { if (ndead < 64) dead[ndead++] = atoi(v); i++; }
-    else if (!strcmp(o, "--tau") && v) { tau = atof(v); i++; }
-    else if (!strcmp(o, "--seed") && v) { seed = (unsigned)atoi(v); i++; }
-    else if (!strcmp(o, "--stdin")) use_stdin = 1;
-    else if (!strcmp(o, "--quiet")) quiet = 1;
-    else if (!strcmp(o, "--realtime")) realtime = 1;
-    else if (!strcmp(o, "--sim-id") && v) { sim_id = atoi(v); sim_mode = 1; i++; }
-    else if (!strcmp(o, "--trace") && v) {
-      if (!(trace = fopen(v, "w"))) { fprintf(stderr, "dxl_emulator: --trace %s: %s\n", v, strerror(errno)); return 2; }
-      setvbuf(trace, NULL, _IOLBF, 0);   /* a line each: readable while the emulator runs */
-      i++;
-    }
-    else { usage(); return 2; }
+  const char *link_path = NULL, *robot = NULL, *trace_path = NULL;
+  id_range ids = { 1, 20, 0 };
+  id_list dead = { { 0 }, 0 };
+  int use_stdin = 0, realtime = 0, sim_id = 0, baud_opt = 0;
+  long seed = 1;
+  const dcm_opt opts[] = {
+    { "--link", DCM_OPT_STRING, &link_path, 0, 0, "PATH", "a symlink to the pseudo-terminal", NULL, 0 },
+    { "--robot", DCM_OPT_STRING, &robot, 0, 0, "NAME", "serve that body's bus 1 (default: $ROBOT's; sets ROBOT)", NULL, 0 },
+    { "--protocol", DCM_OPT_INT, &protocol, 1, 2, "1|2", "a generic chain instead of the body: 1 DARwIn-OP, 2 OP3", NULL, 0 },
+    { "--ids", DCM_OPT_FUNC, &ids, 0, 0, "A-B", "the generic chain's servo ids (default 1-20; protocol 1 unless --protocol)",
+      parse_ids, 0 },
+    { "--baud", DCM_OPT_INT, &baud_opt, 9600, 4500000, "N", "bits/s of the timing model (default: the bus's, or 1000000)",
+      NULL, 0 },
+    { "--timing", DCM_OPT_FLAG, &timing, 0, 0, NULL, "answers take their wire time and return delay", NULL, 0 },
+    { "--drop", DCM_OPT_DOUBLE, &p_drop, 0, 1, "P", "probability of no answer", NULL, 0 },
+    { "--corrupt", DCM_OPT_DOUBLE, &p_corrupt, 0, 1, "P", "probability of one flipped byte in an answer", NULL, 0 },
+    { "--delay", DCM_OPT_DOUBLE, &extra_delay, 0, 10, "S", "extra latency before every answer", NULL, 0 },
+    { "--dead", DCM_OPT_FUNC, &dead, 0, 0, "ID", "a servo that never answers; repeatable", parse_dead, 0 },
+    { "--tau", DCM_OPT_DOUBLE, &tau, 1e-6, 100, "S", "the servos' time constant (default 0.03)", NULL, 0 },
+    { "--seed", DCM_OPT_LONG, &seed, 0, 4294967295.0, "N", "seed of the faults' random numbers", NULL, 0 },
+    { "--stdin", DCM_OPT_FLAG, &use_stdin, 0, 0, NULL, "read commands from stdin (see dxl_emulator.c)", NULL, 0 },
+    { "--realtime", DCM_OPT_FLAG, &realtime, 0, 0, NULL, "SCHED_FIFO, to answer on time on a loaded machine", NULL, 0 },
+    { "--quiet", DCM_OPT_FLAG, &quiet, 0, 0, NULL, "no warnings and no closing stats", NULL, 0 },
+    { "--sim-id", DCM_OPT_INT, &sim_id, 1, INT_MAX, "N", "the sim DCM's robot N behind the body's devices", NULL, 0 },
+    { "--trace", DCM_OPT_STRING, &trace_path, 0, 0, "FILE", "what the servos receive, a line per change", NULL, 0 },
+    DCM_OPT_END,
+  };
+  dcm_args("dxl_emulator", "Platforms/OP/emulator/dxl_emulator", opts, argc, argv);
+  if (robot) setenv("ROBOT", robot, 1);
+  sim_mode = sim_id > 0;
+  const int generic = !sim_mode && (protocol || ids.given);
+  if (sim_mode && (protocol || ids.given)) {
+    fprintf(stderr, "dxl_emulator: --sim-id serves the body's devices: --protocol and --ids do not apply\n");
+    return 2;
   }
-  if ((protocol != 1 && protocol != 2) || baud <= 0 || id_lo < 0 || id_hi > 252 || id_lo > id_hi ||
-      tau <= 0) { usage(); return 2; }
-  srand(seed);
+  if (trace_path) {
+    if (!(trace = fopen(trace_path, "w"))) {
+      fprintf(stderr, "dxl_emulator: --trace %s: %s\n", trace_path, strerror(errno));
+      return 2;
+    }
+    setvbuf(trace, NULL, _IOLBF, 0);   /* a line each: readable while the emulator runs */
+  }
+  srand((unsigned)seed);
   if (realtime) {   /* behave like hardware: answer on time even on a loaded machine */
     struct sched_param sp = { .sched_priority = 30 };
     if (sched_setscheduler(0, SCHED_FIFO, &sp) != 0 && !quiet)
       fprintf(stderr, "dxl_emulator: no real-time priority (%s): timing may slip\n", strerror(errno));
   }
+  static op_body body;
+  const op_busdef *bus = NULL;
+  char err[512];
   if (sim_mode) {
-    char err[512];
-    if (sim_id <= 0 || dxl_sim_open(&sim, sim_id, err, sizeof err) < 0) {
-      fprintf(stderr, "dxl_emulator: --sim-id %d: %s\n", sim_id, sim_id <= 0 ? "needs a robot id > 0" : err);
+    if (dxl_sim_open(&sim, sim_id, err, sizeof err) < 0) {
+      fprintf(stderr, "dxl_emulator: --sim-id %d: %s\n", sim_id, err);
       return 1;
     }
-    protocol = sim.bus->protocol;
-    for (int i = 0; i < sim.bus->nservo && ndev < MAXDEV - 1; i++) {
-      add_device(sim.bus->servo[i].model->family == OP_MX ? MX28 : XM430, sim.bus->servo[i].id);
-      dev[ndev - 1].servo = i;
+    bus = sim.bus;
+  } else if (!generic) {
+    if (dxl_body_load(&body, NULL, err, sizeof err) < 0) {
+      fprintf(stderr, "dxl_emulator: %s (--protocol 1|2: a generic chain instead)\n", err);
+      return 1;
     }
-    if (sim.bus->has_board) add_device(sim.bus->board.model->kind == OP_CM730 ? CM730 : OPENCR, sim.bus->board.id);
+    bus = &body.bus[0];
+  }
+  if (bus) {
+    protocol = bus->protocol;
+    if (!baud_opt) baud_opt = bus->baud;
+    for (int i = 0; i < bus->nservo && ndev < MAXDEV - 1; i++) {
+      add_device(bus->servo[i].model->family == OP_MX ? MX28 : XM430, bus->servo[i].id);
+      if (sim_mode) dev[ndev - 1].servo = i;
+    }
+    if (bus->has_board) add_device(bus->board.model->kind == OP_CM730 ? CM730 : OPENCR, bus->board.id);
   } else {
-    for (int id = id_lo; id <= id_hi && ndev < MAXDEV - 1; id++) add_device(protocol == 1 ? MX28 : XM430, (uint8_t)id);
+    if (!protocol) protocol = 1;
+    for (long id = ids.lo; id <= ids.hi && ndev < MAXDEV - 1; id++) add_device(protocol == 1 ? MX28 : XM430, (uint8_t)id);
     add_device(protocol == 1 ? CM730 : OPENCR, 200);
   }
-  for (int k = 0; k < ndead; k++) { device *d = find((uint8_t)dead[k]); if (d) d->dead = 1; }
+  if (baud_opt) baud = baud_opt;
+  for (int k = 0; k < dead.n; k++) { device *d = find((uint8_t)dead.id[k]); if (d) d->dead = 1; }
 
   int m = posix_openpt(O_RDWR | O_NOCTTY);
   if (m < 0 || grantpt(m) != 0 || unlockpt(m) != 0) { perror("dxl_emulator: posix_openpt"); return 1; }
@@ -526,9 +580,9 @@ int main(int argc, char **argv) {
   signal(SIGTERM, on_signal);
   signal(SIGPIPE, SIG_IGN);
   fcntl(m, F_SETFL, fcntl(m, F_GETFL) | O_NONBLOCK);
-  fprintf(stderr, "dxl_emulator: ready %s%s%s (protocol %d, %d devices, %s)\n", slave_name,
-          link_path ? " -> " : "", link_path ? link_path : "", protocol, ndev,
-          timing ? "timing model on" : "no timing model");
+  fprintf(stderr, "dxl_emulator: ready %s%s%s (%s%s, protocol %d, %d devices, %s)\n", slave_name,
+          link_path ? " -> " : "", link_path ? link_path : "", bus ? (sim_mode ? sim.body.name : body.name) : "generic chain",
+          bus ? " bus 1" : "", protocol, ndev, timing ? "timing model on" : "no timing model");
   last_update = now_s();
   if (sim_mode) update_sim(0);
   else update_motion(last_update);

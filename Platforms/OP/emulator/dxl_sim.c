@@ -8,26 +8,30 @@
 
 #define COUNTS_PER_RAD (4096.0 / (2.0 * OP_PI))
 
-int dxl_sim_open(dxl_sim *s, int sim_id, char *err, size_t errlen) {
-  memset(s, 0, sizeof *s);
+int dxl_body_load(op_body *b, double *stall, char *err, size_t errlen) {
   dcm_config *rc = NULL;
   int r = dcm_config_load("robot", NULL, "OP", &rc, err, errlen);
-  if (r == 0) r = op_body_load(rc, &s->body, err, errlen);
+  if (r == 0) r = op_body_load(rc, b, err, errlen);
+  if (r == 0 && b->nbus != 1) {
+    snprintf(err, errlen, "robot '%s' has %d buses; the emulator serves one", b->name, b->nbus);
+    r = -1;
+  }
   dcm_config *ac = NULL;
-  if (r == 0) r = dcm_config_load("actuators", dcm_config_robot(rc), "OP", &ac, err, errlen);
-  for (int i = 0; r == 0 && i < s->body.bus[0].nservo; i++) {
+  if (r == 0 && stall) r = dcm_config_load("actuators", dcm_config_robot(rc), "OP", &ac, err, errlen);
+  for (int i = 0; r == 0 && stall && i < b->bus[0].nservo; i++) {
     char key[DCM_NAME_MAX + 16];
-    snprintf(key, sizeof key, "%s.torque", s->body.bus[0].servo[i].model->name);
-    r = dcm_config_num(ac, key, &s->stall[i], err, errlen);
+    snprintf(key, sizeof key, "%s.torque", b->bus[0].servo[i].model->name);
+    r = dcm_config_num(ac, key, &stall[i], err, errlen);
   }
   if (ac) dcm_config_free(ac);
   if (rc) dcm_config_free(rc);
+  return r;
+}
+
+int dxl_sim_open(dxl_sim *s, int sim_id, char *err, size_t errlen) {
+  memset(s, 0, sizeof *s);
+  int r = dxl_body_load(&s->body, s->stall, err, errlen);
   if (r < 0) return r;
-  if (s->body.nbus != 1) {
-    snprintf(err, errlen, "dxl_emulator --sim: robot '%s' has %d buses; the emulator serves one", s->body.name,
-             s->body.nbus);
-    return -1;
-  }
   s->bus = &s->body.bus[0];
   if ((r = dcm_robot_attach(sim_id, &s->schema, &s->sensor, &s->actuator, err, errlen)) < 0) return r;
   /* until the DCM asks for anything, the simulated robot holds where it is */

@@ -35,7 +35,11 @@ typedef struct dxl_sim_state {
   int buttons;                    /* bit mask */
 } dxl_sim_state;
 
-/* Reads the body ($ROBOT) and attaches to robot sim_id's blocks (those of its sim DCM). */
+/* Reads the body ($ROBOT's robot.lua through op_devices) and checks that it has one bus, the one an
+ * emulator serves; with stall non-NULL also each servo's stall torque (actuators.lua), per servo of
+ * the bus. The emulator's default devices and --sim-id both come from here. */
+int dxl_body_load(op_body *b, double *stall, char *err, size_t errlen);
+/* Reads the body (dxl_body_load) and attaches to robot sim_id's blocks (those of its sim DCM). */
 int dxl_sim_open(dxl_sim *s, int sim_id, char *err, size_t errlen);
 void dxl_sim_close(dxl_sim *s);
 /* Stages servo i's (bus order) goal (counts), torque enable and hardness register value. */
