@@ -23,8 +23,6 @@ endif
 CC       := gcc $(SAN_FLAGS)
 CXX      := g++ $(SAN_FLAGS)
 endif
-# never instrumented: a library preloaded before a sanitizer's runtime (the fake camera's shim)
-CC_PLAIN := gcc
 WARN     := -Wall -Wextra -Werror -Wshadow -Wno-unused-parameter
 CFLAGS   += -std=c11 -O2 -g -fPIC $(WARN) -D_GNU_SOURCE -I$(TOP)/Modules -I$(GENDIR) -DHRP_ROOT_DEFAULT='"$(TOP)"'
 CXXFLAGS += -std=c++17 -O2 -g -fPIC $(WARN) -D_GNU_SOURCE -I$(TOP)/Modules -I$(GENDIR) -DHRP_ROOT_DEFAULT='"$(TOP)"'

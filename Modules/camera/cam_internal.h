@@ -2,7 +2,9 @@
 #ifndef HRP_CAM_INTERNAL_H
 #define HRP_CAM_INTERNAL_H
 
+#include <poll.h>
 #include <pthread.h>
+#include <sys/types.h>
 
 #include "camera/camera.h"
 #include "shm/shm.h"
@@ -41,6 +43,21 @@ struct cam_camera {
 };
 
 extern const cam_driver cam_driver_v4l2, cam_driver_dummy, cam_driver_sim;
+
+/* The system calls the v4l2 driver makes on its device, through this table so a test can put a
+ * fake device in their place in its own process (Modules/camera/tests/fake_uvc.c), where a
+ * sanitizer sees both. By default the libc functions themselves: the driver's call costs one
+ * indirect jump on top of the system call. A test replaces it before cam_open and restores it after
+ * cam_close (the capture thread reads it). */
+typedef struct cam_sys {
+  int (*open)(const char *path, int flags, ...);
+  int (*close)(int fd);
+  int (*ioctl)(int fd, unsigned long req, ...);
+  void *(*mmap)(void *addr, size_t len, int prot, int flags, int fd, off_t off);
+  int (*munmap)(void *addr, size_t len);
+  int (*poll)(struct pollfd *fds, nfds_t n, int timeout_ms);
+} cam_sys;
+extern cam_sys cam_v4l2_sys;
 
 /* Records a problem in stats.last_error (thread-safe). */
 void cam_note(cam_camera *cam, const char *fmt, ...) __attribute__((format(printf, 2, 3)));

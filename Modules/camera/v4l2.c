@@ -23,6 +23,8 @@
 
 #define MAX_BUFFERS 16
 
+cam_sys cam_v4l2_sys = { open, close, ioctl, mmap, munmap, poll };
+
 typedef struct v4l2cam {
   cam_camera *cam;
   pthread_t thread;
@@ -53,7 +55,7 @@ typedef struct v4l2cam {
 
 static int xioctl(int fd, unsigned long req, void *arg) {
   int r;
-  do { r = ioctl(fd, req, arg); } while (r < 0 && errno == EINTR);
+  do { r = cam_v4l2_sys.ioctl(fd, req, arg); } while (r < 0 && errno == EINTR);
   return r;
 }
 
@@ -105,12 +107,13 @@ static void dev_close(v4l2cam *v) {
   enum v4l2_buf_type type = V4L2_BUF_TYPE_VIDEO_CAPTURE;
   xioctl(v->fd, VIDIOC_STREAMOFF, &type);   /* fails harmlessly on a vanished device */
   for (int i = 0; i < v->nbufs; i++)
-    if (v->bufs[i].start && v->bufs[i].start != MAP_FAILED) munmap(v->bufs[i].start, v->bufs[i].length);
+    if (v->bufs[i].start && v->bufs[i].start != MAP_FAILED)
+      cam_v4l2_sys.munmap(v->bufs[i].start, v->bufs[i].length);
   v->nbufs = 0;
   struct v4l2_requestbuffers req = { .count = 0, .type = V4L2_BUF_TYPE_VIDEO_CAPTURE,
                                      .memory = V4L2_MEMORY_MMAP };
   xioctl(v->fd, VIDIOC_REQBUFS, &req);
-  close(v->fd);
+  cam_v4l2_sys.close(v->fd);
   v->fd = -1;
 }
 
@@ -121,7 +124,7 @@ static int dev_open(v4l2cam *v, char *msg, size_t len) {
   cam_camera *cam = v->cam;
   const cam_config *c = &cam->cfg;
   const char *dev = cam->device;
-  v->fd = open(dev, O_RDWR | O_NONBLOCK);
+  v->fd = cam_v4l2_sys.open(dev, O_RDWR | O_NONBLOCK);
   if (v->fd < 0) {
     int e = errno;
     hrp_err(msg, len, "camera %s: cannot open: %s", dev, strerror(e));
@@ -202,7 +205,7 @@ static int dev_open(v4l2cam *v, char *msg, size_t len) {
       hrp_err(msg, len, "camera %s: VIDIOC_QUERYBUF %u: %s", dev, i, strerror(e));
       goto fail;
     }
-    void *p = mmap(NULL, buf.length, PROT_READ | PROT_WRITE, MAP_SHARED, v->fd, buf.m.offset);
+    void *p = cam_v4l2_sys.mmap(NULL, buf.length, PROT_READ | PROT_WRITE, MAP_SHARED, v->fd, buf.m.offset);
     if (p == MAP_FAILED) {
       e = errno;
       hrp_err(msg, len, "camera %s: mmap of buffer %u: %s", dev, i, strerror(e));
@@ -320,7 +323,7 @@ static void *capture_thread(void *arg) {
       set_state(v, 1, 0, "");
     }
     struct pollfd pfd = { .fd = v->fd, .events = POLLIN };
-    int r = poll(&pfd, 1, 100);
+    int r = cam_v4l2_sys.poll(&pfd, 1, 100);
     if (r < 0) {
       if (errno == EINTR) continue;
       lost(v, "poll", errno);

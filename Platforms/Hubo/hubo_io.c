@@ -14,6 +14,8 @@
 #include <time.h>
 #include <unistd.h>
 
+hio_sys hio_sys_calls = HIO_SYS_LIBC;
+
 double hio_now(void) {
   struct timespec ts;
   clock_gettime(CLOCK_MONOTONIC, &ts);
@@ -32,7 +34,7 @@ int hio_open(hio_bus *b, char *err, size_t n) {
     snprintf(err, n, "%s: an interface name has at most %d characters", b->iface, IFNAMSIZ - 1);
     return -EINVAL;
   }
-  const int s = socket(PF_CAN, SOCK_RAW | SOCK_NONBLOCK | SOCK_CLOEXEC, CAN_RAW);
+  const int s = hio_sys_calls.socket(PF_CAN, SOCK_RAW | SOCK_NONBLOCK | SOCK_CLOEXEC, CAN_RAW);
   if (s < 0) {
     const int e = errno;
     snprintf(err, n, "%s: socket(PF_CAN, SOCK_RAW, CAN_RAW): %s", b->iface, strerror(e));
@@ -43,10 +45,10 @@ int hio_open(hio_bus *b, char *err, size_t n) {
   memcpy(ifr.ifr_name, b->iface, strlen(b->iface) + 1);
   struct sockaddr_can a = { .can_family = AF_CAN };
   int e = 0;
-  if (ioctl(s, SIOCGIFINDEX, &ifr) < 0) e = errno;
+  if (hio_sys_calls.ioctl(s, SIOCGIFINDEX, &ifr) < 0) e = errno;
   if (!e) {
     a.can_ifindex = ifr.ifr_ifindex;
-    if (bind(s, (struct sockaddr *)&a, sizeof a) < 0) e = errno;
+    if (hio_sys_calls.bind(s, (struct sockaddr *)&a, sizeof a) < 0) e = errno;
   }
   /* only the boards' replies: sensor replies 0x040..0x05F, encoders 0x060..0x08F (power 0x06E),
    * status 0x150..0x17F, current 0x1C0..0x1EF; standard frames only */
@@ -55,14 +57,14 @@ int hio_open(hio_bus *b, char *err, size_t n) {
     { 0x040, 0x7E0 | x }, { 0x060, 0x7E0 | x }, { 0x080, 0x7F0 | x },
     { 0x150, 0x7F0 | x }, { 0x160, 0x7E0 | x }, { 0x1C0, 0x7E0 | x }, { 0x1E0, 0x7F0 | x },
   };
-  if (!e && setsockopt(s, SOL_CAN_RAW, CAN_RAW_FILTER, flt, sizeof flt) < 0) e = errno;
+  if (!e && hio_sys_calls.setsockopt(s, SOL_CAN_RAW, CAN_RAW_FILTER, flt, sizeof flt) < 0) e = errno;
   /* the controller's error frames: bus errors are counted, bus-off / restarts noticed */
   const can_err_mask_t em = CAN_ERR_TX_TIMEOUT | CAN_ERR_CRTL | CAN_ERR_PROT | CAN_ERR_BUSOFF | CAN_ERR_BUSERROR |
                             CAN_ERR_RESTARTED;
-  if (!e && setsockopt(s, SOL_CAN_RAW, CAN_RAW_ERR_FILTER, &em, sizeof em) < 0) e = errno;
+  if (!e && hio_sys_calls.setsockopt(s, SOL_CAN_RAW, CAN_RAW_ERR_FILTER, &em, sizeof em) < 0) e = errno;
   if (e) {
     snprintf(err, n, "%s: %s", b->iface, strerror(e));
-    close(s);
+    hio_sys_calls.close(s);
     return -e;
   }
   b->fd = s;
@@ -71,7 +73,7 @@ int hio_open(hio_bus *b, char *err, size_t n) {
 }
 
 void hio_close(hio_bus *b) {
-  if (b->fd >= 0) close(b->fd);
+  if (b->fd >= 0) hio_sys_calls.close(b->fd);
   b->fd = -1;
   b->txn = b->txhead = 0;
 }
@@ -96,7 +98,7 @@ int hio_flush(hio_bus *b) {
     c.can_id = f->id;
     c.can_dlc = f->dlc;
     memcpy(c.data, f->data, 8);
-    if (write(b->fd, &c, sizeof c) != (ssize_t)sizeof c) {
+    if (hio_sys_calls.write(b->fd, &c, sizeof c) != (ssize_t)sizeof c) {
       const int e = errno;
       if (e == ENOBUFS || e == EAGAIN || e == EINTR) return 0;   /* the kernel's queue is full: later */
       if (gone(e)) return -e;
@@ -115,7 +117,7 @@ int hio_receive(hio_bus *b) {
   int got = 0;
   struct can_frame c;
   while (b->fd >= 0) {
-    const ssize_t r = read(b->fd, &c, sizeof c);
+    const ssize_t r = hio_sys_calls.read(b->fd, &c, sizeof c);
     if (r < 0) {
       const int e = errno;
       if (e == EAGAIN || e == EINTR) break;
@@ -158,6 +160,6 @@ int hio_settle(hio_bus *buses, int n, double deadline) {
     const double left = deadline - hio_now();
     if (!busy || left <= 0) return failed;
     struct timespec ts = { (time_t)left, (long)((left - (double)(time_t)left) * 1e9) };
-    if (ppoll(pf, (nfds_t)np, &ts, NULL) < 0 && errno != EINTR) return failed;
+    if (hio_sys_calls.ppoll(pf, (nfds_t)np, &ts, NULL) < 0 && errno != EINTR) return failed;
   }
 }

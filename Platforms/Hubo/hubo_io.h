@@ -7,6 +7,7 @@
 
 #include <stdint.h>
 
+#include "hio_sys.h"
 #include "hubo_can/can_proto.h"
 
 #define HIO_TXQ 256
@@ -23,6 +24,10 @@ typedef struct hio_bus {
   uint32_t downs;                /* times the bus went away */
   double reopen_at;              /* s, next attempt while closed */
 } hio_bus;
+
+/* hubo_io's system calls (hio_sys.h): the libc functions; only a test build of the DCM changes
+ * them, before it opens a bus. */
+extern hio_sys hio_sys_calls;
 
 void hio_init(hio_bus *b, const char *iface);
 /* Opens the socket (non-blocking, bound, filtered). 0, or a negative errno with a message. */

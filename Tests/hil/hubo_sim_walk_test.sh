@@ -33,7 +33,7 @@ PIDS+=($!)
 wait_log "$LOGDIR/hubo_emu.log" ready
 ok $? "hubo_emulator --sim-id serves the simulated Hubo2+'s boards"
 Tools/shm/shm --robot "$OP_ID" remove >/dev/null 2>&1
-LD_PRELOAD=$HRP_ROOT/build/testlib/libfakecan.so PLATFORM=Hubo ROBOT_ID=$OP_ID ./run_dcm --quiet \
+HUBO_FAKE_CAN=1 PLATFORM=Hubo ROBOT_ID=$OP_ID ./run_dcm --quiet \
   >"$LOGDIR/dcm_hubo.log" 2>&1 &
 PIDS+=($!)
 start_motion Hubo "$OP_ID" hil

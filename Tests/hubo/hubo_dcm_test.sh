@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The Hubo DCM drives the emulated Hubo2+ boards (Platforms/Hubo/emulator/hubo_emulator) over SocketCAN, through the
-# fake SocketCAN of the tests (this kernel has no AF_CAN), end to end:
+# fake SocketCAN of the tests (this kernel has no AF_CAN; HUBO_FAKE_CAN=1: the DCM's test build and the
+# emulator, each with the fake linked in, so make sanitize runs the DCM under ASan), end to end:
 #   bring-up (FETs and controllers on); a command from ./run_repl becomes the board's reference in
 #   counts and comes back as its encoder; F/T, IMU and the power board read back; a reference jump
 #   is spread over cycles at the joint's speed limit; 1% corrupted frames: the DCM keeps its rate
@@ -8,24 +9,22 @@
 #   without a jump; a board's fault bits are counted; a bus that goes away is reported and reopened.
 set -u
 cd "${HRP_ROOT:-$(dirname "$0")/../..}"
-TOP=$PWD
 source Tests/hubo/tree.sh
 export ROBOT_ID=${ROBOT_ID:-9450} PLATFORM=Hubo ROBOT=hubo2plus
 source Tests/dcm_emu_lib.sh
 hubo_tree "$T/root"
 mkdir "$T/bus"
-export FAKECAN_DIR=$T/bus
-FAKE=$TOP/build/testlib/libfakecan.so
+export FAKECAN_DIR=$T/bus HUBO_FAKE_CAN=1
 cd "$T/root"
 
 start_emu() {
   rm -f "$T/emu.in"; mkfifo "$T/emu.in"
-  HUBO_FAKE_CAN=1 Platforms/Hubo/emulator/hubo_emulator --stdin --quiet --realtime "$@" <"$T/emu.in" >>"$T/emu.out" 2>>"$T/emu.log" &
+  Platforms/Hubo/emulator/hubo_emulator --stdin --quiet --realtime "$@" <"$T/emu.in" >>"$T/emu.out" 2>>"$T/emu.log" &
   EMU=$!
   exec 3>"$T/emu.in"
   for _ in $(seq 100); do grep -q ready "$T/emu.log" 2>/dev/null && break; sleep 0.05; done
 }
-start_dcm() { LD_PRELOAD=$FAKE ./run_dcm "$@" 2>>"$T/dcm.log" & DCM=$!; }
+start_dcm() { ./run_dcm "$@" 2>>"$T/dcm.log" & DCM=$!; }
 # emu_board NAME: "ref0 ref1 enc0 enc1 fet ctrl home dead" from the emulator's stats
 emu_board() { emu_stats; grep "^board $1 " "$T/emu.out" | awk '{print $8, $9, $11, $12, $14, $16, $18, $20}'; }
 emu_line() { emu_stats; grep "^$1" "$T/emu.out"; }
@@ -180,7 +179,7 @@ stop_emu
 # ---------------------------------------------------------------- bad tables stop start-up
 cp Config/robots/hubo2plus/can.lua "$T/can.lua.orig"
 sed -i "s/leg('RKN', 16, 16, 160)/leg('RKX', 16, 16, 160)/" Config/robots/hubo2plus/can.lua
-err=$(LD_PRELOAD=$FAKE timeout 10 ./run_dcm 2>&1); rc=$?
+err=$(timeout 10 ./run_dcm 2>&1); rc=$?
 ok $([ $rc = 2 ] && echo "$err" | grep -q "Config/robots/hubo2plus/can.lua: boards\[3\] (JMC2) channels\[1\]: joint 'RKX'"; echo $?) "an unknown joint in can.lua stops start-up naming file and element ($err)"
 cp "$T/can.lua.orig" Config/robots/hubo2plus/can.lua
 echo "1..$n"

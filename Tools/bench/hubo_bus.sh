@@ -32,7 +32,7 @@ run() {   # run LABEL EMU_ARGS...
   rm -f /dev/shm/hrp."$ROBOT_ID".*
   HUBO_FAKE_CAN=1 Platforms/Hubo/emulator/hubo_emulator --quiet --realtime "$@" 2>"$T/emu.log" & EMU=$!
   for _ in $(seq 100); do grep -q ready "$T/emu.log" 2>/dev/null && break; sleep 0.05; done
-  LD_PRELOAD=$TOP/build/testlib/libfakecan.so ./run_dcm --cycles $((SECS * 200)) 2>"$T/dcm.log" & DCM=$!
+  HUBO_FAKE_CAN=1 ./run_dcm --cycles $((SECS * 200)) 2>"$T/dcm.log" & DCM=$!
   sleep "$SECS"
   # read while it runs (the statistics window of the last second), then let it finish
   read -r f0 f1 b0 b1 l0 l1 p50 p99 jmax rate c missed to rx dead < <(stats)

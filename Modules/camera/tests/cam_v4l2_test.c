@@ -1,33 +1,23 @@
-/* The V4L2 driver's capture path against a fake UVC device (tests/fake_uvc.c, LD_PRELOADed:
- * this program re-executes itself with it). Covers an absent camera and retry, format
+/* The V4L2 driver's capture path against a fake UVC device (tests/fake_uvc.c, put into the
+ * driver's system-call table in this process). Covers an absent camera and retry, format
  * negotiation, controls, buffer queueing and mapping, frames delivered intact (also with padded
  * lines), short frames, a device that disappears mid-run and comes back, and bad devices. TAP. */
 #include "camera/camera.h"
+#include "fake_uvc.h"
 #include "tap.h"
 
-#include <dlfcn.h>
 #include <linux/videodev2.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 
-#ifndef FAKE_UVC_LIB
-#error "FAKE_UVC_LIB must name the shim library"
-#endif
-
 #define DEV "/dev/fakevideo-hrp-test"
-
-
-static void (*set_present)(int);
-static void (*short_frames)(int);
-static void (*set_pad)(int);
-static int (*fake_get)(const char *);
 
 static int ctrl(uint32_t id) {
   char name[32];
   snprintf(name, sizeof name, "ctrl_%u", id);
-  return fake_get(name);
+  return fake_uvc_get(name);
 }
 
 /* The fake device's frame k: bytes 0..3 = k, byte i = (i*7 + k) & 255 (unpadded index). */
@@ -78,7 +68,7 @@ static void test_lifecycle(void) {
   cam_frame f;
   cam_stats st;
 
-  set_present(0);
+  fake_uvc_set_present(0);
   check(cam_open(&cfg, &cam, err, sizeof err) == 0, "open succeeds with the camera absent");
   int rc = cam_grab(cam, &f, 0.3, err, sizeof err);
   check(rc == CAM_ENODEV && strstr(err, DEV) && strstr(err, "No such file"),
@@ -86,15 +76,15 @@ static void test_lifecycle(void) {
   cam_get_stats(cam, &st);
   check(st.open_failures >= 2 && !st.connected, "absent camera retried (open failures counted)");
 
-  set_present(1);
+  fake_uvc_set_present(1);
   rc = grab_until(cam, &f, 0, 3.0, err, sizeof err);
   check(rc == 0 && f.width == 640 && f.height == 480, "camera plugged in: a 640x480 frame arrives");
   check(rc == 0 && frame_ok(&f), "frame delivered intact through the mmap buffers");
 
-  check(fake_get("fmt_width") == 640 && fake_get("fmt_height") == 480, "format negotiated 640x480");
-  check(fake_get("reqbufs") >= 1 && fake_get("live_maps") == 4 && fake_get("streamon") == 1,
+  check(fake_uvc_get("fmt_width") == 640 && fake_uvc_get("fmt_height") == 480, "format negotiated 640x480");
+  check(fake_uvc_get("reqbufs") >= 1 && fake_uvc_get("live_maps") == 4 && fake_uvc_get("streamon") == 1,
         "4 buffers requested, mapped and streaming");
-  check(fake_get("qbuf") >= 4 + fake_get("dqbuf") - 1, "every dequeued buffer is queued again");
+  check(fake_uvc_get("qbuf") >= 4 + fake_uvc_get("dqbuf") - 1, "every dequeued buffer is queued again");
   check(ctrl(V4L2_CID_EXPOSURE_AUTO) == V4L2_EXPOSURE_MANUAL && ctrl(V4L2_CID_EXPOSURE_ABSOLUTE) == 150,
         "exposure set manual, 150");
   check(ctrl(V4L2_CID_GAIN) == 40, "gain set");
@@ -113,7 +103,7 @@ static void test_lifecycle(void) {
   }
   check(ok, "30 more frames, in order, each intact");
 
-  short_frames(3);
+  fake_uvc_short_frames(3);
   int good_after = 0;
   for (int i = 0; i < 40; i++) {
     rc = cam_grab(cam, &f, 1.0, err, sizeof err);
@@ -123,21 +113,21 @@ static void test_lifecycle(void) {
   check(st.short_frames == 3 && good_after == 40 && strstr(st.last_error, "short frame"),
         "3 short frames counted and dropped; capture goes on");
 
-  set_present(0);
+  fake_uvc_set_present(0);
   rc = grab_until(cam, &f, CAM_ENODEV, 3.0, err, sizeof err);
   check(rc == CAM_ENODEV && strstr(err, DEV), "unplugged mid-run: grab reports the device lost");
   cam_get_stats(cam, &st);
   check(st.lost == 1 && !st.connected, "loss counted");
   usleep(100000);
-  check(fake_get("live_maps") == 0 && fake_get("open") == 0, "buffers unmapped and device closed");
+  check(fake_uvc_get("live_maps") == 0 && fake_uvc_get("open") == 0, "buffers unmapped and device closed");
 
-  set_present(1);
+  fake_uvc_set_present(1);
   rc = grab_until(cam, &f, 0, 3.0, err, sizeof err);
   cam_get_stats(cam, &st);
   check(rc == 0 && frame_ok(&f) && st.opens == 2 && st.connected, "plugged back: reopened, frames again");
 
   cam_close(cam);
-  check(fake_get("live_maps") == 0 && fake_get("open") == 0, "close releases buffers and device");
+  check(fake_uvc_get("live_maps") == 0 && fake_uvc_get("open") == 0, "close releases buffers and device");
 }
 
 static void test_padded_lines(void) {
@@ -145,7 +135,7 @@ static void test_padded_lines(void) {
   base_config(&cfg);
   cfg.width = 320;
   cfg.height = 240;
-  set_pad(64);
+  fake_uvc_set_pad(64);
   cam_camera *cam = NULL;
   char err[512];
   cam_frame f;
@@ -154,7 +144,7 @@ static void test_padded_lines(void) {
   check(rc == 0 && f.width == 320 && f.height == 240 && frame_ok(&f),
         "padded lines (bytesperline > width*2): frame unpadded intact");
   cam_close(cam);
-  set_pad(0);
+  fake_uvc_set_pad(0);
 }
 
 static void test_bad_devices(void) {
@@ -187,42 +177,13 @@ static void test_bad_devices(void) {
   check(cam_open(&cfg, &cam, err, sizeof err) == CAM_EARG, "odd width refused at open");
 }
 
-/* The re-execution's LD_PRELOAD: the shim, which must see the driver's system calls. In a sanitizer
- * build the sanitizer's runtime must come first in the list (found by make sanitize): it is put
- * before the (uninstrumented) shim and passes the calls it intercepts on to it. */
-static void set_preload(void) {
-  char list[2048];
-  snprintf(list, sizeof list, "%s", FAKE_UVC_LIB);
-  const char *inits[] = {"__asan_init", "__tsan_init"};
-  for (int i = 0; i < 2; i++) {
-    Dl_info info;
-    void *sym = dlsym(RTLD_DEFAULT, inits[i]);
-    if (sym && dladdr(sym, &info) && info.dli_fname) {
-      snprintf(list, sizeof list, "%s:%s", info.dli_fname, FAKE_UVC_LIB);
-      break;
-    }
-  }
-  setenv("LD_PRELOAD", list, 1);
-}
-
-int main(int argc, char **argv) {
-  (void)argc;
-  if (!getenv("FAKE_UVC_ACTIVE")) {
-    set_preload();
-    setenv("FAKE_UVC_ACTIVE", "1", 1);
-    setenv("FAKE_UVC_PATH", DEV, 1);
-    execv("/proc/self/exe", argv);
-    perror("execv");
-    return 1;
-  }
-  set_present = (void (*)(int))dlsym(RTLD_DEFAULT, "fake_uvc_set_present");
-  short_frames = (void (*)(int))dlsym(RTLD_DEFAULT, "fake_uvc_short_frames");
-  set_pad = (void (*)(int))dlsym(RTLD_DEFAULT, "fake_uvc_set_pad");
-  fake_get = (int (*)(const char *))dlsym(RTLD_DEFAULT, "fake_uvc_get");
-  check(set_present && short_frames && set_pad && fake_get, "fake UVC shim preloaded");
-  if (!fake_get) { tap_done(); return 1; }
+int main(void) {
+  const cam_sys libc_calls = cam_v4l2_sys;
+  fake_uvc_install(DEV, 1);
+  check(cam_v4l2_sys.open != libc_calls.open, "the fake UVC device is in the driver's table");
   test_lifecycle();
   test_padded_lines();
   test_bad_devices();
+  cam_v4l2_sys = libc_calls;
   return tap_done();
 }

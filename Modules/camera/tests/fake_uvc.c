@@ -1,6 +1,7 @@
-/* fake_uvc: an LD_PRELOAD shim that makes a path ($FAKE_UVC_PATH, default /dev/fakevideo0)
- * behave like a UVC camera for open/close/ioctl/mmap/munmap/poll, so the V4L2 driver can be
- * tested without hardware.
+/* fake_uvc: a UVC camera at one path for the v4l2 driver's system calls (open/close/ioctl/mmap/
+ * munmap/poll), so the driver can be tested without hardware. A test installs it in the driver's
+ * table (cam_v4l2_sys, camera/cam_internal.h) in its own process: the fake is compiled like the
+ * test, so a sanitizer build instruments both. Calls on other paths and descriptors go to libc.
  *
  * The fake device: capture + streaming caps; YUYV only, at 640x480, 320x240 or 160x120 (S_FMT
  * substitutes the nearest like a real driver and always answers YUYV); frame rate from S_PARM;
@@ -9,15 +10,11 @@
  * Frame k's bytes: bytes 0..3 = k (little-endian), byte i >= 4 = (i*7 + k) & 255 in each line's
  * first width*2 bytes.
  *
- * Knobs for the test (find them with dlsym(RTLD_DEFAULT, ...)):
- *   fake_uvc_set_present(0|1)   unplug (an open device dies: ENODEV, POLLERR) / plug back in
- *   fake_uvc_short_frames(n)    the next n frames are delivered with half their bytes
- *   fake_uvc_set_pad(bytes)     extra bytes at the end of every line (bytesperline > width*2)
- *   fake_uvc_get(name)          counters: opens closes streamon streamoff qbuf dqbuf live_maps
- *                               reqbufs fmt_width fmt_height open ctrl_<id in decimal>
+ * The knobs for the test are in fake_uvc.h.
  */
+#include "fake_uvc.h"
+
 #include <stdint.h>
-#include <dlfcn.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <linux/videodev2.h>
@@ -27,6 +24,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/ioctl.h>
 #include <sys/mman.h>
 #include <time.h>
 #include <unistd.h>
@@ -36,7 +34,6 @@
 
 static pthread_mutex_t L = PTHREAD_MUTEX_INITIALIZER;
 static struct {
-  int init;
   char path[256];
   int present;
   int fd;                 /* placeholder fd of the open device, -1 */
@@ -57,33 +54,17 @@ static struct {
   int opens, closes, streamon, streamoff, qbuf, dqbuf, live_maps, reqbufs;
 } F;
 
-static int (*real_open)(const char *, int, ...);
-static int (*real_close)(int);
-static int (*real_ioctl)(int, unsigned long, ...);
-static void *(*real_mmap)(void *, size_t, int, int, int, off_t);
-static int (*real_munmap)(void *, size_t);
-static int (*real_poll)(struct pollfd *, nfds_t, int);
-
-static void init(void) {
-  if (F.init) return;
-  real_open = dlsym(RTLD_NEXT, "open");
-  real_close = dlsym(RTLD_NEXT, "close");
-  real_ioctl = dlsym(RTLD_NEXT, "ioctl");
-  real_mmap = dlsym(RTLD_NEXT, "mmap");
-  real_munmap = dlsym(RTLD_NEXT, "munmap");
-  real_poll = dlsym(RTLD_NEXT, "poll");
-  const char *p = getenv("FAKE_UVC_PATH");
-  snprintf(F.path, sizeof F.path, "%s", p && *p ? p : "/dev/fakevideo0");
-  const char *pr = getenv("FAKE_UVC_PRESENT");
-  F.present = pr ? atoi(pr) : 1;
+void fake_uvc_install(const char *path, int present) {
+  pthread_mutex_lock(&L);
+  snprintf(F.path, sizeof F.path, "%s", path);
+  F.present = present;
   F.fd = -1;
   F.width = 640;
   F.height = 480;
   F.period = 1.0 / 30;
-  F.init = 1;
+  pthread_mutex_unlock(&L);
+  cam_v4l2_sys = fake_uvc_sys;
 }
-
-__attribute__((constructor)) static void ctor(void) { init(); }
 
 static double now(void) {
   struct timespec ts;
@@ -150,7 +131,7 @@ static void fill_frame(uint8_t *p, uint32_t k) {
   memcpy(p, &k, 4);
 }
 
-static int fake_ioctl(unsigned long req, void *arg) {
+static int device_ioctl(unsigned long req, void *arg) {
   if (F.dead) { errno = ENODEV; return -1; }
   switch (req) {
   case VIDIOC_QUERYCAP: {
@@ -269,17 +250,16 @@ static int fake_ioctl(unsigned long req, void *arg) {
   }
 }
 
-/* ---------------------------------------------------------------- interposed calls */
+/* ---------------------------------------------------------------- the driver's calls */
 
-static int fake_open(const char *path, int flags, mode_t mode) {
-  init();
+static int fake_open_mode(const char *path, int flags, mode_t mode) {
   if (path && strcmp(path, F.path) == 0) {
     pthread_mutex_lock(&L);
     int fd = -1;
     if (!F.present) errno = ENOENT;
     else if (F.fd >= 0) errno = EBUSY;
     else {
-      fd = real_open("/dev/null", O_RDWR);
+      fd = open("/dev/null", O_RDWR);
       if (fd >= 0) {
         F.fd = fd;
         F.dead = 0;
@@ -293,26 +273,22 @@ static int fake_open(const char *path, int flags, mode_t mode) {
     pthread_mutex_unlock(&L);
     return fd;
   }
-  return real_open(path, flags, mode);
+  return open(path, flags, mode);
 }
 
 static mode_t get_mode(int flags, va_list ap) {
   return (flags & (O_CREAT | O_TMPFILE)) ? (mode_t)va_arg(ap, int) : 0;
 }
 
-int open(const char *path, int flags, ...) {
+static int fake_open(const char *path, int flags, ...) {
   va_list ap;
   va_start(ap, flags);
   mode_t m = get_mode(flags, ap);
   va_end(ap);
-  return fake_open(path, flags, m);
+  return fake_open_mode(path, flags, m);
 }
 
-/* The large-file name of open: the same function. */
-int open64(const char *path, int flags, ...) __attribute__((alias("open")));
-
-int close(int fd) {
-  init();
+static int fake_close(int fd) {
   pthread_mutex_lock(&L);
   if (fd >= 0 && fd == F.fd) {
     F.fd = -1;
@@ -320,27 +296,25 @@ int close(int fd) {
     F.closes++;
   }
   pthread_mutex_unlock(&L);
-  return real_close(fd);
+  return close(fd);
 }
 
-int ioctl(int fd, unsigned long req, ...) {
-  init();
+static int fake_ioctl(int fd, unsigned long req, ...) {
   va_list ap;
   va_start(ap, req);
   void *arg = va_arg(ap, void *);
   va_end(ap);
   pthread_mutex_lock(&L);
   if (fd >= 0 && fd == F.fd) {
-    int r = fake_ioctl(req, arg);
+    int r = device_ioctl(req, arg);
     pthread_mutex_unlock(&L);
     return r;
   }
   pthread_mutex_unlock(&L);
-  return real_ioctl(fd, req, arg);
+  return ioctl(fd, req, arg);
 }
 
-void *mmap(void *addr, size_t len, int prot, int flags, int fd, off_t off) {
-  init();
+static void *fake_mmap(void *addr, size_t len, int prot, int flags, int fd, off_t off) {
   pthread_mutex_lock(&L);
   if (fd >= 0 && fd == F.fd) {
     void *p = MAP_FAILED;
@@ -349,7 +323,7 @@ void *mmap(void *addr, size_t len, int prot, int flags, int fd, off_t off) {
     else if (F.buflen == 0 || (size_t)off % F.buflen || idx >= (size_t)F.nbufs || len > F.buflen)
       errno = EINVAL;
     else {
-      p = real_mmap(NULL, len, prot, MAP_SHARED | MAP_ANONYMOUS, -1, 0);
+      p = mmap(NULL, len, prot, MAP_SHARED | MAP_ANONYMOUS, -1, 0);
       if (p != MAP_FAILED) {
         F.bufs[idx].addr = p;
         F.bufs[idx].len = len;
@@ -360,15 +334,10 @@ void *mmap(void *addr, size_t len, int prot, int flags, int fd, off_t off) {
     return p;
   }
   pthread_mutex_unlock(&L);
-  return real_mmap(addr, len, prot, flags, fd, off);
-}
-
-void *mmap64(void *addr, size_t len, int prot, int flags, int fd, off_t off) {
   return mmap(addr, len, prot, flags, fd, off);
 }
 
-int munmap(void *addr, size_t len) {
-  init();
+static int fake_munmap(void *addr, size_t len) {
   pthread_mutex_lock(&L);
   for (int i = 0; i < NBUF; i++)
     if (addr && F.bufs[i].addr == addr) {
@@ -376,16 +345,15 @@ int munmap(void *addr, size_t len) {
       F.live_maps--;
     }
   pthread_mutex_unlock(&L);
-  return real_munmap(addr, len);
+  return munmap(addr, len);
 }
 
-int poll(struct pollfd *fds, nfds_t n, int timeout_ms) {
-  init();
+static int fake_poll(struct pollfd *fds, nfds_t n, int timeout_ms) {
   pthread_mutex_lock(&L);
   int fake = n == 1 && fds[0].fd >= 0 && fds[0].fd == F.fd;
   if (!fake) {
     pthread_mutex_unlock(&L);
-    return real_poll(fds, n, timeout_ms);
+    return poll(fds, n, timeout_ms);
   }
   fds[0].revents = 0;
   if (F.dead) {
@@ -418,3 +386,5 @@ int poll(struct pollfd *fds, nfds_t n, int timeout_ms) {
   if (ready) fds[0].revents = POLLIN;
   return ready;
 }
+
+const cam_sys fake_uvc_sys = { fake_open, fake_close, fake_ioctl, fake_mmap, fake_munmap, fake_poll };

@@ -5,8 +5,8 @@
  *                 [--seed N] [--stdin] [--realtime] [--quiet] [--sim-id N]
  *
  * The boards are the body's can.lua (ROBOT, default hubo2plus) on its interfaces (can0, can1; a
- * real kernel's vcan works, and on this machine the fake of Platforms/Hubo/tests/fake_socketcan.c
- * through LD_PRELOAD). Motor boards start at encoder zero with FETs and controllers off, homed
+ * real kernel's vcan works; with HUBO_FAKE_CAN=1 in the environment, the fake SocketCAN of
+ * Platforms/Hubo/tests/fake_socketcan.c, linked in, for a kernel without AF_CAN). Motor boards start at encoder zero with FETs and controllers off, homed
  * (--unhomed: home state 0 until a homing command), and move first-order towards their reference
  * (time constant --tau, capped at the channel's max_speed) while FETs and controller are on.
  *
@@ -31,6 +31,8 @@
  */
 #include "emu.h"
 #include "emu_sim.h"
+#include "../hio_sys.h"
+#include "../tests/fake_socketcan.h"
 
 #include <errno.h>
 #include <linux/can.h>
@@ -83,8 +85,11 @@ static double now(void) {
 
 static double uniform(void) { return rand() / (RAND_MAX + 1.0); }
 
+/* the sockets' system calls: libc's, or the fake SocketCAN's (HUBO_FAKE_CAN=1) */
+static hio_sys io = HIO_SYS_LIBC;
+
 static int open_bus(const char *name, char *err, size_t n) {
-  const int s = socket(PF_CAN, SOCK_RAW | SOCK_NONBLOCK | SOCK_CLOEXEC, CAN_RAW);
+  const int s = io.socket(PF_CAN, SOCK_RAW | SOCK_NONBLOCK | SOCK_CLOEXEC, CAN_RAW);
   if (s < 0) {
     snprintf(err, n, "socket(PF_CAN): %s", strerror(errno));
     return -1;
@@ -92,22 +97,22 @@ static int open_bus(const char *name, char *err, size_t n) {
   struct ifreq ifr;
   memset(&ifr, 0, sizeof ifr);
   snprintf(ifr.ifr_name, sizeof ifr.ifr_name, "%s", name);
-  if (ioctl(s, SIOCGIFINDEX, &ifr) < 0) {
+  if (io.ioctl(s, SIOCGIFINDEX, &ifr) < 0) {
     snprintf(err, n, "interface %s: %s", name, strerror(errno));
-    close(s);
+    io.close(s);
     return -1;
   }
   struct sockaddr_can a = { .can_family = AF_CAN, .can_ifindex = ifr.ifr_ifindex };
-  if (bind(s, (struct sockaddr *)&a, sizeof a) < 0) {
+  if (io.bind(s, (struct sockaddr *)&a, sizeof a) < 0) {
     snprintf(err, n, "bind %s: %s", name, strerror(errno));
-    close(s);
+    io.close(s);
     return -1;
   }
   /* the host's frames only: commands 0x001, sensor requests 0x002, references 0x010..0x03F */
   const canid_t m = CAN_SFF_MASK | CAN_EFF_FLAG | CAN_RTR_FLAG;
   struct can_filter flt[] = { { 0x001, m }, { 0x002, m }, { 0x010, 0x7F0 | CAN_EFF_FLAG | CAN_RTR_FLAG },
                               { 0x020, 0x7F0 | CAN_EFF_FLAG | CAN_RTR_FLAG }, { 0x030, 0x7F0 | CAN_EFF_FLAG | CAN_RTR_FLAG } };
-  setsockopt(s, SOL_CAN_RAW, CAN_RAW_FILTER, flt, sizeof flt);
+  io.setsockopt(s, SOL_CAN_RAW, CAN_RAW_FILTER, flt, sizeof flt);
   return s;
 }
 
@@ -194,7 +199,7 @@ static void send_due(double t) {
     c.can_id = E.q[k].f.id;
     c.can_dlc = E.q[k].f.dlc;
     memcpy(c.data, E.q[k].f.data, 8);
-    if (write(E.fd[E.q[k].bus], &c, sizeof c) == sizeof c) {
+    if (io.write(E.fd[E.q[k].bus], &c, sizeof c) == sizeof c) {
       E.n_tx++;
       E.frames_out[E.q[k].bus]++;
     }
@@ -212,7 +217,7 @@ static double next_due(void) {
 
 static void receive(int b, double t) {
   struct can_frame c;
-  while (read(E.fd[b], &c, sizeof c) == sizeof c) {
+  while (io.read(E.fd[b], &c, sizeof c) == sizeof c) {
     hcan_frame f = { .id = c.can_id, .dlc = c.can_dlc };
     memcpy(f.data, c.data, 8);
     E.n_rx++;
@@ -338,6 +343,8 @@ int main(int argc, char **argv) {
     i++;
   }
   if (!getenv("ROBOT") || !*getenv("ROBOT")) setenv("ROBOT", "hubo2plus", 1);
+  const char *fake = getenv("HUBO_FAKE_CAN");
+  if (fake && !strcmp(fake, "1")) io = fakecan_sys;
   char err[1024];
   dcm_config *rc = NULL, *cc = NULL;
   int r = dcm_config_load("robot", NULL, "Hubo", &rc, err, sizeof err);
@@ -397,7 +404,7 @@ int main(int argc, char **argv) {
     if (wait > 0.005) wait = 0.005;   /* the joints move on between frames */
     if (wait < 0) wait = 0;
     struct timespec ts = { 0, (long)(wait * 1e9) };
-    ppoll(pf, (nfds_t)nb + 1, &ts, NULL);
+    io.ppoll(pf, (nfds_t)nb + 1, &ts, NULL);
     t = now();
     if (sim_id) emu_sim_step(&sim, &E.w);
     else emu_step(&E.w, t, t - last);
@@ -408,7 +415,7 @@ int main(int argc, char **argv) {
     send_due(now());
   }
   if (!E.quiet) stats();
-  for (int b = 0; b < E.table.nbus; b++) close(E.fd[b]);
+  for (int b = 0; b < E.table.nbus; b++) io.close(E.fd[b]);
   if (sim_id) emu_sim_close(&sim);
   return 0;
 }

@@ -1,30 +1,34 @@
-/* fake_socketcan: an LD_PRELOAD shim that serves SocketCAN raw sockets over a userspace bus, so the
- * Hubo DCM and its emulator run unchanged on a kernel without AF_CAN (this machine's).
+/* fake_socketcan: SocketCAN raw sockets over a userspace bus, so the Hubo DCM and its emulator run on a
+ * kernel without AF_CAN (this machine's). A program takes it through its system-call table
+ * (fakecan_sys, in hio_sys.h's shape) in its own process: the test build of the DCM
+ * (build/testbin/dcm_hubo_fakecan), the emulator with HUBO_FAKE_CAN=1, fakecan_test. It is compiled
+ * like that program, so a sanitizer build instruments both. Calls on other descriptors go to libc.
  *
  * Served: socket(PF_CAN, SOCK_RAW, CAN_RAW) (SOCK_NONBLOCK / SOCK_CLOEXEC honoured), ioctl
- * SIOCGIFINDEX and FIONBIO, if_nametoindex, bind(struct sockaddr_can), setsockopt CAN_RAW_FILTER /
- * CAN_RAW_ERR_FILTER (CAN_RAW_LOOPBACK / CAN_RAW_RECV_OWN_MSGS accepted), read / recv / recvfrom /
- * write / send / sendto of struct can_frame (16 bytes; anything else is EINVAL), poll, ppoll, close.
- * Not served: recvmsg, select, epoll, CAN FD.
+ * SIOCGIFINDEX and FIONBIO, bind(struct sockaddr_can), setsockopt CAN_RAW_FILTER /
+ * CAN_RAW_ERR_FILTER (CAN_RAW_LOOPBACK / CAN_RAW_RECV_OWN_MSGS accepted), read / write of struct
+ * can_frame (16 bytes; anything else is EINVAL), ppoll, close. Not served: CAN FD.
  *
  * The bus: each bound socket is a named pipe $FAKECAN_DIR/<ifname>/<pid>.<fd> that its owner reads
  * (a pipe, not a unix datagram socket: those queue only net.unix.max_dgram_qlen = 10 datagrams,
  * fewer than one cycle's replies; a pipe holds 4096 frames, and 16-byte writes are atomic). A frame
  * written goes to every other socket bound to that interface (as SocketCAN's loopback delivers to
- * the host's other sockets, never to the sender). A receiver whose queue is full loses the frame,
- * as a socket's overflowing receive queue does. The shim ignores SIGPIPE (a peer that died).
+ * the host's other sockets, never to the sender), in this process or another. A receiver whose
+ * queue is full loses the frame, as a socket's overflowing receive queue does. The fake ignores
+ * SIGPIPE (a peer that died).
  * Filters apply on receipt, as the kernel's: a frame passes when (id & mask) == (filter id & mask)
  * for some filter (inverted with CAN_INV_FILTER); error frames (CAN_ERR_FLAG) pass only through the
- * error mask. poll drops frames no filter passes, so POLLIN means a frame read() will return.
+ * error mask. ppoll drops frames no filter passes, so POLLIN means a frame read() will return.
  *
  * Environment: FAKECAN_DIR (default /tmp/fakecan.<uid>), FAKECAN_IFACES (default
  * "can0,can1,vcan0,vcan1": the interfaces that exist, index = position + 1). A file
  * $FAKECAN_DIR/<ifname>.down takes the interface down: writes fail with ENETDOWN, reads with
- * ENETDOWN, poll reports POLLERR (looked at every 20 ms), until the file is removed.
+ * ENETDOWN, ppoll reports POLLERR (looked at every 20 ms), until the file is removed.
  * Single-threaded use (the DCM, the emulator).
  */
+#include "fake_socketcan.h"
+
 #include <dirent.h>
-#include <dlfcn.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <linux/can.h>
@@ -72,38 +76,9 @@ static char ifname[MAXIF][IFNAMSIZ];
 static int nif;
 static int inited;
 
-static int (*real_socket)(int, int, int);
-static int (*real_ioctl)(int, unsigned long, ...);
-static int (*real_bind)(int, const struct sockaddr *, socklen_t);
-static int (*real_setsockopt)(int, int, int, const void *, socklen_t);
-static ssize_t (*real_read)(int, void *, size_t);
-static ssize_t (*real_write)(int, const void *, size_t);
-static ssize_t (*real_recv)(int, void *, size_t, int);
-static ssize_t (*real_recvfrom)(int, void *, size_t, int, struct sockaddr *, socklen_t *);
-static ssize_t (*real_send)(int, const void *, size_t, int);
-static ssize_t (*real_sendto)(int, const void *, size_t, int, const struct sockaddr *, socklen_t);
-static int (*real_poll)(struct pollfd *, nfds_t, int);
-static int (*real_ppoll)(struct pollfd *, nfds_t, const struct timespec *, const sigset_t *);
-static int (*real_close)(int);
-static unsigned (*real_if_nametoindex)(const char *);
-
 static void init(void) {
   if (inited) return;
   inited = 1;
-  real_socket = dlsym(RTLD_NEXT, "socket");
-  real_ioctl = dlsym(RTLD_NEXT, "ioctl");
-  real_bind = dlsym(RTLD_NEXT, "bind");
-  real_setsockopt = dlsym(RTLD_NEXT, "setsockopt");
-  real_read = dlsym(RTLD_NEXT, "read");
-  real_write = dlsym(RTLD_NEXT, "write");
-  real_recv = dlsym(RTLD_NEXT, "recv");
-  real_recvfrom = dlsym(RTLD_NEXT, "recvfrom");
-  real_send = dlsym(RTLD_NEXT, "send");
-  real_sendto = dlsym(RTLD_NEXT, "sendto");
-  real_poll = dlsym(RTLD_NEXT, "poll");
-  real_ppoll = dlsym(RTLD_NEXT, "ppoll");
-  real_close = dlsym(RTLD_NEXT, "close");
-  real_if_nametoindex = dlsym(RTLD_NEXT, "if_nametoindex");
   const char *d = getenv("FAKECAN_DIR");
   if (d && *d) snprintf(dir, sizeof dir, "%s", d);
   else snprintf(dir, sizeof dir, "/tmp/fakecan.%u", (unsigned)getuid());
@@ -141,15 +116,15 @@ static int is_down(fake *f) {
 
 static void drop_peers(fake *f) {
   for (int k = 0; k < f->npeer; k++)
-    if (f->peer_fd[k] >= 0) real_close(f->peer_fd[k]);
+    if (f->peer_fd[k] >= 0) close(f->peer_fd[k]);
   f->npeer = 0;
 }
 
 /* ---------------------------------------------------------------- socket, ioctl, bind, options */
 
-int socket(int domain, int type, int protocol) {
+static int fake_socket(int domain, int type, int protocol) {
   init();
-  if (domain != PF_CAN) return real_socket(domain, type, protocol);
+  if (domain != PF_CAN) return socket(domain, type, protocol);
   if ((type & 0xFF) != SOCK_RAW || protocol != CAN_RAW) {
     errno = EPROTONOSUPPORT;
     return -1;
@@ -158,7 +133,7 @@ int socket(int domain, int type, int protocol) {
   const int fd = open("/dev/null", O_RDONLY | ((type & SOCK_CLOEXEC) ? O_CLOEXEC : 0));
   if (fd < 0) return fd;
   if (fd >= MAXFD) {
-    real_close(fd);
+    close(fd);
     errno = EMFILE;
     return -1;
   }
@@ -175,15 +150,15 @@ static int index_of(const char *name) {
   return 0;
 }
 
-int ioctl(int fd, unsigned long req, ...) {
+static int fake_ioctl(int fd, unsigned long req, ...) {
   va_list ap;
   va_start(ap, req);
   void *arg = va_arg(ap, void *);
   va_end(ap);
-  if (!get(fd)) return real_ioctl(fd, req, arg);
+  if (!get(fd)) return ioctl(fd, req, arg);
   if (req == FIONBIO) {   /* Python's settimeout, and others */
     F[fd].nonblock = *(int *)arg != 0;
-    return F[fd].bound ? real_ioctl(fd, req, arg) : 0;
+    return F[fd].bound ? ioctl(fd, req, arg) : 0;
   }
   if (req != SIOCGIFINDEX) {
     errno = EINVAL;
@@ -199,15 +174,9 @@ int ioctl(int fd, unsigned long req, ...) {
   return 0;
 }
 
-unsigned if_nametoindex(const char *name) {
-  init();
-  const int idx = index_of(name);
-  return idx ? (unsigned)idx : real_if_nametoindex(name);
-}
-
-int bind(int fd, const struct sockaddr *addr, socklen_t len) {
+static int fake_bind(int fd, const struct sockaddr *addr, socklen_t len) {
   fake *f = get(fd);
-  if (!f) return real_bind(fd, addr, len);
+  if (!f) return bind(fd, addr, len);
   const struct sockaddr_can *a = (const struct sockaddr_can *)addr;
   if (!a || len < (socklen_t)sizeof *a || a->can_family != AF_CAN) {
     errno = EINVAL;
@@ -237,7 +206,7 @@ int bind(int fd, const struct sockaddr *addr, socklen_t len) {
   if (!f->nonblock) fcntl(p, F_SETFL, fcntl(p, F_GETFL) & ~O_NONBLOCK);
   const int fdflags = fcntl(fd, F_GETFD);
   dup2(p, fd);
-  real_close(p);
+  close(p);
   fcntl(fd, F_SETFD, fdflags);
   f->ifindex = a->can_ifindex;
   f->bound = 1;
@@ -245,9 +214,9 @@ int bind(int fd, const struct sockaddr *addr, socklen_t len) {
   return 0;
 }
 
-int setsockopt(int fd, int level, int name, const void *val, socklen_t len) {
+static int fake_setsockopt(int fd, int level, int name, const void *val, socklen_t len) {
   fake *f = get(fd);
-  if (!f) return real_setsockopt(fd, level, name, val, len);
+  if (!f) return setsockopt(fd, level, name, val, len);
   if (level == SOL_SOCKET) return 0;   /* buffer sizes, timestamps: accepted */
   if (level != SOL_CAN_RAW) {
     errno = ENOPROTOOPT;
@@ -335,7 +304,7 @@ static ssize_t can_send(fake *f, const void *buf, size_t len) {
   }
   list_peers(f);
   for (int k = 0; k < f->npeer; k++) {
-    if (real_write(f->peer_fd[k], buf, len) < 0 && errno == EPIPE) {
+    if (write(f->peer_fd[k], buf, len) < 0 && errno == EPIPE) {
       unlink(f->peer[k]);   /* its reader is gone */
       f->dir_mtime.tv_sec = -1;
     }
@@ -354,15 +323,15 @@ static int take(fake *f, struct can_frame *c, int dontwait) {
   for (;;) {
     if (dontwait || f->nonblock) {
       struct pollfd p = { .fd = (int)(f - F), .events = POLLIN };
-      if (real_poll(&p, 1, 0) <= 0 || !(p.revents & POLLIN)) return 0;
+      if (poll(&p, 1, 0) <= 0 || !(p.revents & POLLIN)) return 0;
     }
-    const ssize_t n = real_read((int)(f - F), c, sizeof *c);
+    const ssize_t n = read((int)(f - F), c, sizeof *c);
     if (n < 0) return errno == EAGAIN ? 0 : -1;
     if (n == (ssize_t)sizeof *c && passes(f, c)) return 1;
   }
 }
 
-static ssize_t can_recv(fake *f, void *buf, size_t len, int flags) {
+static ssize_t can_recv(fake *f, void *buf, size_t len) {
   if (len < sizeof(struct can_frame) || !f->bound) {
     errno = EINVAL;
     return -1;
@@ -372,50 +341,23 @@ static ssize_t can_recv(fake *f, void *buf, size_t len, int flags) {
     return -1;
   }
   struct can_frame c;
-  const int r = take(f, &c, (flags & MSG_DONTWAIT) != 0);
+  const int r = take(f, &c, 0);
   if (r < 0) return -1;
   if (r == 0) {
     errno = EAGAIN;
     return -1;
   }
-  if (flags & MSG_PEEK) {
-    f->hold = c;
-    f->held = 1;
-  }
   memcpy(buf, &c, sizeof c);
   return (ssize_t)sizeof c;
 }
 
-ssize_t read(int fd, void *buf, size_t len) {
+static ssize_t fake_read(int fd, void *buf, size_t len) {
   fake *f = get(fd);
-  return f ? can_recv(f, buf, len, 0) : real_read(fd, buf, len);
+  return f ? can_recv(f, buf, len) : read(fd, buf, len);
 }
-ssize_t recv(int fd, void *buf, size_t len, int flags) {
+static ssize_t fake_write(int fd, const void *buf, size_t len) {
   fake *f = get(fd);
-  return f ? can_recv(f, buf, len, flags) : real_recv(fd, buf, len, flags);
-}
-ssize_t recvfrom(int fd, void *buf, size_t len, int flags, struct sockaddr *src, socklen_t *slen) {
-  fake *f = get(fd);
-  if (!f) return real_recvfrom(fd, buf, len, flags, src, slen);
-  const ssize_t n = can_recv(f, buf, len, flags);
-  if (n >= 0 && src && slen && *slen >= sizeof(struct sockaddr_can)) {
-    struct sockaddr_can a = { .can_family = AF_CAN, .can_ifindex = f->ifindex };
-    memcpy(src, &a, sizeof a);
-    *slen = sizeof a;
-  }
-  return n;
-}
-ssize_t write(int fd, const void *buf, size_t len) {
-  fake *f = get(fd);
-  return f ? can_send(f, buf, len) : real_write(fd, buf, len);
-}
-ssize_t send(int fd, const void *buf, size_t len, int flags) {
-  fake *f = get(fd);
-  return f ? can_send(f, buf, len) : real_send(fd, buf, len, flags);
-}
-ssize_t sendto(int fd, const void *buf, size_t len, int flags, const struct sockaddr *to, socklen_t tolen) {
-  fake *f = get(fd);
-  return f ? can_send(f, buf, len) : real_sendto(fd, buf, len, flags, to, tolen);
+  return f ? can_send(f, buf, len) : write(fd, buf, len);
 }
 
 /* A frame that passes the filters is ready (read ahead into the hold; others are dropped). */
@@ -428,7 +370,7 @@ static int readable(fake *f) {
   return 1;
 }
 
-/* poll and ppoll on fake sockets: timeout in s (< 0: none), waits in slices of at most 20 ms */
+/* ppoll on fake sockets: timeout in s (< 0: none), waits in slices of at most 20 ms */
 static int wait_fds(struct pollfd *fds, nfds_t n, double timeout, const sigset_t *mask) {
   const double end = timeout < 0 ? -1 : now() + timeout;
   for (;;) {
@@ -441,7 +383,7 @@ static int wait_fds(struct pollfd *fds, nfds_t n, double timeout, const sigset_t
     if (w > 0.02) w = 0.02;   /* a taken-down interface is noticed while waiting */
     if (w < 0 || ready) w = 0;
     struct timespec ts = { (time_t)w, (long)((w - (double)(time_t)w) * 1e9) };
-    int r = real_ppoll(fds, n, &ts, mask);
+    int r = ppoll(fds, n, &ts, mask);
     if (r < 0) return r;
     r = 0;
     for (nfds_t k = 0; k < n; k++) {
@@ -465,22 +407,20 @@ static int any_fake(const struct pollfd *fds, nfds_t n) {
   return 0;
 }
 
-int poll(struct pollfd *fds, nfds_t n, int timeout) {
-  if (!any_fake(fds, n)) return real_poll(fds, n, timeout);
-  return wait_fds(fds, n, timeout < 0 ? -1 : timeout / 1000.0, NULL);
-}
-
-int ppoll(struct pollfd *fds, nfds_t n, const struct timespec *tmo, const sigset_t *mask) {
-  if (!any_fake(fds, n)) return real_ppoll(fds, n, tmo, mask);
+static int fake_ppoll(struct pollfd *fds, nfds_t n, const struct timespec *tmo, const sigset_t *mask) {
+  if (!any_fake(fds, n)) return ppoll(fds, n, tmo, mask);
   return wait_fds(fds, n, tmo ? tmo->tv_sec + tmo->tv_nsec * 1e-9 : -1, mask);
 }
 
-int close(int fd) {
+static int fake_close(int fd) {
   fake *f = get(fd);
   if (f) {
     if (f->bound) unlink(f->path);
     drop_peers(f);
     memset(f, 0, sizeof *f);
   }
-  return real_close(fd);
+  return close(fd);
 }
+
+const hio_sys fakecan_sys = { fake_socket, fake_ioctl, fake_bind, fake_setsockopt,
+                              fake_read, fake_write, fake_ppoll, fake_close };

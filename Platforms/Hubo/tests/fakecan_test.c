@@ -1,8 +1,9 @@
-/* The fake SocketCAN (Platforms/Hubo/tests/fake_socketcan.c, LD_PRELOADed: this program re-executes
- * itself with it) behaves as the kernel's CAN_RAW sockets do for what the Hubo DCM uses: interface
+/* The fake SocketCAN (Platforms/Hubo/tests/fake_socketcan.c, linked in and called through its
+ * system-call table, as the DCM's test build and the emulator call it) behaves as the kernel's CAN_RAW sockets do for what the Hubo DCM uses: interface
  * indices, bind, delivery to the other sockets of the interface only, filters (also inverted),
  * error frames through the error mask, non-blocking reads, poll, bad frame sizes, another
  * process on the bus, an interface taken down and back up. TAP. */
+#include "fake_socketcan.h"
 #include "tap.h"
 
 #include <errno.h>
@@ -21,19 +22,32 @@
 #include <time.h>
 #include <unistd.h>
 
-#ifndef FAKE_CAN_LIB
-#error "FAKE_CAN_LIB must name the shim library"
-#endif
+/* the calls under test */
+static const hio_sys *const C = &fakecan_sys;
 
-static int open_can(const char *name) {
-  const int s = socket(PF_CAN, SOCK_RAW | SOCK_NONBLOCK, CAN_RAW);
-  if (s < 0) return -1;
+/* The index of interface `name` (SIOCGIFINDEX on socket s), or -1 with errno set. */
+static int ifindex(int s, const char *name) {
   struct ifreq ifr;
   memset(&ifr, 0, sizeof ifr);
   snprintf(ifr.ifr_name, sizeof ifr.ifr_name, "%s", name);
-  if (ioctl(s, SIOCGIFINDEX, &ifr) < 0) return -1;
-  struct sockaddr_can a = { .can_family = AF_CAN, .can_ifindex = ifr.ifr_ifindex };
-  if (bind(s, (struct sockaddr *)&a, sizeof a) < 0) return -1;
+  return C->ioctl(s, SIOCGIFINDEX, &ifr) < 0 ? -1 : ifr.ifr_ifindex;
+}
+
+/* poll through the fake's ppoll */
+static int poll_ms(struct pollfd *p, nfds_t n, int ms) {
+  struct timespec ts = { ms / 1000, (long)(ms % 1000) * 1000000L };
+  return C->ppoll(p, n, &ts, NULL);
+}
+
+static int open_can(const char *name) {
+  const int s = C->socket(PF_CAN, SOCK_RAW | SOCK_NONBLOCK, CAN_RAW);
+  if (s < 0) return -1;
+  const int idx = ifindex(s, name);
+  struct sockaddr_can a = { .can_family = AF_CAN, .can_ifindex = idx };
+  if (idx < 0 || C->bind(s, (struct sockaddr *)&a, sizeof a) < 0) {
+    C->close(s);
+    return -1;
+  }
   return s;
 }
 
@@ -43,40 +57,29 @@ static int send_id(int s, canid_t id, int dlc) {
   f.can_id = id;
   f.can_dlc = (uint8_t)dlc;
   for (int i = 0; i < dlc; i++) f.data[i] = (uint8_t)(id + i);
-  return (int)write(s, &f, sizeof f);
+  return (int)C->write(s, &f, sizeof f);
 }
 
 /* id of the next frame within ms, or -1 */
 static long next_id(int s, int ms) {
   struct pollfd p = { .fd = s, .events = POLLIN };
-  if (poll(&p, 1, ms) <= 0 || !(p.revents & POLLIN)) return -1;
+  if (poll_ms(&p, 1, ms) <= 0 || !(p.revents & POLLIN)) return -1;
   struct can_frame f;
-  if (read(s, &f, sizeof f) != sizeof f) return -2;
+  if (C->read(s, &f, sizeof f) != sizeof f) return -2;
   return (long)f.can_id;
 }
 
-int main(int argc, char **argv) {
-  (void)argc;
-  if (!getenv("FAKECAN_ACTIVE")) {
-    char tmpl[] = "/tmp/fakecan_test_XXXXXX";
-    if (!mkdtemp(tmpl)) { perror("mkdtemp"); return 1; }
-    setenv("FAKECAN_DIR", tmpl, 1);
-    setenv("LD_PRELOAD", FAKE_CAN_LIB, 1);
-    setenv("FAKECAN_ACTIVE", "1", 1);
-    unsetenv("FAKECAN_IFACES");
-    execv("/proc/self/exe", argv);
-    perror("execv");
-    return 1;
-  }
-  const char *dir = getenv("FAKECAN_DIR");
-  check(if_nametoindex("can0") == 1 && if_nametoindex("can1") == 2, "can0, can1 have indices 1, 2");
-  const int s0 = socket(PF_CAN, SOCK_RAW, CAN_RAW);
-  struct ifreq ifr;
-  memset(&ifr, 0, sizeof ifr);
-  snprintf(ifr.ifr_name, sizeof ifr.ifr_name, "nope0");
+int main(void) {
+  /* the fake reads its environment at its first call */
+  char dir[] = "/tmp/fakecan_test_XXXXXX";
+  if (!mkdtemp(dir)) { perror("mkdtemp"); return 1; }
+  setenv("FAKECAN_DIR", dir, 1);
+  unsetenv("FAKECAN_IFACES");
+  const int s0 = C->socket(PF_CAN, SOCK_RAW, CAN_RAW);
+  check(s0 >= 0 && ifindex(s0, "can0") == 1 && ifindex(s0, "can1") == 2, "can0, can1 have indices 1, 2");
   errno = 0;
-  check(s0 >= 0 && ioctl(s0, SIOCGIFINDEX, &ifr) < 0 && errno == ENODEV, "SIOCGIFINDEX of a missing interface: ENODEV");
-  close(s0);
+  check(s0 >= 0 && ifindex(s0, "nope0") < 0 && errno == ENODEV, "SIOCGIFINDEX of a missing interface: ENODEV");
+  C->close(s0);
 
   const int a = open_can("can0"), b = open_can("can0"), c = open_can("can1");
   check(a >= 0 && b >= 0 && c >= 0, "three sockets bound (two on can0, one on can1)");
@@ -86,10 +89,10 @@ int main(int argc, char **argv) {
   check(next_id(a, 50) == -1, "not the sender");
   struct can_frame f;
   errno = 0;
-  check(read(b, &f, sizeof f) < 0 && errno == EAGAIN, "non-blocking read of an empty queue: EAGAIN");
+  check(C->read(b, &f, sizeof f) < 0 && errno == EAGAIN, "non-blocking read of an empty queue: EAGAIN");
 
   struct can_filter flt[2] = { { 0x063, CAN_SFF_MASK | CAN_EFF_FLAG | CAN_RTR_FLAG }, { 0x150, 0x7F0 } };
-  check(setsockopt(b, SOL_CAN_RAW, CAN_RAW_FILTER, flt, sizeof flt) == 0, "filters set");
+  check(C->setsockopt(b, SOL_CAN_RAW, CAN_RAW_FILTER, flt, sizeof flt) == 0, "filters set");
   send_id(a, 0x064, 8);
   check(next_id(b, 50) == -1, "a frame no filter passes is not seen (poll says nothing)");
   send_id(a, 0x064, 8);
@@ -99,36 +102,36 @@ int main(int argc, char **argv) {
   send_id(a, CAN_EFF_FLAG | 0x063, 8);
   check(next_id(b, 50) == -1, "the mask's EFF bit keeps an extended 0x063 out");
   struct can_filter inv = { CAN_INV_FILTER | 0x001, CAN_SFF_MASK };
-  setsockopt(b, SOL_CAN_RAW, CAN_RAW_FILTER, &inv, sizeof inv);
+  C->setsockopt(b, SOL_CAN_RAW, CAN_RAW_FILTER, &inv, sizeof inv);
   send_id(a, 0x001, 3);
   send_id(a, 0x002, 2);
   check(next_id(b, 200) == 0x002 && next_id(b, 50) == -1, "an inverted filter passes everything but its id");
-  setsockopt(b, SOL_CAN_RAW, CAN_RAW_FILTER, NULL, 0);
+  C->setsockopt(b, SOL_CAN_RAW, CAN_RAW_FILTER, NULL, 0);
   send_id(a, 0x002, 2);
   check(next_id(b, 50) == -1, "no filters: no frames");
   struct can_filter all = { 0, 0 };
-  setsockopt(b, SOL_CAN_RAW, CAN_RAW_FILTER, &all, sizeof all);
+  C->setsockopt(b, SOL_CAN_RAW, CAN_RAW_FILTER, &all, sizeof all);
 
   send_id(a, CAN_ERR_FLAG | CAN_ERR_PROT, 8);
   check(next_id(b, 50) == -1, "an error frame needs the error mask");
   can_err_mask_t em = CAN_ERR_MASK;
-  check(setsockopt(b, SOL_CAN_RAW, CAN_RAW_ERR_FILTER, &em, sizeof em) == 0, "error mask set");
+  check(C->setsockopt(b, SOL_CAN_RAW, CAN_RAW_ERR_FILTER, &em, sizeof em) == 0, "error mask set");
   send_id(a, CAN_ERR_FLAG | CAN_ERR_PROT, 8);
   check(next_id(b, 200) == (long)(CAN_ERR_FLAG | CAN_ERR_PROT), "with it, the error frame arrives");
 
   errno = 0;
-  check(write(a, "short", 5) < 0 && errno == EINVAL, "a write that is not a struct can_frame: EINVAL");
+  check(C->write(a, "short", 5) < 0 && errno == EINVAL, "a write that is not a struct can_frame: EINVAL");
   memset(&f, 0, sizeof f);
   f.can_dlc = 9;
   errno = 0;
-  check(write(a, &f, sizeof f) < 0 && errno == EINVAL, "DLC 9: EINVAL");
+  check(C->write(a, &f, sizeof f) < 0 && errno == EINVAL, "DLC 9: EINVAL");
 
   /* another process on the bus */
   const pid_t pid = fork();
   if (pid == 0) {
     const int s = open_can("can0");
     for (int k = 0; k < 100; k++) send_id(s, 0x100 + (canid_t)k, 8);
-    close(s);
+    C->close(s);
     _exit(0);
   }
   int got = 0, inorder = 1;
@@ -154,7 +157,7 @@ int main(int argc, char **argv) {
   const int w = send_id(a, 0x063, 8);
   check(w < 0 && errno == ENETDOWN, "interface down: write fails with ENETDOWN");
   struct pollfd p = { .fd = b, .events = POLLIN };
-  check(poll(&p, 1, 100) == 1 && (p.revents & POLLERR), "interface down: poll reports POLLERR");
+  check(poll_ms(&p, 1, 100) == 1 && (p.revents & POLLERR), "interface down: poll reports POLLERR");
   unlink(down);
   nanosleep(&ts, NULL);
   send_id(a, 0x063, 8);
@@ -166,9 +169,9 @@ int main(int argc, char **argv) {
   while (next_id(b, 50) >= 0) n++;
   snprintf(d, sizeof d, "%d of 60", n);
   tap_ok(n == 60, "a burst of 60 frames arrives whole", d);
-  close(a);
-  close(b);
-  close(c);
+  C->close(a);
+  C->close(b);
+  C->close(c);
   char cmd[400];
   snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
   if (system(cmd) != 0) fprintf(stderr, "could not remove %s\n", dir);
