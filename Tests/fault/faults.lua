@@ -9,8 +9,9 @@
 -- robot time until the robot walks again; others: the processes not hit kept working meanwhile.
 -- Faults: kill:motion kill:vision kill:behavior stop:motion stop:vision stop:behavior busy:motion
 -- starve:motion kill:dcm. busy: motion loops for ever ($HRP_FAULT_BUSY names the file that makes it:
--- Player/Motion/main.lua). starve: motion shares one CPU with 3 busy processes for 3 s (runnable, not
--- running: late answers, which must not trip the stall check, only the timeout if one is 0.5 s late).
+-- Player/Motion/main.lua). starve: motion (at nice 19) shares one CPU with 3 busy processes for 3 s
+-- (runnable, not running: late answers, which must not trip the stall check, only the timeout if one
+-- is 0.5 s late).
 -- Reads only shm (an observer, not a lockstep participant) and /proc; the wall clock only for figures.
 local ffi = require('ffi')
 local shm = require('shm')
@@ -97,8 +98,9 @@ local function run_fault(fault)
     assert(BUSY_FILE, 'busy: needs $HRP_FAULT_BUSY (as in faults_test.sh)')
     io.open(BUSY_FILE, 'w'):close()
   elseif kind == 'starve' then
-    -- motion and 3 busy processes on CPU 0 for 3 s: motion runs about a quarter of the time, late
-    os.execute(string.format('taskset -a -p -c 0 %d >/dev/null', pid))
+    -- motion at nice 19 and 3 busy processes on CPU 0 for 3 s: runnable, rarely running, late (nice 0
+    -- again needs CAP_SYS_NICE: without it motion stays at 19, only later still)
+    os.execute(string.format('taskset -a -p -c 0 %d >/dev/null; renice -n 19 -p %d >/dev/null', pid, pid))
     os.execute("for i in 1 2 3; do taskset -c 0 timeout 3 sh -c 'while :; do :; done' & done")
     -- how late motion got (DCM ticks since its last answer), and how late it was at a trip
     local t0 = now()
@@ -109,8 +111,8 @@ local function run_fault(fault)
       if not trip_lag and stats.watchdog_trips[0] ~= trips then trip_lag = lag end
       sleep(0.002)
     end
-    os.execute(string.format('taskset -a -p -c 0-1023 %d >/dev/null 2>&1 || taskset -a -p ffffffff %d >/dev/null',
-      pid, pid))
+    os.execute(string.format('taskset -a -p -c 0-1023 %d >/dev/null 2>&1 || taskset -a -p ffffffff %d >/dev/null; '
+      .. 'renice -n 0 -p %d >/dev/null 2>&1', pid, pid, pid))
   end
   -- the DCM's safe state (motion faults only: the others leave motion answering), in wall time as
   -- seen from here and in the DCM's ticks
