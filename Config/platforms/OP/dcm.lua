@@ -12,9 +12,11 @@ return {
   -- the process (/proc) and goes safe at once. 2, not 1: one late answer is routine on a loaded
   -- machine. A writer that merely was not scheduled burns no CPU and is left to `watchdog` (a busy
   -- machine must not make the robot go limp); one that burnt more than `stall_cpu` s of CPU since
-  -- its last tick_ack is looping: a tick of motion takes about 1 ms of CPU (up to 3 with a GC step).
+  -- its last tick_ack is looping: a tick of motion takes under 1 ms of CPU (1.4 ms at most measured
+  -- over a minute of play: 7000 ticks).  3 ms: twice that, yet a loop that gets a fifth of a CPU trips
+  -- within the 2 cycles.
   stall_cycles = 2,
-  stall_cpu = 0.005,
+  stall_cpu = 0.003,
   safe_hardness = 0.3,          -- safe state: hold the present pose at this fraction of torque
   dead_after = 5,               -- consecutive missed answers before a servo is marked dead
   retry_period = 0.5,           -- s between retries of a dead servo (one short read)
