@@ -92,7 +92,9 @@ end
 -- participant of a lower stage that is due at this tick has finished it, so that what it reads is
 -- that tick's outcome and what it writes is seen by the lower stages on the next tick, whoever runs
 -- faster: a scenario then runs the same every time. Participants of one stage never wait for each
--- other; gives up after `timeout` s of wall time (default 5) on a participant that stopped answering.
+-- other; one that is stopped (SIGSTOP, a debugger) is not waited for (the DCM passes it over too:
+-- Modules/dcm/lockstep.c); gives up after `timeout` s of wall time (default 5) on a participant that
+-- stopped answering otherwise.
 function Participant:settle(tick, timeout)
   local s, me = self.sync, self.slot
   if s.lockstep[0] ~= 1 then return end
@@ -109,7 +111,7 @@ function Participant:settle(tick, timeout)
     for i = 0, s:count('pid') - 1 do
       local p = pid[i]
       if i ~= me and p ~= 0 and s.observer[i] < stage and wake[i] <= tick and done[i] < tick
-         and C.shm_pid_alive(p) == 1 then
+         and C.shm_pid_alive(p) == 1 and C.shm_pid_stopped(p) == 0 then
         waiting = true
         break
       end

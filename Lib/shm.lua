@@ -40,6 +40,7 @@ int shm_cas_i32(volatile int32_t *addr, int32_t expected, int32_t desired);
 uint32_t shm_fetch_add_u32(volatile uint32_t *addr, uint32_t delta);
 double shm_now(void);
 int shm_pid_alive(int pid);
+int shm_pid_stopped(int pid);
 ]]
 
 local C = native.load('shm')
@@ -213,7 +214,8 @@ function Block:begin_write() C.shm_write_begin(self._handle) end
 function Block:end_write() C.shm_write_end(self._handle) end
 
 -- Runs fn(self) until it ran without a concurrent write; returns fn's results. A block whose writer
--- died mid-update is an error naming it and the pid (never a reader spinning for ever).
+-- died (or had its pid reused) or is stopped mid-update is an error naming it and the pid (never a
+-- reader spinning for ever).
 local seq_out = ffi.new('uint32_t[1]')
 function Block:read(fn)
   while true do

@@ -38,6 +38,7 @@ extern "C" {
 #define DCM_ROBOTS_MAX 16    /* robots served by one DCM (the sim's world) */
 #define DCM_NAME_MAX 64      /* names in config (joints, models, robots) */
 #define DCM_JITTER_MAX 4096  /* cycles of one statistics window */
+#define DCM_SYNC_MAX 64      /* participant slots of a sync block looked at (the schema's nsync) */
 
 /* ---------------------------------------------------------------- config */
 
@@ -147,9 +148,37 @@ typedef struct dcm_command {
   uint32_t writer_pid;
 } dcm_command;
 
+/* What /proc says of a process, for telling a stalled writer from a starved one. */
+typedef struct dcm_proc {
+  int state;                     /* the state letter of /proc/PID/stat ('R', 'S', 'T' ...); 0: no such process */
+  unsigned long long start;      /* start time, clock ticks after boot (field 22): a reused pid has another */
+  double cpu;                    /* s on a CPU, all threads (the process's CPU clock, ns resolution) */
+} dcm_proc;
+
+/* Probes pid into *out: 0, or -ESRCH (out->state = 0) when there is no such process. */
+int dcm_proc_probe(int pid, dcm_proc *out);
+/* Only its CPU time (one system call, cheap enough for every cycle); -1 when unknown. */
+double dcm_proc_cpu(int pid);
+
+/* The verdict on a writer that has not acknowledged for a while (dcm_writer_verdict). */
+enum {
+  DCM_WRITER_RUNS = 0,           /* running or runnable, not burning CPU: starved or blocked -- the timeout's case */
+  DCM_WRITER_GONE,               /* no such process, a zombie, or its pid now belongs to another process */
+  DCM_WRITER_STOPPED,            /* SIGSTOP / SIGTSTP, or stopped by a tracer */
+  DCM_WRITER_BUSY                /* more than cpu_limit s of CPU since its last acknowledgement */
+};
+/* registered: the writer as first seen (its start time); at_ack: its CPU time at its last
+ * acknowledgement; now: a probe of this cycle. */
+int dcm_writer_verdict(const dcm_proc *registered, double cpu_at_ack, const dcm_proc *now, double cpu_limit);
+
 typedef struct dcm_guard {
   int nj;
   double timeout;                /* s of the robot clock without a new tick_ack (<= 0: no watchdog) */
+  int stall_cycles;              /* cycles without a new tick_ack before /proc is asked (<= 0: never) */
+  double stall_cpu;              /* s of CPU the writer may burn without acknowledging (a busy loop beyond) */
+  int (*probe)(int pid, dcm_proc *out);   /* dcm_proc_probe (tests give fake ones) */
+  double (*cpu)(int pid);                 /* dcm_proc_cpu */
+  int cause;                     /* the last trip's cause: DCM_WRITER_* (DCM_WRITER_RUNS: the timeout) */
   double safe_hardness;          /* 0..1, held in the safe state */
   int safe;                      /* 1 while holding the safe pose */
   uint32_t trips, refused;       /* watchdog trips; NaN / inf values refused */
@@ -159,6 +188,9 @@ typedef struct dcm_guard {
   double ack_time;
   int armed;                     /* a nonzero tick_ack was seen: somebody drives the robot */
   int watch_pid, watch_fd;       /* the writer watched, its pidfd (-1: none) */
+  dcm_proc registered;           /* the watched writer when first seen (state 0: unknown) */
+  int still;                     /* cycles since tick_ack last moved */
+  double cpu_at_ack;             /* the writer's CPU time when tick_ack last moved (< 0: unknown) */
   double safe_pose[DCM_NJ_MAX];  /* rad, where the safe state moves each joint (NaN: held where it is) */
   double ramp, trip_time;        /* s to move into the safe pose; robot time of the trip */
   double last_pos[DCM_NJ_MAX], last_hard[DCM_NJ_MAX], hold[DCM_NJ_MAX];
@@ -173,6 +205,11 @@ void dcm_guard_set_safe_pose(dcm_guard *g, const double *pose, double ramp);
 /* The safe pose of body `robot` (its robot.lua, the Config layers of $PLATFORM): `safe_pose = { ramp = s,
  * q = { joint = rad, ... } }`; a joint not named (or no safe_pose at all) is NaN: held where it is. */
 int dcm_safe_pose_load(const char *robot, int nj, double *pose, double *ramp, char *err, size_t errlen);
+/* The stall check (Config: stall_cycles, stall_cpu): after `cycles` guard cycles without a new
+ * tick_ack the writer is looked at -- stopped, gone (or its pid reused) or more than `cpu` s of CPU
+ * burnt since its last tick_ack trips at once; a writer that merely did not run is left to the
+ * timeout. Runs in lockstep too, where the timeout does not. */
+void dcm_guard_set_stall(dcm_guard *g, int cycles, double cpu);
 /* Copies a robot's commands out of dcm.actuator (a torn read is retried). */
 void dcm_command_read(const dcm_blk_dcm_actuator *a, int nj, dcm_command *out);
 /* Checks commands in place at robot time `now`: NaN / inf -> the last good value (counted),
@@ -190,6 +227,12 @@ typedef struct dcm_lockstep {
   uint32_t dropped;                     /* participants dropped because they died */
   int start_with;                       /* participants to wait for before the first tick (<= 1: one) */
   int started;                          /* the clock has run (set by dcm_lockstep_wait) */
+  double stall_after;                   /* s of waiting before a pending participant is looked at: a
+                                           stopped one is passed over while it stays stopped (<= 0: never) */
+  uint32_t passed;                      /* times a stopped participant was passed over */
+  int (*probe)(int pid, dcm_proc *out); /* NULL: dcm_proc_probe */
+  /* private: the pid of each slot passed over (0: none) */
+  int32_t skip[DCM_ROBOTS_MAX][DCM_SYNC_MAX];
 } dcm_lockstep;
 
 /* Lockstep on: participants registered with an earlier DCM are consulted from `tick` on. */
@@ -202,7 +245,8 @@ int dcm_lockstep_hold(dcm_lockstep *l, uint32_t tick, void (*idle)(void *ctx, in
                       volatile sig_atomic_t *stop);
 /* Tick `tick` is published (dcm.sensor written): participants may work on it. */
 void dcm_lockstep_publish(dcm_lockstep *l, uint32_t tick);
-/* Waits until every live participant whose wake_tick <= tick reports done_tick >= tick; while
+/* Waits until every live participant whose wake_tick <= tick reports done_tick >= tick (one found
+ * stopped after stall_after s is passed over, and from then on while it stays stopped); while
  * nobody has joined at all, holds the clock (before its first tick: until start_with have joined,
  * so that a run whose participants start at different moments still starts on a defined tick). idle(ctx, alone) runs while waiting. Returns 0, or 1
  * when *stop was set. */
@@ -233,6 +277,8 @@ typedef struct dcm {
   dcm_robot robot[DCM_ROBOTS_MAX];
   double period;                  /* s, control period */
   double watchdog;                /* s without a new tick_ack before the safe state (<= 0: none) */
+  int stall_cycles;               /* cycles without a new tick_ack before the writer is probed (<= 0: never) */
+  double stall_cpu;               /* s of CPU the writer may burn without a tick_ack */
   double safe_hardness;           /* 0..1 */
   double start_hardness;          /* 0..1, every joint's hardness at start (present pose, torque on) */
   int simulated;                  /* 1: the robot clock is tick * period (simulation) */

@@ -6,8 +6,56 @@
 #include <math.h>
 #include <poll.h>
 #include <string.h>
+#include <stdio.h>
+#include <stdlib.h>
 #include <sys/syscall.h>
+#include <time.h>
 #include <unistd.h>
+
+int dcm_proc_probe(int pid, dcm_proc *out) {
+  memset(out, 0, sizeof *out);
+  char path[40], buf[512];
+  snprintf(path, sizeof path, "/proc/%d/stat", pid);
+  FILE *f = pid > 0 ? fopen(path, "r") : NULL;
+  if (!f) return -ESRCH;
+  const size_t n = fread(buf, 1, sizeof buf - 1, f);
+  fclose(f);
+  buf[n] = 0;
+  /* "pid (comm) S ppid ...": comm may hold spaces and parentheses, so fields count from the last ')' */
+  const char *p = strrchr(buf, ')');
+  if (!p || p[1] != ' ' || !p[2]) return -ESRCH;
+  out->state = (unsigned char)p[2];
+  p += 2;
+  for (int field = 3; field < 22 && p; field++) {   /* to field 22, starttime */
+    p = strchr(p, ' ');
+    if (p) p++;
+  }
+  if (p) out->start = strtoull(p, NULL, 10);
+  /* the CPU clock, not utime + stime: those count in clock ticks (10 ms), too coarse for a few ms */
+  clockid_t clk;
+  struct timespec ts;
+  if (clock_getcpuclockid(pid, &clk) == 0 && clock_gettime(clk, &ts) == 0)
+    out->cpu = (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+  return 0;
+}
+
+double dcm_proc_cpu(int pid) {
+  clockid_t clk;
+  struct timespec ts;
+  if (pid <= 0 || clock_getcpuclockid(pid, &clk) != 0 || clock_gettime(clk, &ts) != 0) return -1;
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+int dcm_writer_verdict(const dcm_proc *registered, double cpu_at_ack, const dcm_proc *now, double cpu_limit) {
+  const int st = now->state;
+  if (st == 0 || st == 'Z' || st == 'X' || st == 'x') return DCM_WRITER_GONE;
+  if (registered->state && registered->start != now->start) return DCM_WRITER_GONE;   /* the pid was reused */
+  if (st == 'T' || st == 't') return DCM_WRITER_STOPPED;
+  /* a starved writer burns nothing while it waits for a CPU; one that works without acknowledging
+   * for longer than any tick's work takes is looping */
+  if (cpu_limit > 0 && cpu_at_ack >= 0 && now->cpu - cpu_at_ack > cpu_limit) return DCM_WRITER_BUSY;
+  return DCM_WRITER_RUNS;
+}
 
 void dcm_guard_init(dcm_guard *g, int nj, double timeout, double safe_hardness, const double *present,
                     uint32_t tick_ack) {
@@ -19,6 +67,9 @@ void dcm_guard_init(dcm_guard *g, int nj, double timeout, double safe_hardness, 
    * new one does */
   g->last_ack = tick_ack;
   g->watch_fd = -1;
+  g->probe = dcm_proc_probe;
+  g->cpu = dcm_proc_cpu;
+  g->cpu_at_ack = -1;
   for (int j = 0; j < nj; j++) {
     g->safe_pose[j] = NAN;
     g->last_pos[j] = present[j];
@@ -44,16 +95,27 @@ void dcm_guard_set_safe_pose(dcm_guard *g, const double *pose, double ramp) {
   g->ramp = ramp > 0 ? ramp : 0;
 }
 
+void dcm_guard_set_stall(dcm_guard *g, int cycles, double cpu) {
+  g->stall_cycles = cycles > 0 ? cycles : 0;
+  g->stall_cpu = cpu > 0 ? cpu : 0;
+}
+
+/* A new writer: its pidfd, and what it is (its start time tells its pid reused later). */
+static void watch(dcm_guard *g, int pid) {
+  if (pid == g->watch_pid) return;
+  if (g->watch_fd >= 0) close(g->watch_fd);
+  g->watch_pid = pid;
+  g->watch_fd = (int)syscall(SYS_pidfd_open, pid, 0);
+  if (g->watch_fd < 0 && errno == ESRCH) g->watch_fd = -2;   /* gone already */
+  if (g->stall_cycles > 0) g->probe(pid, &g->registered);
+}
+
 /* Whether the writer `pid` has ended. A pidfd, kept while the pid stays the writer, says so as
  * soon as the process exits; kill(pid, 0) still finds it until its parent reaps it (run_main took
  * 90 ms to on a loaded machine: Tests/fault/dxl_faults_test.sh). Without pidfds: kill(pid, 0). */
 static int writer_dead(dcm_guard *g, int pid) {
-  if (pid != g->watch_pid) {
-    if (g->watch_fd >= 0) close(g->watch_fd);
-    g->watch_pid = pid;
-    g->watch_fd = (int)syscall(SYS_pidfd_open, pid, 0);
-    if (g->watch_fd < 0 && errno == ESRCH) return 1;
-  }
+  watch(g, pid);
+  if (g->watch_fd == -2) return 1;
   if (g->watch_fd < 0) return !shm_pid_alive(pid);
   struct pollfd p = { g->watch_fd, POLLIN, 0 };
   return poll(&p, 1, 0) > 0;
@@ -74,19 +136,38 @@ int dcm_guard_apply(dcm_guard *g, double now, const double *present, dcm_command
     g->last_pos[j] = c->position[j];
     g->last_hard[j] = c->hardness[j];
   }
+  const int pid = (int)c->writer_pid;
   if (c->tick_ack != g->last_ack) {
     g->last_ack = c->tick_ack;
     g->ack_time = now;
     if (c->tick_ack) g->armed = 1;
     g->safe = 0;   /* motion answers (again): its commands go through */
+    g->still = 0;
+    if (g->stall_cycles > 0 && pid) {
+      watch(g, pid);
+      g->cpu_at_ack = g->cpu(pid);
+    }
+  } else if (g->still < 0x7fffffff) {
+    g->still++;
   }
-  if (g->timeout > 0 && g->armed && !g->safe) {
-    /* a writer that died is seen on the next cycle; one that hangs after the timeout */
-    const int dead = c->writer_pid && writer_dead(g, (int)c->writer_pid);
-    if (dead || now - g->ack_time > g->timeout) {
+  if ((g->timeout > 0 || g->stall_cycles > 0) && g->armed && !g->safe) {
+    /* a writer that died is seen on the next cycle; one stopped or looping after stall_cycles; one
+     * that does not run (a loaded machine: it may yet answer) after the timeout */
+    int cause = -1;
+    if (pid && writer_dead(g, pid)) {
+      cause = DCM_WRITER_GONE;
+    } else if (pid && g->stall_cycles > 0 && g->still >= g->stall_cycles) {
+      dcm_proc p;
+      g->probe(pid, &p);
+      const int v = dcm_writer_verdict(&g->registered, g->cpu_at_ack, &p, g->stall_cpu);
+      if (v != DCM_WRITER_RUNS) cause = v;
+    }
+    if (cause < 0 && g->timeout > 0 && now - g->ack_time > g->timeout) cause = DCM_WRITER_RUNS;
+    if (cause >= 0) {
       g->safe = 1;
       g->trips++;
-      g->dead_writer = dead ? (int)c->writer_pid : 0;
+      g->cause = cause;
+      g->dead_writer = cause == DCM_WRITER_GONE ? pid : 0;
       memcpy(g->hold, present, sizeof(double) * (size_t)g->nj);
       g->trip_time = now;
     }

@@ -43,10 +43,18 @@ static int joined(const dcm_lockstep *l, uint32_t tick, int need) {
   return 0;
 }
 
+static int stopped(const dcm_lockstep *l, int pid) {
+  dcm_proc p;
+  return (l->probe ? l->probe : dcm_proc_probe)(pid, &p) == 0 && (p.state == 'T' || p.state == 't');
+}
+
 /* Slot of a participant robot r still waits for at `tick`, or -1. */
-static int pending(const dcm_blk_sync *y, uint32_t tick) {
+static int pending(const dcm_lockstep *l, int r, uint32_t tick) {
+  const dcm_blk_sync *y = l->sync[r];
   for (int k = 0; k < y->n.pid; k++) {
-    if (LOAD32(&y->pid[k]) == 0) continue;
+    const int32_t pid = LOAD32(&y->pid[k]);
+    if (pid == 0) continue;
+    if (k < DCM_SYNC_MAX && l->skip[r][k] == pid) continue;
     if (LOAD32(&y->wake_tick[k]) > tick) continue;
     if (LOAD32(&y->done_tick[k]) >= tick) continue;
     return k;
@@ -78,12 +86,29 @@ int dcm_lockstep_wait(dcm_lockstep *l, uint32_t tick, void (*idle)(void *ctx, in
   l->started = 1;
   for (int r = 0; r < l->n; r++) {
     dcm_blk_sync *y = l->sync[r];
-    double since = shm_now();
+    /* one passed over is waited for again once it runs (SIGCONT): it catches up on the tick */
+    for (int k = 0; k < y->n.pid && k < DCM_SYNC_MAX; k++)
+      if (l->skip[r][k] && (l->skip[r][k] != LOAD32(&y->pid[k]) || !stopped(l, l->skip[r][k]))) l->skip[r][k] = 0;
+    const double start = shm_now();
+    double since = start, looked = 0;
     for (;;) {
       if (stop && *stop) return 1;
       if (idle) idle(ctx, 0);
       const uint32_t c = shm_load_acquire_u32(y->done_count);
-      if (pending(y, tick) < 0) break;
+      const int due = pending(l, r, tick);
+      if (due < 0) break;
+      /* a stopped participant would hold the clock (and every other participant) until it is
+       * continued; the DCM's guard trips when it is the robot's motion (its tick_ack stands still) */
+      if (l->stall_after > 0 && due < DCM_SYNC_MAX && shm_now() - start > l->stall_after &&
+          shm_now() - looked > l->stall_after / 2) {
+        looked = shm_now();
+        const int32_t pid = LOAD32(&y->pid[due]);
+        if (pid != 0 && stopped(l, pid)) {
+          l->skip[r][due] = pid;
+          l->passed++;
+          continue;
+        }
+      }
       if (shm_now() - since > l->drop_after) {
         for (int k = 0; k < y->n.pid; k++) {
           const int pid = y->pid[k];
@@ -99,7 +124,9 @@ int dcm_lockstep_wait(dcm_lockstep *l, uint32_t tick, void (*idle)(void *ctx, in
         for (int k = 0; k < 64; k++) __builtin_ia32_pause();
 #endif
       }
-      if (shm_load_acquire_u32(y->done_count) == c) shm_futex_wait(y->done_count, c, 0.05);
+      double nap = 0.05;
+      if (l->stall_after > 0 && l->stall_after < nap) nap = l->stall_after;   /* to look at a stall in time */
+      if (shm_load_acquire_u32(y->done_count) == c) shm_futex_wait(y->done_count, c, nap);
     }
   }
   return 0;

@@ -207,7 +207,10 @@ int dcm_main(dcm *d, const dcm_driver *drv, void *hw, char *err, size_t errlen) 
     dcm_guard_init(&R->guard, R->nj, d->lockstep ? 0 : d->watchdog, d->safe_hardness, R->sensor.position,
                    *R->actuator.tick_ack);
     dcm_guard_set_safe_pose(&R->guard, g_safe[r].pose, g_safe[r].ramp);
+    dcm_guard_set_stall(&R->guard, d->stall_cycles, d->stall_cpu);
   }
+  /* lockstep waits for a stalled participant no longer than the guard would in real time */
+  d->sync.stall_after = d->stall_cycles > 0 ? d->stall_cycles * d->period : 0;
   write_stats(d, drv, hw);
   if (d->lockstep) dcm_lockstep_start(&d->sync, d->tick);
   else dcm_lockstep_end(&d->sync);
@@ -232,9 +235,17 @@ int dcm_main(dcm *d, const dcm_driver *drv, void *hw, char *err, size_t errlen) 
       dcm_command_read(&R->actuator, R->nj, &R->cmd);
       const int was_safe = R->guard.safe;
       dcm_guard_apply(&R->guard, d->time, R->sensor.position, &R->cmd);
+      const char *into = g_safe[r].has ? "into the safe pose" : "holding the pose";
       if (R->guard.safe && !was_safe && R->guard.dead_writer)
         dcm_log(d, "robot %d: watchdog: the writer (pid %d) died: %s at hardness %.2f", R->id,
-                R->guard.dead_writer, g_safe[r].has ? "into the safe pose" : "holding the pose", d->safe_hardness);
+                R->guard.dead_writer, into, d->safe_hardness);
+      else if (R->guard.safe && !was_safe && R->guard.cause == DCM_WRITER_STOPPED)
+        dcm_log(d, "robot %d: watchdog: the writer (pid %u) is stopped (no new tick_ack for %d cycles): %s at hardness %.2f",
+                R->id, R->cmd.writer_pid, R->guard.still, into, d->safe_hardness);
+      else if (R->guard.safe && !was_safe && R->guard.cause == DCM_WRITER_BUSY)
+        dcm_log(d, "robot %d: watchdog: the writer (pid %u) runs without a new tick_ack (%d cycles, over %.1f ms of CPU): "
+                "%s at hardness %.2f", R->id, R->cmd.writer_pid, R->guard.still, d->stall_cpu * 1e3, into,
+                d->safe_hardness);
       else if (R->guard.safe && !was_safe)
         dcm_log(d, "robot %d: watchdog: no new tick_ack for %.2f s: holding the pose at hardness %.2f", R->id,
                 d->watchdog, d->safe_hardness);

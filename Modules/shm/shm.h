@@ -53,7 +53,8 @@ typedef struct shm_header {
   uint32_t seq;               /* sequence lock: odd while a writer is inside (own cache line) */
   uint32_t writes;            /* completed locked writes; futex word for shm_wait_write */
   int32_t writer_pid;         /* the process inside the sequence lock (0: none, or not yet known) */
-  uint32_t reserved;
+  uint32_t writer_start;      /* its start time (/proc/PID/stat field 22, low 32 bits; 0: unknown): a
+                                 live writer_pid with another start time is a reused pid */
   uint8_t pad1[256 - 128 - 16];
 } shm_header;
 
@@ -131,8 +132,10 @@ void shm_write_end(shm_block *b);
 uint32_t shm_read_begin(const shm_block *b);   /* waits while a write is in progress */
 int shm_read_retry(const shm_block *b, uint32_t seq);  /* 1: the read was torn, read again */
 /* Like shm_read_begin, but a writer that died mid-update (the sequence odd for SHM_STALE_S while its
- * writer_pid is no process) does not hold the reader: -EOWNERDEAD and a message naming the block and
- * the pid ("block 'dcm.sensor' is stale: its writer (pid 1234) died mid-update"). A live writer is
+ * writer_pid is no process, a zombie, or a pid reused by another process) does not hold the reader:
+ * -EOWNERDEAD and a message naming the block and the pid ("block 'dcm.sensor' is stale: its writer
+ * (pid 1234) died mid-update"); nor does one stopped mid-update (SIGSTOP, a debugger: it may never
+ * be continued): -EAGAIN ("... its writer (pid 1234) is stopped mid-update"). A running writer is
  * waited for however long it takes. 0 and *seq otherwise. shm_read_begin itself returns the odd
  * sequence then (the read is of a half-written block; it says so once on stderr) rather than spinning
  * for ever; the next writer takes the lock over and the block is whole again. */
@@ -156,6 +159,12 @@ uint32_t shm_load_acquire_u32(const volatile uint32_t *addr);
 double shm_now(void);
 /* 1 if a process with this pid exists. */
 int shm_pid_alive(int pid);
+/* Its state letter in /proc/PID/stat ('R', 'S', 'T' stopped, 't' stopped by a tracer, 'Z' ...), or
+ * 0 when there is no such process; *start (may be NULL) gets its start time (field 22, clock ticks
+ * after boot), which tells a reused pid. */
+int shm_pid_state(int pid, unsigned long long *start);
+/* 1 if the process is stopped (SIGSTOP, or by a tracer): it does nothing until continued. */
+int shm_pid_stopped(int pid);
 
 #ifdef __cplusplus
 }

@@ -7,6 +7,7 @@
 #include <pthread.h>
 #include <sched.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <sys/syscall.h>
 #include <time.h>
@@ -33,13 +34,45 @@ static void cpu_relax(void) {
 #endif
 }
 
-/* this process's pid for writer_pid, without a system call per write (glibc no longer caches it);
- * a forked child finds it afresh */
+int shm_pid_state(int pid, unsigned long long *start) {
+  if (start) *start = 0;
+  char path[32], buf[512];
+  snprintf(path, sizeof path, "/proc/%d/stat", pid);
+  FILE *f = pid > 0 ? fopen(path, "r") : NULL;
+  if (!f) return 0;
+  const size_t n = fread(buf, 1, sizeof buf - 1, f);
+  fclose(f);
+  buf[n] = 0;
+  const char *p = strrchr(buf, ')');   /* "pid (comm) S ...": comm may hold anything */
+  if (!p || p[1] != ' ' || !p[2]) return 0;
+  const int state = (unsigned char)p[2];
+  p += 2;
+  for (int field = 3; field < 22 && p; field++) {   /* on to field 22, starttime */
+    p = strchr(p, ' ');
+    if (p) p++;
+  }
+  if (start && p) *start = strtoull(p, NULL, 10);
+  return state;
+}
+
+int shm_pid_stopped(int pid) {
+  const int st = shm_pid_state(pid, NULL);
+  return st == 'T' || st == 't';
+}
+
+/* this process's pid and start time for writer_pid / writer_start, without a system call per write
+ * (glibc no longer caches the pid); a forked child finds them afresh */
 static int32_t g_pid;
+static uint32_t g_start;
 static void forget_pid(void) { g_pid = 0; }
 static void __attribute__((constructor)) pid_init(void) { pthread_atfork(NULL, NULL, forget_pid); }
 static int32_t my_pid(void) {
-  if (!g_pid) g_pid = (int32_t)getpid();
+  if (!g_pid) {
+    unsigned long long start;
+    g_pid = (int32_t)getpid();
+    shm_pid_state(g_pid, &start);
+    g_start = (uint32_t)start;
+  }
   return g_pid;
 }
 
@@ -69,7 +102,9 @@ void shm_write_begin(shm_block *b) {
   }
   /* who is inside, for readers that wait too long (shm_read_begin_checked); set once the lock is
    * ours, so a reader that sees 0 knows only that a writer is just coming in */
-  __atomic_store_n(&h->writer_pid, my_pid(), __ATOMIC_RELAXED);
+  const int32_t me = my_pid();
+  __atomic_store_n(&h->writer_start, g_start, __ATOMIC_RELAXED);
+  __atomic_store_n(&h->writer_pid, me, __ATOMIC_RELAXED);
   SEQ_FENCE(seq, __ATOMIC_RELEASE);
 }
 
@@ -85,18 +120,17 @@ void shm_write_end(shm_block *b) {
   if (__atomic_load_n(&h->waiters, __ATOMIC_ACQUIRE)) futex(&h->writes, FUTEX_WAKE, 0x7fffffff, NULL);
 }
 
-/* gone, or a zombie nobody reaped yet (it will never write again either) */
-static int pid_dead(int pid) {
-  if (!shm_pid_alive(pid)) return 1;
-  char path[32], buf[256];
-  snprintf(path, sizeof path, "/proc/%d/stat", pid);
-  FILE *f = fopen(path, "r");
-  if (!f) return 0;
-  const size_t n = fread(buf, 1, sizeof buf - 1, f);
-  fclose(f);
-  buf[n] = 0;
-  const char *p = strrchr(buf, ')');   /* "pid (comm) S ...": comm may hold anything */
-  return p && p[1] == ' ' && p[2] == 'Z';
+/* What became of the writer inside: 'D'ead (gone, a zombie nobody reaped yet, or its pid reused by
+ * another process: none of them will ever write again), 'T' stopped, or 0 running. */
+static int writer_fate(int pid, uint32_t start) {
+  if (!shm_pid_alive(pid)) return 'D';
+  unsigned long long now_start;
+  const int st = shm_pid_state(pid, &now_start);
+  if (st == 0) return shm_pid_alive(pid) ? 0 : 'D';   /* /proc unreadable: kill(0) decides */
+  if (st == 'Z' || st == 'X' || st == 'x') return 'D';
+  if (start != 0 && (uint32_t)now_start != start) return 'D';
+  if (st == 'T' || st == 't') return 'T';
+  return 0;
 }
 
 int shm_read_begin_checked(const shm_block *b, uint32_t *out, char *err, size_t errlen) {
@@ -131,13 +165,16 @@ int shm_read_begin_checked(const shm_block *b, uint32_t *out, char *err, size_t 
       stuck_since = now;
     } else if (now - stuck_since > SHM_STALE_S) {
       const int32_t pid = __atomic_load_n(&h->writer_pid, __ATOMIC_RELAXED);
-      if (pid > 0 && pid_dead(pid) && __atomic_load_n(seq, __ATOMIC_ACQUIRE) == s) {
+      const uint32_t start = __atomic_load_n(&h->writer_start, __ATOMIC_RELAXED);
+      const int fate = pid > 0 ? writer_fate(pid, start) : 0;
+      if (fate && __atomic_load_n(seq, __ATOMIC_ACQUIRE) == s) {
         *out = s;
         if (err && errlen)
-          snprintf(err, errlen, "block '%s' is stale: its writer (pid %d) died mid-update", h->block, (int)pid);
-        return -EOWNERDEAD;
+          snprintf(err, errlen, "block '%s' is stale: its writer (pid %d) %s mid-update", h->block, (int)pid,
+                   fate == 'T' ? "is stopped" : "died");
+        return fate == 'T' ? -EAGAIN : -EOWNERDEAD;
       }
-      stuck_since = now;   /* alive (or not yet known): look again in a while */
+      stuck_since = now;   /* running (or not yet known): look again in a while */
     }
   }
 }

@@ -26,8 +26,8 @@ typedef struct hubo_dcm {
   hubo h;
   double rate;
   const char *iface[HT_BUS_MAX];
-  double start_hardness, watchdog, safe_hardness;
-  int rt_priority;
+  double start_hardness, watchdog, safe_hardness, stall_cpu;
+  int rt_priority, stall_cycles;
   int prepared;                         /* the first open: priority set, the plan logged */
   /* statistics window */
   uint64_t frames0[HT_BUS_MAX], bits0[HT_BUS_MAX];
@@ -38,7 +38,7 @@ static int load_settings(const dcm_config *c, hubo_dcm *o, char *err, size_t n) 
   hubo_settings *s = &o->h.set;
   struct { const char *key; double *v; } nums[] = {
     { "start_hardness", &o->start_hardness }, { "watchdog", &o->watchdog }, { "safe_hardness", &o->safe_hardness },
-    { "compliant_below", &s->compliant_below }, { "retry_period", &s->retry_period },
+    { "stall_cpu", &o->stall_cpu }, { "compliant_below", &s->compliant_below }, { "retry_period", &s->retry_period },
     { "reply_window", &s->reply_window }, { "startup_hold", &s->startup_hold },
     { "home_timeout", &s->home_timeout }, { "reopen_period", &s->reopen_period },
   };
@@ -46,7 +46,7 @@ static int load_settings(const dcm_config *c, hubo_dcm *o, char *err, size_t n) 
     if (dcm_config_num(c, nums[k].key, nums[k].v, err, n) < 0) return -EINVAL;
   struct { const char *key; int *v; } ints[] = {
     { "dead_after", &s->dead_after }, { "status_every", &s->status_every }, { "current_every", &s->current_every },
-    { "rt_priority", &o->rt_priority },
+    { "rt_priority", &o->rt_priority }, { "stall_cycles", &o->stall_cycles },
   };
   for (size_t k = 0; k < sizeof ints / sizeof ints[0]; k++)
     if (dcm_config_int(c, ints[k].key, ints[k].v, err, n) < 0) return -EINVAL;
@@ -81,6 +81,8 @@ static int hubo_configure(void *hw, dcm *d, char *err, size_t n) {
   snprintf(d->robot[0].name, sizeof d->robot[0].name, "%s", o->h.t.name);
   d->period = o->rate > 0 ? 1.0 / o->rate : o->h.t.period;
   d->watchdog = o->watchdog;
+  d->stall_cycles = o->stall_cycles;
+  d->stall_cpu = o->stall_cpu;
   d->safe_hardness = o->safe_hardness;
   d->start_hardness = o->start_hardness;
   d->simulated = 0;

@@ -29,8 +29,8 @@ typedef struct op_dcm {
   /* config */
   op_body body;
   op_bus_settings set;
-  double start_hardness, watchdog, safe_hardness;
-  int latency_timer, rt_priority;
+  double start_hardness, watchdog, safe_hardness, stall_cpu;
+  int latency_timer, rt_priority, stall_cycles;
   /* state */
   int prepared;
   op_bus bus[OP_BUS_MAX];
@@ -56,6 +56,8 @@ static int op_configure(void *hw, dcm *d, char *err, size_t n) {
   if (r == 0) r = dcm_config_load("dcm", dcm_config_robot(rc), "OP", &pc, err, n);
   if (r == 0) r = dcm_config_num(pc, "start_hardness", &o->start_hardness, err, n);
   if (r == 0) r = dcm_config_num(pc, "watchdog", &o->watchdog, err, n);
+  if (r == 0) r = dcm_config_int(pc, "stall_cycles", &o->stall_cycles, err, n);
+  if (r == 0) r = dcm_config_num(pc, "stall_cpu", &o->stall_cpu, err, n);
   if (r == 0) r = dcm_config_num(pc, "safe_hardness", &o->safe_hardness, err, n);
   if (r == 0) r = dcm_config_num(pc, "retry_period", &o->set.retry_period, err, n);
   if (r == 0) r = dcm_config_num(pc, "timeout_margin", &o->set.timeout_margin, err, n);
@@ -75,6 +77,8 @@ static int op_configure(void *hw, dcm *d, char *err, size_t n) {
   snprintf(d->robot[0].name, sizeof d->robot[0].name, "%s", o->body.name);
   d->period = o->rate > 0 ? 1.0 / o->rate : o->body.period;
   d->watchdog = o->watchdog;
+  d->stall_cycles = o->stall_cycles;
+  d->stall_cpu = o->stall_cpu;
   d->safe_hardness = o->safe_hardness;
   d->start_hardness = o->start_hardness;
   d->simulated = 0;

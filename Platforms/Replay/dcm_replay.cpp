@@ -58,6 +58,8 @@ int configure(void *hw, dcm *d, char *err, size_t n) {
   if (r == 0) r = dcm_config_num(pc, "speed", &speed, err, n);
   if (r == 0) r = dcm_config_num(pc, "start_hardness", &d->start_hardness, err, n);
   if (r == 0) r = dcm_config_num(pc, "watchdog", &d->watchdog, err, n);
+  if (r == 0) r = dcm_config_int(pc, "stall_cycles", &d->stall_cycles, err, n);
+  if (r == 0) r = dcm_config_num(pc, "stall_cpu", &d->stall_cpu, err, n);
   if (r == 0) r = dcm_config_num(pc, "safe_hardness", &d->safe_hardness, err, n);
   if (r == 0) r = dcm_config_str(pc, "camera_field", h->camera_field, sizeof h->camera_field, err, n);
   if (r == 0) r = h->nserve = dcm_config_strs(pc, "serve", h->serve, 1, REPLAY_BLOCKS_MAX, err, n);

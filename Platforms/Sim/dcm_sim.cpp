@@ -225,6 +225,8 @@ int sim_configure(void *hw, dcm *d, char *err, size_t errlen) {
   const sim::Params &p = s.params[0];
   d->period = p.period;
   d->watchdog = p.watchdog;
+  d->stall_cycles = p.stall_cycles;
+  d->stall_cpu = p.stall_cpu;
   d->safe_hardness = p.safe_hardness;
   d->start_hardness = p.start_hardness;
   d->simulated = 1;

@@ -63,6 +63,8 @@ struct Params {
   struct Object { double pos[3], size[3], rpy[3]; };
   std::vector<Object> objects;
   double fall_angle = 1.0, watchdog = 0.5, battery = 12;
+  int stall_cycles = 2;                 // the DCM's stall check (sim.lua: stall_cycles, stall_cpu)
+  double stall_cpu = 0.003;
   double safe_hardness = 0.3, start_hardness = 1;   // the DCM's safe state; every joint at start
   std::string name;                   // the body (robot.lua's name)
   std::vector<std::string> joints;    // shm joint order (robot.lua)

@@ -115,6 +115,8 @@ void params_load(const std::string &robot, Params *p) {
   }
   p->fall_angle = s.num("fall_angle");
   p->watchdog = s.num("watchdog");
+  p->stall_cycles = (int)s.num("stall_cycles");
+  p->stall_cpu = s.num("stall_cpu");
   p->safe_hardness = s.num("safe_hardness");
   p->start_hardness = s.num("start_hardness");
   p->battery = s.num("battery");

@@ -125,6 +125,17 @@ local hardness = actuator.hardness
 -- are dead; exit naming the block, and run_main starts a fresh process that opens what is there now
 local check_blocks = require('shm_watch').exit_on_replaced('motion')
 
+-- A fault for Tests/fault/faults_test.sh: with $HRP_FAULT_BUSY naming a file, motion loops for ever
+-- (running, answering nothing: the hung writer the DCM's stall check catches) once the file appears.
+-- It removes the file first, so the motion run_main starts in its place runs normally.
+local busy_file = os.getenv('HRP_FAULT_BUSY')
+local function busy_fault()
+  if busy_file and os.remove(busy_file) then
+    local x = 0
+    while true do x = x + 1 end
+  end
+end
+
 while true do
   local t = Body.wait_tick(tick, 1.0)
   check_blocks()
@@ -202,5 +213,6 @@ while true do
       m.tick[0] = tick
     end)
     participant:done(tick, tick + 1)
+    busy_fault()
   end
 end

@@ -4,6 +4,16 @@
 return {
   start_hardness = 1.0,     -- hardness given to a blank actuator block at start (holds the present pose)
   watchdog = 0.5,           -- s without a new tick_ack from motion before the safe state
+  -- A writer that stopped (SIGSTOP, a debugger), vanished or loops without acknowledging is as
+  -- dangerous as a dead one: after `stall_cycles` DCM cycles without a new tick_ack the DCM looks at
+  -- the process (/proc) and goes safe at once. 2, not 1: one late answer is routine on a loaded
+  -- machine. A writer that merely was not scheduled burns no CPU and is left to `watchdog` (a busy
+  -- machine must not make the robot go limp); one that burnt more than `stall_cpu` s of CPU since
+  -- its last tick_ack is looping: a tick of motion takes under 1 ms of CPU (1.4 ms at most measured
+  -- over a minute of play: 7000 ticks).  3 ms: twice that, yet a loop that gets a fifth of a CPU trips
+  -- within the 2 cycles.
+  stall_cycles = 2,
+  stall_cpu = 0.003,
   safe_hardness = 0.3,      -- safe state: hold the present pose (Hubo boards: position control, see below)
   -- Hubo boards have no per-cycle torque limit (gain override 0x6F is untested in hubo-ach), so a
   -- joint commanded with hardness below `compliant_below` or torque_enable 0 is compliant the way

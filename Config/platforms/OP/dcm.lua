@@ -7,6 +7,16 @@
 return {
   start_hardness = 1.0,         -- hardness commanded when the DCM starts (it holds the current pose)
   watchdog = 0.5,               -- s without a new tick_ack from motion before the safe state
+  -- A writer that stopped (SIGSTOP, a debugger), vanished or loops without acknowledging is as
+  -- dangerous as a dead one: after `stall_cycles` DCM cycles without a new tick_ack the DCM looks at
+  -- the process (/proc) and goes safe at once. 2, not 1: one late answer is routine on a loaded
+  -- machine. A writer that merely was not scheduled burns no CPU and is left to `watchdog` (a busy
+  -- machine must not make the robot go limp); one that burnt more than `stall_cpu` s of CPU since
+  -- its last tick_ack is looping: a tick of motion takes under 1 ms of CPU (1.4 ms at most measured
+  -- over a minute of play: 7000 ticks).  3 ms: twice that, yet a loop that gets a fifth of a CPU trips
+  -- within the 2 cycles.
+  stall_cycles = 2,
+  stall_cpu = 0.003,
   safe_hardness = 0.3,          -- safe state: hold the present pose at this fraction of torque
   dead_after = 5,               -- consecutive missed answers before a servo is marked dead
   retry_period = 0.5,           -- s between retries of a dead servo (one short read)

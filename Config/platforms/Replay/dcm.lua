@@ -19,5 +19,7 @@ return {
   camera_field = 'yuyv',        -- the raw image field the recorder compresses (recorder.camera_field)
   start_hardness = 0.0,         -- nothing to drive
   watchdog = 0,                 -- no servos to protect
+  stall_cycles = 0,             -- no servos to protect
+  stall_cpu = 0,
   safe_hardness = 0.0,
 }

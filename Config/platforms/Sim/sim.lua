@@ -129,6 +129,16 @@ return {
 
   fall_angle = 1.0,              -- rad of torso tilt beyond which the robot counts as fallen
   watchdog = 0.5,                -- s of robot time without tick_ack before holding the pose (real time)
+  -- A writer that stopped (SIGSTOP, a debugger), vanished or loops without acknowledging is as
+  -- dangerous as a dead one: after `stall_cycles` DCM cycles without a new tick_ack the DCM looks at
+  -- the process (/proc) and goes safe at once. 2, not 1: one late answer is routine on a loaded
+  -- machine. A writer that merely was not scheduled burns no CPU and is left to `watchdog` (a busy
+  -- machine must not make the robot go limp); one that burnt more than `stall_cpu` s of CPU since
+  -- its last tick_ack is looping: a tick of motion takes under 1 ms of CPU (1.4 ms at most measured
+  -- over a minute of play: 7000 ticks).  3 ms: twice that, yet a loop that gets a fifth of a CPU trips
+  -- within the 2 cycles.
+  stall_cycles = 2,
+  stall_cpu = 0.003,
   safe_hardness = 0.3,           -- the held pose's hardness after a watchdog trip (as on the OP platform)
   start_hardness = 1.0,          -- every start: each joint holds its present pose at this hardness, torque on
   battery = 12.0,                -- V

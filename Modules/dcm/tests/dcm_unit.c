@@ -1,6 +1,7 @@
 /* Tests of the DCM library (TAP): generated shm bindings, pacing statistics on a fake clock, the
- * guard (NaN refusal, hardness clamp, watchdog trip and resume, dead writer), the lockstep wait
- * (dead participants dropped, live ones waited for), the config reader's errors and the command-line
+ * guard (NaN refusal, hardness clamp, watchdog trip and resume, dead writer; the stall check's
+ * verdicts: stopped, busy, starved, pid reused), the lockstep wait (dead participants dropped,
+ * stopped ones passed over, live ones waited for), the config reader's errors and the command-line
  * parser (strict numbers, ranges, unknown and missing arguments, the usage, the exit statuses). */
 #include "dcm/args.h"
 #include "dcm/dcm.h"
@@ -232,6 +233,170 @@ static void test_guard(void) {
   check(dcm_guard_apply(&g, 100, present, &c) == 0 && g.trips == 0, "timeout 0: no watchdog");
 }
 
+/* ---------------------------------------------------------------- stall check */
+
+/* A fake /proc: what the writer's probe and CPU clock say this cycle. */
+static dcm_proc g_fake;
+static int fake_probe(int pid, dcm_proc *out) {
+  (void)pid;
+  *out = g_fake;
+  return g_fake.state ? 0 : -ESRCH;
+}
+static double fake_cpu(int pid) {
+  (void)pid;
+  return g_fake.state ? g_fake.cpu : -1;
+}
+
+static void test_verdict(void) {
+  const dcm_proc reg = { 'S', 1000, 0.5 };
+  dcm_proc now = { 'R', 1000, 0.501 };
+  check(dcm_writer_verdict(&reg, 0.5, &now, 0.005) == DCM_WRITER_RUNS,
+        "runnable, 1 ms of CPU since its ack: starved, not stalled (the timeout's case)");
+  now.state = 'S';
+  check(dcm_writer_verdict(&reg, 0.5, &now, 0.005) == DCM_WRITER_RUNS, "asleep (blocked, waiting): left to the timeout");
+  now.state = 'T';
+  check(dcm_writer_verdict(&reg, 0.5, &now, 0.005) == DCM_WRITER_STOPPED, "'T' (SIGSTOP): stopped");
+  now.state = 't';
+  check(dcm_writer_verdict(&reg, 0.5, &now, 0.005) == DCM_WRITER_STOPPED, "'t' (a tracer's stop): stopped");
+  now.state = 'R';
+  now.cpu = 0.512;
+  check(dcm_writer_verdict(&reg, 0.5, &now, 0.005) == DCM_WRITER_BUSY, "12 ms of CPU without an ack: a busy loop");
+  check(dcm_writer_verdict(&reg, -1, &now, 0.005) == DCM_WRITER_RUNS, "no CPU time at the ack: no busy verdict");
+  check(dcm_writer_verdict(&reg, 0.5, &now, 0) == DCM_WRITER_RUNS, "stall_cpu 0: no busy verdict");
+  now.cpu = 0.501;
+  now.start = 2000;
+  check(dcm_writer_verdict(&reg, 0.5, &now, 0.005) == DCM_WRITER_GONE, "another start time: the pid was reused");
+  const dcm_proc unknown = { 0, 0, 0 };
+  check(dcm_writer_verdict(&unknown, 0.5, &now, 0.005) == DCM_WRITER_RUNS, "start time unknown at registration: no reuse verdict");
+  now.state = 'Z';
+  now.start = 1000;
+  check(dcm_writer_verdict(&reg, 0.5, &now, 0.005) == DCM_WRITER_GONE, "a zombie: gone");
+  now.state = 0;
+  check(dcm_writer_verdict(&reg, 0.5, &now, 0.005) == DCM_WRITER_GONE, "no such process: gone");
+
+  /* the real probe, on this process and a stopped child */
+  dcm_proc me;
+  check(dcm_proc_probe((int)getpid(), &me) == 0 && me.state == 'R' && me.start > 0 && me.cpu > 0,
+        "the probe reads this process: running, a start time, CPU time");
+  pid_t child = fork();
+  if (child == 0) {
+    for (;;) pause();
+  }
+  kill(child, SIGSTOP);
+  dcm_proc st = { 0, 0, 0 };
+  for (int k = 0; k < 2000 && st.state != 'T'; k++) {   /* the stop lands asynchronously */
+    dcm_proc_probe((int)child, &st);
+    usleep(1000);
+  }
+  check(st.state == 'T' && st.start >= me.start, "the probe sees a SIGSTOPped child as 'T'");
+  kill(child, SIGKILL);
+  waitpid(child, NULL, 0);
+  check(dcm_proc_probe((int)child, &st) == -ESRCH && st.state == 0, "the probe of a reaped pid: -ESRCH");
+}
+
+static void test_stall(void) {
+  enum { NJ = 2 };
+  const double present[NJ] = { 0.1, 0.2 };
+  dcm_guard g;
+  dcm_command c;
+  /* the writer must look alive to the pidfd check: this process's pid, its /proc faked */
+  const uint32_t me = (uint32_t)getpid();
+  dcm_guard_init(&g, NJ, 0.5, 0.3, present, 0);
+  g.probe = fake_probe;
+  g.cpu = fake_cpu;
+  dcm_guard_set_stall(&g, 2, 0.005);
+  g_fake = (dcm_proc){ 'S', 1000, 1.0 };
+  double t = 0;
+  uint32_t ack = 1;
+  for (; ack < 5; ack++, t += 0.008) {
+    fill(&c, NJ, 0.5, 0.8, ack);
+    c.writer_pid = me;
+    dcm_guard_apply(&g, t, present, &c);
+  }
+  /* SIGSTOP: one cycle without an ack is routine, the second looks */
+  g_fake.state = 'T';
+  fill(&c, NJ, 0.5, 0.8, ack - 1);
+  c.writer_pid = me;
+  check(dcm_guard_apply(&g, t, present, &c) == 0, "stopped, one cycle without an ack: no trip yet");
+  fill(&c, NJ, 0.5, 0.8, ack - 1);
+  c.writer_pid = me;
+  check(dcm_guard_apply(&g, t + 0.008, present, &c) == 1 && g.cause == DCM_WRITER_STOPPED && g.trips == 1 &&
+        c.hardness[0] == 0.3, "stopped, the second cycle: tripped (cause: stopped), at the safe hardness");
+  /* SIGCONT: it answers again */
+  g_fake.state = 'S';
+  fill(&c, NJ, 0.5, 0.8, ack++);
+  c.writer_pid = me;
+  check(dcm_guard_apply(&g, t + 0.016, present, &c) == 0, "continued: its answers resume the commands");
+  t += 0.024;
+
+  /* starved: runnable, no CPU burnt: not before the timeout */
+  g_fake = (dcm_proc){ 'R', 1000, 1.0005 };
+  int tripped_at = -1;
+  for (int k = 1; k <= 100 && tripped_at < 0; k++) {
+    fill(&c, NJ, 0.5, 0.8, ack - 1);
+    c.writer_pid = me;
+    if (dcm_guard_apply(&g, t + 0.008 * k, present, &c)) tripped_at = k;
+  }
+  char d[96];
+  snprintf(d, sizeof d, "tripped after %d cycles (%s)", tripped_at, g.cause == DCM_WRITER_RUNS ? "timeout" : "stall");
+  tap_ok(tripped_at > 60 && g.cause == DCM_WRITER_RUNS, "starved (runnable, 0.5 ms of CPU): only the 0.5 s timeout trips",
+         d);
+  g_fake.state = 'S';
+  fill(&c, NJ, 0.5, 0.8, ack++);
+  c.writer_pid = me;
+  dcm_guard_apply(&g, t + 1, present, &c);
+  t += 1.008;
+
+  /* a busy loop: CPU grows, no ack */
+  g_fake.cpu = 2.0;
+  fill(&c, NJ, 0.5, 0.8, ack++);
+  c.writer_pid = me;
+  dcm_guard_apply(&g, t, present, &c);   /* the ack: CPU 2.0 s */
+  g_fake.state = 'R';
+  g_fake.cpu = 2.008;
+  fill(&c, NJ, 0.5, 0.8, ack - 1);
+  c.writer_pid = me;
+  check(dcm_guard_apply(&g, t + 0.008, present, &c) == 0, "busy, one cycle: no trip yet");
+  g_fake.cpu = 2.016;
+  fill(&c, NJ, 0.5, 0.8, ack - 1);
+  c.writer_pid = me;
+  check(dcm_guard_apply(&g, t + 0.016, present, &c) == 1 && g.cause == DCM_WRITER_BUSY,
+        "busy: 16 ms of CPU in 2 cycles without an ack trips (cause: busy)");
+  g_fake = (dcm_proc){ 'S', 1000, 2.02 };
+  fill(&c, NJ, 0.5, 0.8, ack++);
+  c.writer_pid = me;
+  dcm_guard_apply(&g, t + 0.024, present, &c);
+  t += 0.032;
+
+  /* the pid now belongs to another process (another start time) */
+  g_fake.start = 5000;
+  fill(&c, NJ, 0.5, 0.8, ack - 1);
+  c.writer_pid = me;
+  dcm_guard_apply(&g, t, present, &c);
+  fill(&c, NJ, 0.5, 0.8, ack - 1);
+  c.writer_pid = me;
+  check(dcm_guard_apply(&g, t + 0.008, present, &c) == 1 && g.cause == DCM_WRITER_GONE && g.dead_writer == (int)me,
+        "a reused pid (another start time than at registration): gone");
+
+  /* lockstep: no timeout, the stall check still trips a stopped writer */
+  dcm_guard_init(&g, NJ, 0, 0.3, present, 0);
+  g.probe = fake_probe;
+  g.cpu = fake_cpu;
+  dcm_guard_set_stall(&g, 2, 0.005);
+  g_fake = (dcm_proc){ 'S', 1000, 1.0 };
+  fill(&c, NJ, 0.5, 0.8, 3);
+  c.writer_pid = me;
+  dcm_guard_apply(&g, 0, present, &c);
+  g_fake.state = 'T';
+  int trips = 0;
+  for (int k = 1; k <= 3; k++) {
+    fill(&c, NJ, 0.5, 0.8, 3);
+    c.writer_pid = me;
+    trips += dcm_guard_apply(&g, 0.008 * k, present, &c);
+  }
+  check(trips == 2 && g.cause == DCM_WRITER_STOPPED, "timeout 0 (lockstep): a stopped writer still trips after 2 cycles");
+}
+
 /* ---------------------------------------------------------------- lockstep */
 
 /* idle hook of the start_with test: asks the wait to stop after a few calls */
@@ -327,6 +492,41 @@ static void test_lockstep(void) {
   y.pid[0] = 0;
   volatile sig_atomic_t stop = 1;
   check(dcm_lockstep_wait(&l, 8, NULL, NULL, &stop) == 1, "nobody joined: the wait holds the clock until stopped");
+
+  /* a stopped participant: passed over after stall_after, waited for again once continued */
+  pid_t stopped = fork();
+  if (stopped == 0) {
+    for (;;) pause();
+  }
+  kill(stopped, SIGSTOP);
+  y.pid[0] = (int32_t)stopped;
+  y.done_tick[0] = 8;
+  y.wake_tick[0] = 9;
+  l.stall_after = 0.02;
+  dcm_lockstep_publish(&l, 9);
+  t0 = shm_now();
+  rc = dcm_lockstep_wait(&l, 9, NULL, NULL, NULL);
+  dt = shm_now() - t0;
+  snprintf(d, sizeof d, "after %.3f s, passed %u", dt, l.passed);
+  tap_ok(rc == 0 && l.passed == 1 && y.pid[0] == (int32_t)stopped, "a stopped participant is passed over (its slot kept)",
+         d);
+  rc = dcm_lockstep_wait(&l, 10, NULL, NULL, NULL);
+  check(rc == 0 && l.passed == 1, "and from then on while it stays stopped, without waiting again");
+  kill(stopped, SIGCONT);
+  const pid_t answer = finish_later(&y, 11, 0.1);
+  for (int k = 0; k < 2000; k++) {   /* the continue lands asynchronously */
+    dcm_proc p;
+    if (dcm_proc_probe((int)stopped, &p) == 0 && p.state != 'T') break;
+    usleep(1000);
+  }
+  rc = dcm_lockstep_wait(&l, 11, NULL, NULL, NULL);
+  const uint32_t done11 = __atomic_load_n(&y.done_tick[0], __ATOMIC_ACQUIRE);
+  waitpid(answer, NULL, 0);
+  check(rc == 0 && done11 == 11, "continued: it is waited for again");
+  kill(stopped, SIGKILL);
+  waitpid(stopped, NULL, 0);
+  y.pid[0] = 0;
+  l.stall_after = 0;
 
   /* start_with: a fresh clock waits for that many participants; once it ran, one is enough */
   dcm_lockstep f;
@@ -694,6 +894,8 @@ int main(void) {
   test_blocks();
   test_pacing();
   test_guard();
+  test_verdict();
+  test_stall();
   test_lockstep();
   remove_blocks();
   test_config();

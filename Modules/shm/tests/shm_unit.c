@@ -290,6 +290,49 @@ static void test_dead_writer(void) {
   printf("# a live writer inside: the reader waited %.0f ms\n", 1e3 * dt);
   check(rc == 0 && !(q & 1u) && dt > 0.05, "a live writer that takes long is waited for");
   waitpid(pid, NULL, 0);
+
+  /* a writer stopped inside (SIGSTOP: it may never be continued) does not hold a reader either */
+  pid = fork();
+  if (pid == 0) {
+    shm_block *wb = NULL;
+    char e2[256];
+    shm_block_open(s, "t.a", robot, 0, &wb, e2, sizeof e2);
+    shm_write_begin(wb);
+    raise(SIGSTOP);
+    shm_write_end(wb);
+    _exit(0);
+  }
+  while (!shm_pid_stopped(pid)) shm_sleep_s(0.001);
+  t0 = shm_now();
+  rc = shm_read_begin_checked(b, &q, why, sizeof why);
+  dt = shm_now() - t0;
+  snprintf(pidname, sizeof pidname, "pid %d", (int)pid);
+  printf("# %s (%.0f ms)\n", why, 1e3 * dt);
+  check(rc == -EAGAIN && (q & 1u) && strstr(why, pidname) && strstr(why, "stopped") && dt < 1.0,
+        "a reader of a block whose writer is stopped mid-update returns: -EAGAIN, the pid named");
+  kill(pid, SIGCONT);
+  waitpid(pid, NULL, 0);
+  check(shm_read_begin_checked(b, &q, why, sizeof why) == 0, "continued, it finishes: the block reads whole again");
+
+  /* a writer whose pid now belongs to another process (here: this one, with another start time) */
+  shm_header *h = shm_block_header(b);
+  unsigned long long my_start = 0;
+  check(shm_pid_state((int)getpid(), &my_start) == 'R' && my_start > 0, "shm_pid_state: this process runs, a start time");
+  h->seq++;
+  h->writer_pid = (int32_t)getpid();
+  h->writer_start = (uint32_t)my_start + 1;
+  t0 = shm_now();
+  rc = shm_read_begin_checked(b, &q, why, sizeof why);
+  dt = shm_now() - t0;
+  check(rc == -EOWNERDEAD && dt < 1.0, "a live writer_pid with another start time (a reused pid) is a dead writer");
+  h->writer_start = (uint32_t)my_start;
+  h->writer_pid = 0;
+  h->seq++;
+  check(shm_read_begin_checked(b, &q, why, sizeof why) == 0, "the block reads whole again");
+  shm_write_begin(b);
+  check(h->writer_pid == (int32_t)getpid() && h->writer_start == (uint32_t)my_start,
+        "a writer inside leaves its pid and start time in the header");
+  shm_write_end(b);
   shm_block_close(b);
   shm_block_unlink("t.a", robot);
   shm_schema_free(s);
