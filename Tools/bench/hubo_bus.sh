@@ -7,7 +7,6 @@
 #   Tools/bench/hubo_bus.sh [SECONDS per run, default 5]
 set -u
 cd "$(dirname "$0")/../.."
-TOP=$PWD
 source Tests/hubo/tree.sh
 export PLATFORM=Hubo ROBOT=hubo2plus
 export ROBOT_ID="${ROBOT_ID:-8650}"
