@@ -23,6 +23,19 @@ NATIVE_DIRS := $(sort $(dir $(wildcard Modules/*/Makefile Platforms/*/Makefile P
                                        Run/*/Makefile Tools/*/Makefile)))
 DEPS_STAMP := $(BUILD)/.deps-ok
 
+# Each dependency file (.d, from -MMD) names first the source its target was built from. After a pull that
+# moved a source, that old path has no rule and make would stop, so a .d naming a source that no longer
+# exists is dropped before anything is built (its target is rebuilt from its new place).
+STALE_DEPS := $(shell find $(BUILD) -name '*.d' -exec awk ' \
+  FNR == 1 { want = 1; seen = 0 } \
+  want { line = $$0; \
+    if (!seen) { i = index(line, ":"); if (!i) next; line = substr(line, i + 1); seen = 1 } \
+    gsub(/\\/, " ", line); n = split(line, w, " "); \
+    if (n > 0) { want = 0; if ((getline tmp < w[1]) < 0) print FILENAME; else close(w[1]) } }' {} + 2>/dev/null)
+ifneq ($(STALE_DEPS),)
+$(shell rm -f $(STALE_DEPS))
+endif
+
 # C and C++ tests live beside the code they test, in that part's tests/ folder (Modules/<m>/tests/,
 # Platforms/<p>/tests/, Run/recorder/tests/), built by its Makefile into build/tests/, where
 # Tests/run_all.sh runs every program; the libFuzzer targets sit there too. Tests/ holds the Lua specs,

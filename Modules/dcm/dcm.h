@@ -182,6 +182,7 @@ typedef struct dcm_guard {
   double safe_hardness;          /* 0..1, held in the safe state */
   int safe;                      /* 1 while holding the safe pose */
   uint32_t trips, refused;       /* watchdog trips; NaN / inf values refused */
+  uint32_t trip_lag;             /* cycles since the writer's last tick_ack at the last trip */
   int dead_writer;               /* the last trip's cause: the writer's pid that died (0: the timeout) */
   /* private */
   uint32_t last_ack;

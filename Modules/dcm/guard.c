@@ -166,6 +166,7 @@ int dcm_guard_apply(dcm_guard *g, double now, const double *present, dcm_command
     if (cause >= 0) {
       g->safe = 1;
       g->trips++;
+      g->trip_lag = (uint32_t)g->still;
       g->cause = cause;
       g->dead_writer = cause == DCM_WRITER_GONE ? pid : 0;
       memcpy(g->hold, present, sizeof(double) * (size_t)g->nj);

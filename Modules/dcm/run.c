@@ -98,6 +98,7 @@ static void write_stats(dcm *d, const dcm_driver *drv, void *hw) {
     *s->missed_cycles = d->pacer.missed;
     *s->nan_commands = g->refused;
     *s->watchdog_trips = g->trips;
+    *s->watchdog_lag = g->trip_lag;
     if (drv->stats) drv->stats(hw, d, r, s);
     shm_write_end(s->blk);
   }

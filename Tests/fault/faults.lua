@@ -4,7 +4,8 @@
 -- fault (in a random order for SEED) into run_main's children and prints one line per fault:
 --   fault kill:motion safe_ms=9.8 safe_cycles=1 walking_after=3.10 wall=2.95 others=ok fallen=0 pids=...
 -- safe_ms: wall time from the fault to the DCM's safe state (dcm.stats.watchdog_trips), as this poller
--- sees it (every 2 ms); safe_cycles: the DCM's ticks from the fault to the trip; starve adds max_lag
+-- sees it (every 2 ms); safe_cycles: the DCM's ticks from the fault to the trip as seen here; dcm_lag: the
+-- DCM's own count of its cycles from motion's last answer to the trip (dcm.stats.watchdog_lag); starve adds max_lag
 -- (the most DCM ticks motion's answer was behind) and trip_lag (how far behind at a trip); walking_after:
 -- robot time until the robot walks again; others: the processes not hit kept working meanwhile.
 -- Faults: kill:motion kill:vision kill:behavior stop:motion stop:vision stop:behavior busy:motion
@@ -118,11 +119,11 @@ local function run_fault(fault)
   -- seen from here and in the DCM's ticks
   -- (busy: from motion's last answer, the moment it starts looping, not from the file's creation,
   -- which it sees only at the end of its next tick)
-  local trip_tick, last_ack, last_ack_t = nil, actuator.tick_ack[0], now()
+  local trip_tick, dcm_lag, last_ack, last_ack_t = nil, nil, actuator.tick_ack[0], now()
   local safe = wait_for(function()
     if actuator.tick_ack[0] ~= last_ack then last_ack, last_ack_t = actuator.tick_ack[0], now() end
     if stats.watchdog_trips[0] == trips then return false end
-    trip_tick = sensor.tick[0]
+    trip_tick, dcm_lag = sensor.tick[0], stats.watchdog_lag[0]
     return true
   end, name == 'motion' and 3 or 0.6)
   if safe and kind == 'busy' then
@@ -148,9 +149,9 @@ local function run_fault(fault)
     local fresh = motion.tick[0] > tick0 + 10 and (name ~= 'dcm' or sensor.dcm_pid[0] ~= pid)
     return renewed and fresh and walking()
   end, 40)
-  print(string.format('fault %s pid=%d safe_ms=%s safe_cycles=%s%s walking_after=%s wall=%s others=%s fallen=%d '
-    .. 'trips=%d pids=%s->%s', fault, pid, safe and string.format('%.1f', safe * 1e3) or 'none',
-    trip_tick and tostring(trip_tick - tick_fault) or 'none',
+  print(string.format('fault %s pid=%d safe_ms=%s safe_cycles=%s dcm_lag=%s%s walking_after=%s wall=%s '
+    .. 'others=%s fallen=%d trips=%d pids=%s->%s', fault, pid, safe and string.format('%.1f', safe * 1e3) or 'none',
+    trip_tick and tostring(trip_tick - tick_fault) or 'none', dcm_lag and tostring(dcm_lag) or 'none',
     kind == 'starve' and string.format(' max_lag=%d trip_lag=%s', max_lag, trip_lag or 'none') or '',
     back and string.format('%.2f', sensor.time[0] - t_robot) or 'never',
     back and string.format('%.2f', now() - t_wall) or 'never', others, fell,

@@ -1,3 +1,4 @@
+-- luacheck: std +busted
 -- The soak's memory check (Tests/soak/rss_check.lua) on made-up series, sampled every 30 s from 210 s to
 -- 600 s as the 10-minute soak's are after its warm-up: a leak of 1 kB per simulated second fails it,
 -- one-time steps and a garbage collector's sawtooth do not.
