@@ -23,17 +23,29 @@ NATIVE_DIRS := $(sort $(dir $(wildcard Modules/*/Makefile Platforms/*/Makefile P
                                        Run/*/Makefile Tools/*/Makefile)))
 DEPS_STAMP := $(BUILD)/.deps-ok
 
-# Each dependency file (.d, from -MMD) names first the source its target was built from. After a pull that
-# moved a source, that old path has no rule and make would stop, so a .d naming a source that no longer
-# exists is dropped before anything is built (its target is rebuilt from its new place).
-STALE_DEPS := $(shell find $(BUILD) -name '*.d' -exec awk ' \
+# Each dependency file (.d, from -MMD) names first the source its target was built from: an absolute
+# path, or one relative to its part's folder (the sub-make's). After a pull that moved a source, that
+# old path has no rule and make would stop, so a .d naming a source found in no part is dropped before
+# anything is built (its target is rebuilt from its new place); the others stay, so a changed header
+# rebuilds what includes it.
+STALE_DEPS := $(shell find $(BUILD) -name '*.d' -exec awk -v dirs='$(NATIVE_DIRS)' ' \
+  function exists(f) { if ((getline tmp < f) < 0) return 0; close(f); return 1 } \
+  function found(f,   k, nd, d) { if (f ~ /^\//) return exists(f); \
+    nd = split(dirs, d, " "); for (k = 1; k <= nd; k++) if (exists(d[k] f)) return 1; return 0 } \
   FNR == 1 { want = 1; seen = 0 } \
   want { line = $$0; \
     if (!seen) { i = index(line, ":"); if (!i) next; line = substr(line, i + 1); seen = 1 } \
     gsub(/\\/, " ", line); n = split(line, w, " "); \
-    if (n > 0) { want = 0; if ((getline tmp < w[1]) < 0) print FILENAME; else close(w[1]) } }' {} + 2>/dev/null)
+    if (n > 0) { want = 0; if (!found(w[1])) print FILENAME } }' {} + 2>/dev/null)
 ifneq ($(STALE_DEPS),)
 $(shell rm -f $(STALE_DEPS))
+endif
+# An object without its .d (built before, or its .d dropped above) cannot know which headers it read:
+# it is rebuilt.
+UNTRACKED_OBJS := $(shell find $(BUILD)/obj -name '*.o' 2>/dev/null | while read -r o; do \
+  [ -f "$${o%.o}.d" ] || echo "$$o"; done)
+ifneq ($(UNTRACKED_OBJS),)
+$(shell rm -f $(UNTRACKED_OBJS))
 endif
 
 # C and C++ tests live beside the code they test, in that part's tests/ folder (Modules/<m>/tests/,
