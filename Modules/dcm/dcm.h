@@ -171,6 +171,15 @@ enum {
  * acknowledgement; now: a probe of this cycle. */
 int dcm_writer_verdict(const dcm_proc *registered, double cpu_at_ack, const dcm_proc *now, double cpu_limit);
 
+/* A body's safe state (robot.lua `safe_pose`): on a trip each joint moves from where it is to q[j]
+ * (rad; NaN: held where it is) within `ramp` s, smoothly. The joints with an angle are held at most at
+ * `hardness` (NaN: the platform's safe_hardness, as every other joint is): a body whose motors cannot
+ * carry it in its crouch at the platform's figure names a higher one. */
+typedef struct {
+  double q[DCM_NJ_MAX];
+  double ramp, hardness;
+} dcm_safe_pose;
+
 typedef struct dcm_guard {
   int nj;
   double timeout;                /* s of the robot clock without a new tick_ack (<= 0: no watchdog) */
@@ -192,20 +201,20 @@ typedef struct dcm_guard {
   dcm_proc registered;           /* the watched writer when first seen (state 0: unknown) */
   int still;                     /* cycles since tick_ack last moved */
   double cpu_at_ack;             /* the writer's CPU time when tick_ack last moved (< 0: unknown) */
-  double safe_pose[DCM_NJ_MAX];  /* rad, where the safe state moves each joint (NaN: held where it is) */
-  double ramp, trip_time;        /* s to move into the safe pose; robot time of the trip */
+  dcm_safe_pose pose;            /* where the safe state moves the joints, how fast, how hard */
+  double trip_time;              /* robot time of the trip */
   double last_pos[DCM_NJ_MAX], last_hard[DCM_NJ_MAX], hold[DCM_NJ_MAX];
 } dcm_guard;
 
 /* present: the pose held until the first commands (nj rad). */
 void dcm_guard_init(dcm_guard *g, int nj, double timeout, double safe_hardness, const double *present,
                     uint32_t tick_ack);
-/* The safe state's pose: on a trip the joints move from where they are to pose (nj rad; NaN: that
- * joint is held where it is; NULL: every joint, the default) within `ramp` s (smoothly), and hold it. */
-void dcm_guard_set_safe_pose(dcm_guard *g, const double *pose, double ramp);
+/* The safe state's pose (NULL: every joint held where it is at the safe hardness, the default). */
+void dcm_guard_set_safe_pose(dcm_guard *g, const dcm_safe_pose *pose);
 /* The safe pose of body `robot` (its robot.lua, the Config layers of $PLATFORM): `safe_pose = { ramp = s,
- * q = { joint = rad, ... } }`; a joint not named (or no safe_pose at all) is NaN: held where it is. */
-int dcm_safe_pose_load(const char *robot, int nj, double *pose, double *ramp, char *err, size_t errlen);
+ * [hardness = 0..1,] q = { joint = rad, ... } }`; a joint not named (or no safe_pose at all) is NaN:
+ * held where it is. Returns the number of joints with an angle, or < 0 (err names file and key). */
+int dcm_safe_pose_load(const char *robot, int nj, dcm_safe_pose *out, char *err, size_t errlen);
 /* The stall check (Config: stall_cycles, stall_cpu): after `cycles` guard cycles without a new
  * tick_ack the writer is looked at -- stopped, gone (or its pid reused) or more than `cpu` s of CPU
  * burnt since its last tick_ack trips at once; a writer that merely did not run is left to the

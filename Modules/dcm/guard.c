@@ -70,8 +70,8 @@ void dcm_guard_init(dcm_guard *g, int nj, double timeout, double safe_hardness, 
   g->probe = dcm_proc_probe;
   g->cpu = dcm_proc_cpu;
   g->cpu_at_ack = -1;
+  dcm_guard_set_safe_pose(g, NULL);
   for (int j = 0; j < nj; j++) {
-    g->safe_pose[j] = NAN;
     g->last_pos[j] = present[j];
     g->last_hard[j] = 0;
   }
@@ -90,9 +90,11 @@ void dcm_command_read(const dcm_blk_dcm_actuator *a, int nj, dcm_command *out) {
   } while (shm_read_retry(a->blk, seq));
 }
 
-void dcm_guard_set_safe_pose(dcm_guard *g, const double *pose, double ramp) {
-  for (int j = 0; j < g->nj; j++) g->safe_pose[j] = pose ? pose[j] : NAN;
-  g->ramp = ramp > 0 ? ramp : 0;
+void dcm_guard_set_safe_pose(dcm_guard *g, const dcm_safe_pose *pose) {
+  for (int j = 0; j < DCM_NJ_MAX; j++) g->pose.q[j] = pose && j < g->nj ? pose->q[j] : NAN;
+  g->pose.ramp = pose && pose->ramp > 0 ? pose->ramp : 0;
+  const double h = pose ? pose->hardness : NAN;
+  g->pose.hardness = isfinite(h) ? (h < 0 ? 0 : h > 1 ? 1 : h) : NAN;
 }
 
 void dcm_guard_set_stall(dcm_guard *g, int cycles, double cpu) {
@@ -175,13 +177,15 @@ int dcm_guard_apply(dcm_guard *g, double now, const double *present, dcm_command
   }
   if (g->safe) {
     /* from the pose of the trip into the safe pose: a smooth step over `ramp` s */
-    double s = g->ramp > 0 ? (now - g->trip_time) / g->ramp : 1;
+    double s = g->pose.ramp > 0 ? (now - g->trip_time) / g->pose.ramp : 1;
     s = s < 0 ? 0 : s > 1 ? 1 : s;
     s = s * s * (3 - 2 * s);
+    const double posed_hardness = isfinite(g->pose.hardness) ? g->pose.hardness : g->safe_hardness;
     for (int j = 0; j < g->nj; j++) {
-      const double to = g->safe_pose[j];
+      const double to = g->pose.q[j];
       c->position[j] = isfinite(to) ? g->hold[j] + (to - g->hold[j]) * s : g->hold[j];
-      if (c->hardness[j] > g->safe_hardness) c->hardness[j] = g->safe_hardness;
+      const double cap = isfinite(to) ? posed_hardness : g->safe_hardness;
+      if (c->hardness[j] > cap) c->hardness[j] = cap;
     }
   }
   return g->safe;

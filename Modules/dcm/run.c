@@ -151,7 +151,17 @@ static void idle(void *ctx, int alone) {
 }
 
 /* each robot's safe pose (robot.lua safe_pose), read with the configuration, before any I/O */
-static struct { double pose[DCM_NJ_MAX], ramp; int has; } g_safe[DCM_ROBOTS_MAX];
+static struct { dcm_safe_pose pose; int has; } g_safe[DCM_ROBOTS_MAX];
+
+/* what the safe state does, for the log: "into the safe pose at hardness 1.00, the rest held at 0.30" */
+static void safe_state_words(char *out, size_t len, const dcm_safe_pose *pose, int has, double safe_hardness) {
+  if (!has)
+    snprintf(out, len, "holding the pose at hardness %.2f", safe_hardness);
+  else if (isfinite(pose->hardness))
+    snprintf(out, len, "into the safe pose at hardness %.2f, the rest held at %.2f", pose->hardness, safe_hardness);
+  else
+    snprintf(out, len, "into the safe pose at hardness %.2f", safe_hardness);
+}
 
 static int setup(dcm *d, const dcm_driver *drv, void *hw, char *err, size_t errlen) {
   int rc = drv->configure(hw, d, err, errlen);
@@ -165,10 +175,8 @@ static int setup(dcm *d, const dcm_driver *drv, void *hw, char *err, size_t errl
       snprintf(err, errlen, "robot '%s': %d joints (1 to %d)", d->robot[r].name, d->robot[r].nj, DCM_NJ_MAX);
       return -EINVAL;
     }
-    if ((rc = dcm_safe_pose_load(d->robot[r].name, d->robot[r].nj, g_safe[r].pose, &g_safe[r].ramp, err, errlen)) < 0)
-      return rc;
-    g_safe[r].has = 0;
-    for (int j = 0; j < d->robot[r].nj; j++) g_safe[r].has |= isfinite(g_safe[r].pose[j]);
+    if ((rc = dcm_safe_pose_load(d->robot[r].name, d->robot[r].nj, &g_safe[r].pose, err, errlen)) < 0) return rc;
+    g_safe[r].has = rc > 0;
   }
   if ((rc = open_blocks(d, err, errlen)) < 0) return rc;
   /* open: a missing bus is waited for (the adapter is plugged in later) */
@@ -207,7 +215,7 @@ int dcm_main(dcm *d, const dcm_driver *drv, void *hw, char *err, size_t errlen) 
     dcm_robot *R = &d->robot[r];
     dcm_guard_init(&R->guard, R->nj, d->lockstep ? 0 : d->watchdog, d->safe_hardness, R->sensor.position,
                    *R->actuator.tick_ack);
-    dcm_guard_set_safe_pose(&R->guard, g_safe[r].pose, g_safe[r].ramp);
+    dcm_guard_set_safe_pose(&R->guard, &g_safe[r].pose);
     dcm_guard_set_stall(&R->guard, d->stall_cycles, d->stall_cpu);
   }
   /* lockstep waits for a stalled participant no longer than the guard would in real time */
@@ -236,20 +244,18 @@ int dcm_main(dcm *d, const dcm_driver *drv, void *hw, char *err, size_t errlen) 
       dcm_command_read(&R->actuator, R->nj, &R->cmd);
       const int was_safe = R->guard.safe;
       dcm_guard_apply(&R->guard, d->time, R->sensor.position, &R->cmd);
-      const char *into = g_safe[r].has ? "into the safe pose" : "holding the pose";
+      char into[96];
+      safe_state_words(into, sizeof into, &g_safe[r].pose, g_safe[r].has, d->safe_hardness);
       if (R->guard.safe && !was_safe && R->guard.dead_writer)
-        dcm_log(d, "robot %d: watchdog: the writer (pid %d) died: %s at hardness %.2f", R->id,
-                R->guard.dead_writer, into, d->safe_hardness);
+        dcm_log(d, "robot %d: watchdog: the writer (pid %d) died: %s", R->id, R->guard.dead_writer, into);
       else if (R->guard.safe && !was_safe && R->guard.cause == DCM_WRITER_STOPPED)
-        dcm_log(d, "robot %d: watchdog: the writer (pid %u) is stopped (no new tick_ack for %d cycles): %s at hardness %.2f",
-                R->id, R->cmd.writer_pid, R->guard.still, into, d->safe_hardness);
+        dcm_log(d, "robot %d: watchdog: the writer (pid %u) is stopped (no new tick_ack for %d cycles): %s",
+                R->id, R->cmd.writer_pid, R->guard.still, into);
       else if (R->guard.safe && !was_safe && R->guard.cause == DCM_WRITER_BUSY)
         dcm_log(d, "robot %d: watchdog: the writer (pid %u) runs without a new tick_ack (%d cycles, over %.1f ms of CPU): "
-                "%s at hardness %.2f", R->id, R->cmd.writer_pid, R->guard.still, d->stall_cpu * 1e3, into,
-                d->safe_hardness);
+                "%s", R->id, R->cmd.writer_pid, R->guard.still, d->stall_cpu * 1e3, into);
       else if (R->guard.safe && !was_safe)
-        dcm_log(d, "robot %d: watchdog: no new tick_ack for %.2f s: holding the pose at hardness %.2f", R->id,
-                d->watchdog, d->safe_hardness);
+        dcm_log(d, "robot %d: watchdog: no new tick_ack for %.2f s: %s", R->id, d->watchdog, into);
       else if (was_safe && !R->guard.safe)
         dcm_log(d, "robot %d: motion answers again: commands resume", R->id);
     }

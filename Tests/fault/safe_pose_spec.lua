@@ -13,6 +13,8 @@ describe('safe_pose of every body', function()
       if sp == nil then return end
       assert.is_table(sp, robot .. ': safe_pose must be a table')
       assert.is_true(type(sp.ramp) == 'number' and sp.ramp > 0 and sp.ramp <= 1, robot .. ': safe_pose.ramp (s)')
+      assert.is_true(sp.hardness == nil or (type(sp.hardness) == 'number' and sp.hardness >= 0 and sp.hardness <= 1),
+        robot .. ': safe_pose.hardness within 0..1')
       local index = {}
       for i, j in ipairs(cfg.joints) do index[j] = i end
       for joint, angle in pairs(sp.q) do

@@ -4,7 +4,7 @@
 # `./run_main --sim --no-restart motion`, a walk at 0.15 m/s, motion killed (kill -9) at a random
 # moment 3-5 s into the walk, the sim's truth watched for 4 s after: fallen or not.
 #   [CATCH_RUNS=4] [CATCH_SEED=1] [ROBOT=op3] Tools/bench/catch_falls.sh
-# Prints one line per run and "falls: F of N". The safe state is the body's (robot.lua safe_pose:
+# Prints one line per run and "falls: F of N"; exits 1 if a run did not run to its end. The safe state is the body's (robot.lua safe_pose:
 # none = hold the pose of the trip; HRP_SITE can point to a site layer that changes it).
 set -u
 cd "$(dirname "$0")/../.."
@@ -19,6 +19,7 @@ mkdir -p "$(dirname "$LOG")"
 MAIN=""
 trap '[ -n "$MAIN" ] && kill -TERM "$MAIN" 2>/dev/null; wait 2>/dev/null; Tools/shm/shm --robot "$ID" remove >/dev/null 2>&1' EXIT
 falls=0
+errors=0
 for run in $(seq "$RUNS"); do
   delay=$(awk -v r=$RANDOM 'BEGIN { printf "%.2f", 3 + 2 * r / 32767 }')
   Tools/shm/shm --robot "$ID" remove >/dev/null 2>&1
@@ -40,6 +41,11 @@ for run in $(seq "$RUNS"); do
       fell_at and string.format(' (%.1f s after the kill)', fell_at) or ''))" 2>&1 | tail -1)
   kill -TERM "$MAIN" 2>/dev/null; wait "$MAIN" 2>/dev/null; MAIN=""
   echo "run $run: kill after ${delay} s of walking: $out"
-  case $out in *fallen=true*) falls=$((falls + 1)) ;; esac
+  case $out in
+    *fallen=true*) falls=$((falls + 1)) ;;
+    *fallen=false*) ;;
+    *) errors=$((errors + 1)); echo "run $run did not run (see $LOG)" ;;
+  esac
 done
-echo "falls: $falls of $RUNS"
+echo "falls: $falls of $((RUNS - errors))$([ "$errors" -gt 0 ] && echo ", $errors runs failed")"
+[ "$errors" -eq 0 ]

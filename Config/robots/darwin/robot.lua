@@ -38,6 +38,23 @@ return {
   -- 6-axis force/torque at the ankles (dcm.sensor.ft), the sim's instruments: the real DARwIn-OP has
   -- none, so on PLATFORM=OP these slots read 0
   ft = { lfoot = 'l_ank_roll', rfoot = 'r_ank_roll' },
+  -- the DCM's safe state when motion dies or stops answering (Modules/dcm/guard.c): from the pose of
+  -- the trip into this crouch within `ramp` s; the arms and the head stay where they were, at the
+  -- platform's safe_hardness. The OP3's crouch scaled to this body: both feet flat under the hips
+  -- (footY 0.037), the torso 0.195 m above the soles (the walk stands at 0.225), tilted 0.08 rad
+  -- forward, the feet 8 mm behind the torso origin so that the centre of mass is over the ankles:
+  -- the legs' IK of that stance (Lib/kinematics.lua). The legs keep the walk's hardness: at the
+  -- platform's 0.3 an MX-28 gives 0.69 N m (of 2.3), less than a knee needs to carry the body in
+  -- this crouch (about 0.8 N m on two feet, twice that on one): the robot would sink and fall.
+  safe_pose = {
+    ramp = 0.3,
+    hardness = 1.0,
+    q = {
+      l_hip_pitch = 0.811, l_knee = -1.547, l_ank_pitch = -0.817,
+      r_hip_pitch = -0.811, r_knee = 1.547, r_ank_pitch = 0.817,
+      l_hip_yaw = 0, l_hip_roll = 0, l_ank_roll = 0, r_hip_yaw = 0, r_hip_roll = 0, r_ank_roll = 0,
+    },
+  },
   -- joint limits, rad { min, max }, in the convention above: the Webots model's motor limits
   -- (darwin_reference.txt, JOINTS), the only complete public set, taken as they are: each lies
   -- within the servo's 0..4095 counts and the mechanical range as that model has it. Left and

@@ -78,6 +78,27 @@ return {
   },
   -- the DCM's control period, s: hubo-ach's 200 Hz
   period = 0.005,
+  -- the DCM's safe state when motion dies or stops answering (Modules/dcm/guard.c). A 45 kg robot
+  -- must neither drop nor swing: it keeps standing, stiff (the motor boards hold positions, see
+  -- Config/platforms/Hubo/dcm.lua), and within `ramp` s lowers itself into this crouch: both feet
+  -- flat on the ground under the hips (a foot in the air comes down), the waist straight, the
+  -- torso upright 0.64 m above the soles (the walk stands at 0.69) with the feet 23 mm ahead of
+  -- it so that the centre of mass is over the ankles: the legs' IK of that stance
+  -- (Lib/kinematics.lua). The arms and the neck stay where they were, at the platform's
+  -- safe_hardness: nothing moves towards a person standing beside the robot. The legs and the waist
+  -- stay stiff (hardness 1, as the walk has them): the Hubo's boards hold position whatever the
+  -- hardness above `compliant_below`, and in the sim the platform's 0.3 would give a knee 28 of its
+  -- 95 N m, less than the 33 N m it needs in this crouch: the robot would sink. 0.5 s: slow for the
+  -- torso (0.05 m down), quick enough to catch a step.
+  safe_pose = {
+    ramp = 0.5,
+    hardness = 1.0,
+    q = {
+      WST = 0,
+      LHY = 0, LHR = 0.016, LHP = -0.709, LKN = 1.315, LAP = -0.605, LAR = -0.016,
+      RHY = 0, RHR = -0.016, RHP = -0.709, RKN = 1.315, RAP = -0.605, RAR = 0.016,
+    },
+  },
   -- the kinematics' chains (Config/common/robot.lua) with the palms as the arms' tips; the arms and
   -- the head hang from the waist (WST): their functions take the whole-body angles for it
   chains = { larm = { tip = 'l_palm' }, rarm = { tip = 'r_palm' } },

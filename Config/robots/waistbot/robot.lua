@@ -40,6 +40,9 @@ return {
   },
   -- joint limits, rad { min, max }: the OP3's; waist and wrists chosen for a test body
   limits = limits,
+  -- the DCM's safe state (Modules/dcm/guard.c): the OP3's crouch, its legs being the OP3's; the
+  -- waist, the arms and the head stay where they were
+  safe_pose = op3.safe_pose,
   -- each joint's actuator model (Config/common/actuators.lua)
   actuator = actuator,
   -- the kinematics' chains (Config/common/robot.lua): the arms and the head hang from the waist,

@@ -209,8 +209,8 @@ static void test_guard(void) {
 
   /* a safe pose: from the pose of the trip into it within the ramp, then held; NaN joints held */
   dcm_guard_init(&g, NJ, 0.5, 0.3, present, 0);
-  const double pose[NJ] = { 1.1, NAN, 0.3, -0.6 };
-  dcm_guard_set_safe_pose(&g, pose, 0.3);
+  dcm_safe_pose pose = { .q = { 1.1, NAN, 0.3, -0.6 }, .ramp = 0.3, .hardness = NAN };
+  dcm_guard_set_safe_pose(&g, &pose);
   fill(&c, NJ, 0.5, 0.8, 1);
   dcm_guard_apply(&g, 1.0, present, &c);
   fill(&c, NJ, 0.5, 0.8, 1);
@@ -225,6 +225,20 @@ static void test_guard(void) {
   dcm_guard_apply(&g, 2.5, present, &c);
   check(c.position[0] == 1.1 && c.position[1] == 0.2 && c.position[2] == 0.3 && c.position[3] == -0.6 &&
         c.hardness[3] == 0.3, "after the ramp: the safe pose held at the safe hardness");
+
+  /* a safe pose with its own hardness: its joints held at most at that, the others at the platform's */
+  dcm_guard_init(&g, NJ, 0.5, 0.3, present, 0);
+  pose.hardness = 0.7;
+  dcm_guard_set_safe_pose(&g, &pose);
+  fill(&c, NJ, 0.5, 0.8, 1);
+  dcm_guard_apply(&g, 1.0, present, &c);
+  fill(&c, NJ, 0.5, 0.8, 1);
+  dcm_guard_apply(&g, 1.6, present, &c);
+  check(g.safe && c.hardness[0] == 0.7 && c.hardness[1] == 0.3 && c.hardness[2] == 0.7 && c.hardness[3] == 0.7,
+        "safe pose hardness: the posed joints at the pose's, a held one at the platform's");
+  fill(&c, NJ, 0.5, 0.6, 1);
+  dcm_guard_apply(&g, 1.7, present, &c);
+  check(c.hardness[0] == 0.6 && c.hardness[1] == 0.3, "safe pose hardness caps: a softer command stays softer");
 
   /* no watchdog (lockstep): silence is not a fault */
   dcm_guard_init(&g, NJ, 0, 0.3, present, 0);
@@ -653,18 +667,27 @@ static void test_config(void) {
 
   /* a body's safe pose (robot.lua safe_pose), by joint name */
   setenv("PLATFORM", "P", 1);
-  double pose[3], ramp;
+  dcm_safe_pose sp;
   write_file("Config/robots/t/robot.lua",
              "return { joints = { 'a', 'b', 'c' }, safe_pose = { ramp = 0.25, q = { b = -0.5 } } }\n");
-  rc = dcm_safe_pose_load("t", 3, pose, &ramp, err, sizeof err);
-  tap_ok(rc == 0 && ramp == 0.25 && isnan(pose[0]) && pose[1] == -0.5 && isnan(pose[2]),
+  rc = dcm_safe_pose_load("t", 3, &sp, err, sizeof err);
+  tap_ok(rc == 1 && sp.ramp == 0.25 && isnan(sp.q[0]) && sp.q[1] == -0.5 && isnan(sp.q[2]) && isnan(sp.hardness),
          "a body's safe pose by joint name; the joints it does not name are held", err);
+  write_file("Config/robots/t/robot.lua",
+             "return { joints = { 'a', 'b', 'c' }, safe_pose = { ramp = 0.25, hardness = 0.8, q = { a = 1, c = 2 } } }\n");
+  rc = dcm_safe_pose_load("t", 3, &sp, err, sizeof err);
+  tap_ok(rc == 2 && sp.hardness == 0.8 && sp.q[0] == 1 && sp.q[2] == 2, "a safe pose's own hardness", err);
   write_file("Config/robots/t/robot.lua", "return { joints = { 'a', 'b', 'c' }, safe_pose = { ramp = 'x', q = {} } }\n");
-  rc = dcm_safe_pose_load("t", 3, pose, &ramp, err, sizeof err);
+  rc = dcm_safe_pose_load("t", 3, &sp, err, sizeof err);
   tap_ok(rc < 0 && strstr(err, "robot.lua") && strstr(err, "safe_pose.ramp"), "a bad safe pose names file and key", err);
+  write_file("Config/robots/t/robot.lua",
+             "return { joints = { 'a', 'b', 'c' }, safe_pose = { ramp = 0.2, hardness = 1.5, q = {} } }\n");
+  rc = dcm_safe_pose_load("t", 3, &sp, err, sizeof err);
+  tap_ok(rc < 0 && strstr(err, "robot.lua") && strstr(err, "safe_pose.hardness"), "a safe pose's hardness beyond 1 is refused",
+         err);
   write_file("Config/robots/t/robot.lua", "return { joints = { 'a', 'b', 'c' } }\n");
-  rc = dcm_safe_pose_load("t", 3, pose, &ramp, err, sizeof err);
-  tap_ok(rc == 0 && ramp == 0 && isnan(pose[0]) && isnan(pose[1]) && isnan(pose[2]),
+  rc = dcm_safe_pose_load("t", 3, &sp, err, sizeof err);
+  tap_ok(rc == 0 && sp.ramp == 0 && isnan(sp.q[0]) && isnan(sp.q[1]) && isnan(sp.q[2]),
          "no safe pose: every joint held where it is", err);
   unsetenv("PLATFORM");
 
