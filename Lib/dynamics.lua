@@ -91,17 +91,7 @@ function M.new(robot, urdf, config)
 end
 
 -- The model of a body (opts: nil = ROBOT, or { robot = name }): its robot.lua and description.
-function M.load(opts)
-  local Config = require('Config')
-  local robot = Config.load('robot', nil, opts)
-  local files = table.concat(Config.files('robot', opts), ' + ')
-  local desc = rawget(robot, 'description')
-  if type(desc) ~= 'string' then error(files .. ": missing key 'description' (the URDF)", 2) end
-  local body = type(opts) == 'table' and opts.robot or Config.robot()
-  local m, err = M.new(robot, Config.robot_file(desc, body), files)
-  if not m then error(err, 2) end
-  return m
-end
+function M.load(opts) return require('Config').from_description(M.new, opts) end
 
 -- The base pose as Pinocchio's 7 numbers (position, quaternion x y z w).
 local function fill_base(m, base)

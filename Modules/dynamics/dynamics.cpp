@@ -56,11 +56,31 @@ void cols_from_pin(const dyn_model *m, const MatrixXd &pin, int rows, double *ou
   for (int c = 0; c < nv(m); c++) o.col(c) = pin.block(0, m->vcol[c], rows, 1);
 }
 
+// Runs compute once per state (flag: its DONE_* bit).
+template <class F> void once(dyn_model *m, unsigned flag, F compute) {
+  if (m->done & flag) return;
+  compute();
+  m->done |= flag;
+}
+
 void ensure_kin(dyn_model *m) {
-  if (m->done & DONE_KIN) return;
-  pinocchio::computeJointJacobians(m->model, m->kin, m->q);   // forward kinematics too
-  pinocchio::updateFramePlacements(m->model, m->kin);
-  m->done |= DONE_KIN;
+  once(m, DONE_KIN, [&] {
+    pinocchio::computeJointJacobians(m->model, m->kin, m->q);   // forward kinematics too
+    pinocchio::updateFramePlacements(m->model, m->kin);
+  });
+}
+
+// A generalized-force query: compute once per state into the dynamics data's member res, copied
+// out in the caller's order.
+template <class F>
+int force_query(dyn_model *m, const char *what, double *out, unsigned flag, Eigen::VectorXd pinocchio::Data::*res,
+                F compute) {
+  return guarded(m, what, [&]() -> int {
+    if (!out) return DYN_EINVAL;
+    once(m, flag, compute);
+    from_pin(m, m->dyn.*res, out);
+    return 0;
+  });
 }
 
 }  // namespace
@@ -149,10 +169,7 @@ int dyn_frame_jacobian(dyn_model *m, int frame, int ref, double *J) {
 int dyn_com(dyn_model *m, double *com, double *J) {
   return guarded(m, "centre of mass", [&]() -> int {
     if (!com) return DYN_EINVAL;
-    if (!(m->done & DONE_COM)) {
-      pinocchio::jacobianCenterOfMass(m->model, m->kin, m->q, true);
-      m->done |= DONE_COM;
-    }
+    once(m, DONE_COM, [&] { pinocchio::jacobianCenterOfMass(m->model, m->kin, m->q, true); });
     Map<Eigen::Vector3d>{com} = m->kin.com[0];
     if (J) cols_from_pin(m, m->kin.Jcom, 3, J);
     return 0;
@@ -162,11 +179,10 @@ int dyn_com(dyn_model *m, double *com, double *J) {
 int dyn_mass_matrix(dyn_model *m, double *M) {
   return guarded(m, "mass matrix", [&]() -> int {
     if (!M) return DYN_EINVAL;
-    if (!(m->done & DONE_CRBA)) {
+    once(m, DONE_CRBA, [&] {   // CRBA fills the upper triangle
       pinocchio::crba(m->model, m->dyn, m->q);
       m->dyn.M.triangularView<Eigen::StrictlyLower>() = m->dyn.M.transpose().triangularView<Eigen::StrictlyLower>();
-      m->done |= DONE_CRBA;
-    }
+    });
     Map<RowMat> o(M, nv(m), nv(m));
     for (int r = 0; r < nv(m); r++)
       for (int c = 0; c < nv(m); c++) o(r, c) = m->dyn.M(m->vcol[r], m->vcol[c]);
@@ -175,27 +191,13 @@ int dyn_mass_matrix(dyn_model *m, double *M) {
 }
 
 int dyn_gravity(dyn_model *m, double *g) {
-  return guarded(m, "gravity", [&]() -> int {
-    if (!g) return DYN_EINVAL;
-    if (!(m->done & DONE_GRAVITY)) {
-      pinocchio::computeGeneralizedGravity(m->model, m->dyn, m->q);
-      m->done |= DONE_GRAVITY;
-    }
-    from_pin(m, m->dyn.g, g);
-    return 0;
-  });
+  return force_query(m, "gravity", g, DONE_GRAVITY, &pinocchio::Data::g,
+                     [&] { pinocchio::computeGeneralizedGravity(m->model, m->dyn, m->q); });
 }
 
 int dyn_nonlinear(dyn_model *m, double *h) {
-  return guarded(m, "nonlinear effects", [&]() -> int {
-    if (!h) return DYN_EINVAL;
-    if (!(m->done & DONE_NLE)) {
-      pinocchio::nonLinearEffects(m->model, m->dyn, m->q, m->v);
-      m->done |= DONE_NLE;
-    }
-    from_pin(m, m->dyn.nle, h);
-    return 0;
-  });
+  return force_query(m, "nonlinear effects", h, DONE_NLE, &pinocchio::Data::nle,
+                     [&] { pinocchio::nonLinearEffects(m->model, m->dyn, m->q, m->v); });
 }
 
 int dyn_inverse_dynamics(dyn_model *m, const double *a, double *tau) {
