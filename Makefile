@@ -66,6 +66,8 @@ Platforms/OP/ Platforms/OP/emulator/: Modules/dynamixel/ Modules/op_devices/
 Platforms/Hubo/ Platforms/Hubo/emulator/: Modules/hubo_can/
 # the robot description parser: linked by the kinematics and the sim
 Modules/kinematics/ Platforms/Sim/: Modules/description/
+# the rigid-body model: the sim's test of ODE's joint torques against it
+Platforms/Sim/: Modules/dynamics/
 # the recorder and the Replay DCM: MCAP files of shm blocks
 Run/recorder/: Modules/dcm/ Modules/mcap/ Modules/shmlog/
 Platforms/Replay/: Modules/mcap/ Modules/shmlog/

@@ -351,6 +351,25 @@ function M.robot_file(name, robot)
   return M.robot_dir(robot) .. '/' .. name
 end
 
+-- A body's robot config, the absolute path of its description (robot.lua `description`, the URDF)
+-- and the config's files, for messages (opts: nil = ROBOT, or { robot = name }).
+function M.description(opts)
+  local robot = M.load('robot', nil, opts)
+  local files = table.concat(M.files('robot', opts), ' + ')
+  local desc = rawget(robot, 'description')
+  if type(desc) ~= 'string' then error(files .. ": missing key 'description' (the URDF)", 2) end
+  local body = type(opts) == 'table' and opts.robot or M.robot()
+  return robot, M.robot_file(desc, body), files
+end
+
+-- Builds a model of a body's description: new(robot config, URDF path, files) returns it, or nil
+-- and a message naming the file and the element, which is raised.
+function M.from_description(new, opts)
+  local m, err = new(M.description(opts))
+  if not m then error(err, 3) end
+  return m
+end
+
 -- Value of an optional key (nil when absent) without tripping the strict check.
 function M.optional(tbl, key, default)
   local v = rawget(tbl, key)

@@ -180,17 +180,7 @@ function M.new(robot, urdf, config)
 end
 
 -- The model of a body (opts: nil = ROBOT, or { robot = name }): its robot.lua and description.
-function M.load(opts)
-  local Config = require('Config')
-  local robot = Config.load('robot', nil, opts)
-  local files = table.concat(Config.files('robot', opts), ' + ')
-  local desc = rawget(robot, 'description')
-  if type(desc) ~= 'string' then error(files .. ": missing key 'description' (the URDF)", 2) end
-  local body = type(opts) == 'table' and opts.robot or Config.robot()
-  local m, err = M.new(robot, Config.robot_file(desc, body), files)
-  if not m then error(err, 2) end
-  return m
-end
+function M.load(opts) return require('Config').from_description(M.new, opts) end
 
 local function fill_q(m, q)
   if type(q) ~= 'table' then error('kinematics: joint angles must be a table', 3) end

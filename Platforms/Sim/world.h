@@ -152,6 +152,10 @@ class World {
   // its current commands), at rest.
   void place_robot(int r, double x, double y, double yaw, const double *q = nullptr);
   void place_ball(double x, double y, double vx = 0, double vy = 0);
+  // Hangs robot r on a gantry: its torso (root link) lifted `height` m and held fixed to the world
+  // (tests of the body against its rigid-body model, feet off the carpet); release_robot lets it go.
+  void hang_robot(int r, double height);
+  void release_robot(int r);
   // Robots to their start poses (current commands), ball to its start, score to 0:0.
   void reset();
   // A force (N, field frame, horizontal) on robot r's torso for `duration` s.
@@ -187,6 +191,7 @@ class World {
     const Model *m = nullptr;              // its body (in bodies_)
     const std::vector<Servo> *servo = nullptr;   // its body's servos, per shm joint
     dSpaceID space = nullptr;
+    dJointID gantry = nullptr;             // hang_robot's fixed joint to the world
     std::vector<dBodyID> body;             // per model link
     std::vector<dJointID> hinge;           // per model link (null for the root)
     std::vector<dJointFeedback> fb;        // per model link

@@ -1,5 +1,5 @@
-// world_place: teleports -- a robot placed upright on the carpet in a given pose, the ball placed
-// rolling -- the reset to the start, and pushes on a torso.
+// world_place: teleports -- a robot placed upright on the carpet in a given pose or hung on a gantry,
+// the ball placed rolling -- the reset to the start, and pushes on a torso.
 #include <algorithm>
 #include <cmath>
 
@@ -48,6 +48,24 @@ void World::place_robot(int r, double x, double y, double yaw, const double *q) 
   }
   rb.vel_start = Vec3::Zero();
   rb.push_left = 0;
+}
+
+void World::hang_robot(int r, double height) {
+  Robot &rb = robots_[r];
+  release_robot(r);
+  for (dBodyID b : rb.body) {
+    const dReal *p = dBodyGetPosition(b);
+    dBodySetPosition(b, p[0], p[1], p[2] + height);
+  }
+  rb.gantry = dJointCreateFixed(world_, nullptr);
+  dJointAttach(rb.gantry, rb.body[0], nullptr);
+  dJointSetFixed(rb.gantry);
+}
+
+void World::release_robot(int r) {
+  Robot &rb = robots_[r];
+  if (rb.gantry) dJointDestroy(rb.gantry);
+  rb.gantry = nullptr;
 }
 
 void World::place_ball(double x, double y, double vx, double vy) {

@@ -39,10 +39,15 @@ void World::sense(int r, Sensors *s) {
     dJointID h = rb.hinge[li];
     s->position[j] = std::round(dJointGetHingeAngle(h) / qstep) * qstep;
     s->velocity[j] = std::round(dJointGetHingeAngleRate(h) / vstep) * vstep;
-    dVector3 ax;
+    // ODE gives the joint's torque on the link about the link's centre of mass (its body origin);
+    // about the hinge axis, through the anchor, the joint force's moment adds to it
+    dVector3 ax, an;
     dJointGetHingeAxis(h, ax);
+    dJointGetHingeAnchor(h, an);
     const dJointFeedback &f = rb.fb[li];
-    s->load[j] = f.t1[0] * ax[0] + f.t1[1] * ax[1] + f.t1[2] * ax[2];
+    const Vec3 arm = body_pos(rb.body[li]) - Vec3(an[0], an[1], an[2]);
+    const Vec3 t = Vec3(f.t1[0], f.t1[1], f.t1[2]) + arm.cross(Vec3(f.f1[0], f.f1[1], f.f1[2]));
+    s->load[j] = t.dot(Vec3(ax[0], ax[1], ax[2]));
   }
   const Mat3 R = body_rot(rb.body[0]);
   const dReal *w = dBodyGetAngularVel(rb.body[0]);
