@@ -70,6 +70,7 @@ Modules/kinematics/ Platforms/Sim/: Modules/description/
 Platforms/Sim/: Modules/dynamics/
 # the recorder and the Replay DCM: MCAP files of shm blocks
 Run/recorder/: Modules/dcm/ Modules/mcap/ Modules/shmlog/
+Modules/wbc/: Modules/dynamics/
 Platforms/Replay/: Modules/mcap/ Modules/shmlog/
 # the LUT tool and the pipeline benchmark: the vision pipeline's library
 Tools/lut/ Tools/bench/: Modules/imageproc/

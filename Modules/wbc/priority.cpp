@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace wbc {
+namespace wholebody {
 
 namespace {
 
@@ -110,4 +110,4 @@ VectorXd solve_torque(const std::vector<Level> &levels, const MatrixXd &A, const
   return tau;
 }
 
-}  // namespace wbc
+}  // namespace wholebody

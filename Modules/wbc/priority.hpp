@@ -27,7 +27,7 @@
 #include <Eigen/Dense>
 #include <vector>
 
-namespace wbc {
+namespace wholebody {
 
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
@@ -70,6 +70,6 @@ VectorXd solve_torque(const std::vector<Level> &levels, const MatrixXd &A, const
 MatrixXd damped_pinv(const MatrixXd &M, const Damping &d, VectorXd *sigma = nullptr, int *rank = nullptr,
                      double *lambda = nullptr);
 
-}  // namespace wbc
+}  // namespace wholebody
 
 #endif

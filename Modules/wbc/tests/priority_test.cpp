@@ -11,10 +11,10 @@
 
 namespace {
 
-using wbc::Level;
-using wbc::LevelReport;
-using wbc::MatrixXd;
-using wbc::VectorXd;
+using wholebody::Level;
+using wholebody::LevelReport;
+using wholebody::MatrixXd;
+using wholebody::VectorXd;
 
 std::mt19937 rng(7);
 
@@ -44,13 +44,13 @@ std::string fmt(const char *f, double v) {
 
 void velocity_tests() {
   const int n = 14;
-  const wbc::Damping d;
+  const wholebody::Damping d;
   for (int trial = 0; trial < 20; trial++) {
     std::vector<Level> levels = { { random_matrix(6, n), random_vector(6) }, { random_matrix(3, n), random_vector(3) },
                                   { random_matrix(3, n), random_vector(3) } };
     std::vector<LevelReport> rep;
     MatrixXd P;
-    const VectorXd qdot = wbc::solve_velocity(levels, n, d, &rep, &P);
+    const VectorXd qdot = wholebody::solve_velocity(levels, n, d, &rep, &P);
     double worst = 0;
     for (auto &r : rep) worst = std::max(worst, r.residual);
     const bool feasible = rep[0].feasible && rep[1].feasible && rep[2].feasible;
@@ -73,11 +73,11 @@ void velocity_tests() {
   // a lower level that asks for more than is left: the higher ones unchanged, the lower flagged
   {
     std::vector<Level> high = { { random_matrix(6, n), random_vector(6) }, { random_matrix(6, n), random_vector(6) } };
-    const VectorXd q_high = wbc::solve_velocity(high, n, d);
+    const VectorXd q_high = wholebody::solve_velocity(high, n, d);
     std::vector<Level> all = high;
     all.push_back({ random_matrix(6, n), random_vector(6) });   // 18 rows in 14 joints
     std::vector<LevelReport> rep;
-    const VectorXd q_all = wbc::solve_velocity(all, n, d, &rep);
+    const VectorXd q_all = wholebody::solve_velocity(all, n, d, &rep);
     const double moved = (high[0].J * (q_all - q_high)).norm() + (high[1].J * (q_all - q_high)).norm();
     tap_ok(moved < 1e-9 && rep[0].feasible && rep[1].feasible, "velocity: an over-demanding third level moves no higher one",
            fmt("higher tasks moved by %.2e", moved).c_str());
@@ -91,7 +91,7 @@ void velocity_tests() {
     const MatrixXd J = random_matrix(3, n);
     std::vector<Level> levels = { { J, random_vector(3) }, { J, random_vector(3) } };
     std::vector<LevelReport> rep;
-    const VectorXd qdot = wbc::solve_velocity(levels, n, d, &rep);
+    const VectorXd qdot = wholebody::solve_velocity(levels, n, d, &rep);
     tap_ok(rep[1].rank == 0 && !rep[1].feasible && (J * qdot - levels[0].ref).norm() < 1e-9,
            "velocity: a task in conflict with a higher one has rank 0 and changes nothing", "");
   }
@@ -104,21 +104,21 @@ void velocity_tests() {
     ref << 1, 1, -1;                                     // the nearly parallel rows asked opposite ways
     std::vector<Level> levels = { { J, ref } };
     std::vector<LevelReport> rep;
-    const VectorXd qdot = wbc::solve_velocity(levels, n, d, &rep);
+    const VectorXd qdot = wholebody::solve_velocity(levels, n, d, &rep);
     const double undamped = (J.completeOrthogonalDecomposition().pseudoInverse() * levels[0].ref).norm();
     tap_ok(rep[0].damping > 0.9 * d.lambda_max && !rep[0].feasible && qdot.norm() < 1e-2 * undamped,
            "velocity: near a singularity the solution is damped and bounded, the task flagged",
            (fmt("|qdot| %.1f", qdot.norm()) + fmt(" against %.0f undamped", undamped) +
             fmt(", sigma_min %.1e", rep[0].sigma_min)).c_str());
     levels[0].J = random_matrix(3, n);
-    wbc::solve_velocity(levels, n, d, &rep);
+    wholebody::solve_velocity(levels, n, d, &rep);
     tap_ok(rep[0].damping == 0 && rep[0].feasible, "velocity: away from singularities no damping at all", "");
   }
 }
 
 void torque_tests() {
   const int n = 14;
-  const wbc::Damping d;
+  const wholebody::Damping d;
   double worst_consistency = 0, worst_residual = 0, worst_posture = 0;
   for (int trial = 0; trial < 20; trial++) {
     const MatrixXd A = random_spd(n);
@@ -127,7 +127,7 @@ void torque_tests() {
                                   { random_matrix(3, n), random_vector(3) } };
     std::vector<LevelReport> rep;
     MatrixXd N;
-    const VectorXd tau = wbc::solve_torque(levels, A, Ainv, d, &rep, &N);
+    const VectorXd tau = wholebody::solve_torque(levels, A, Ainv, d, &rep, &N);
     for (auto &r : rep) worst_residual = std::max(worst_residual, r.residual);
     // dynamic consistency: no torque left in N^T accelerates any task
     for (auto &L : levels) worst_consistency = std::max(worst_consistency, (L.J * Ainv * N.transpose()).cwiseAbs().maxCoeff());
@@ -147,12 +147,12 @@ void torque_tests() {
   {
     const MatrixXd A = random_spd(n), Ainv = A.inverse();
     std::vector<Level> high = { { random_matrix(6, n), random_vector(6) } };
-    const VectorXd t1 = wbc::solve_torque(high, A, Ainv, d);
+    const VectorXd t1 = wholebody::solve_torque(high, A, Ainv, d);
     std::vector<Level> all = high;
     all.push_back({ random_matrix(6, n), random_vector(6) });
     all.push_back({ random_matrix(6, n), random_vector(6) });   // 18 rows: the last one cannot be met
     std::vector<LevelReport> rep;
-    const VectorXd t3 = wbc::solve_torque(all, A, Ainv, d, &rep);
+    const VectorXd t3 = wholebody::solve_torque(all, A, Ainv, d, &rep);
     const double moved = (high[0].J * Ainv * (t3 - t1)).norm();
     tap_ok(moved < 1e-9 && !rep[2].feasible, "torque: lower levels, one over-demanding, move no higher one",
            fmt("moved %.2e", moved).c_str());
