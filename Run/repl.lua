@@ -35,7 +35,7 @@ local function optional(name)
   end
 end
 if Config.platform() == 'Sim' then optional('Sim') end
-for _, name in ipairs({ 'Motion', 'Walk', 'Vision', 'World', 'Game' }) do optional(name) end
+for _, name in ipairs({ 'Motion', 'Walk', 'Vision', 'World', 'Game', 'WBC' }) do optional(name) end
 
 local participant -- set in script mode
 
@@ -100,6 +100,7 @@ hrp REPL (robot id %d, body %s, platform %s)
   p(x)                print a table
   Sim.truth() Sim.reset() Sim.teleport_robot(x, y, yaw) Sim.teleport_ball(x, y) Sim.push(fx, fy, t)
   Motion.request('walk')  Walk.set_velocity(vx, vy, va)  Vision.ball()   (when loaded)
+  Motion.request('wbc')  WBC.set_target('r_palm', {0.35, -0.25, 0.9})  WBC.set_target('r_palm', nil)  WBC.status()
   help()  quit with Ctrl-D]]
 function env.help() print(string.format(HELP, shm.robot_id(), Config.robot(), Config.platform())) end
 

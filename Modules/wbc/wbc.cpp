@@ -167,10 +167,20 @@ int wbc_set_contacts(wbc *w, int n, const char *const *frames) {
     wholebody::Task t;
     std::string why;
     if (!wholebody::task_init(w->body, &t, frames[i], WBC_POSE, frames[i], TOP, CONTACT_GAIN, 0, &why)) return fail(w, why);
+    for (auto &old : w->contacts)
+      if (old.frame == t.frame) t = old;   // a contact kept keeps its anchor
     cs.push_back(t);
   }
+  if (w->ready) {
+    // running: a new contact is held where the model has it now
+    if (!wholebody::body_update(&w->body)) return fail(w, w->body.err);
+    for (auto &c : cs)
+      if (!c.has) {
+        wholebody::frame_pose(w->body, c.fid, &c.pos, &c.rot);
+        c.has = true;
+      }
+  }
   w->contacts = cs;
-  w->ready = false;
   return 0;
 }
 

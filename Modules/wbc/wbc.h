@@ -52,7 +52,8 @@ const char *wbc_joint_name(const wbc *w, int j);   /* NULL if out of range */
 
 /* Joint limits (njoint each, robot order): position lo, hi (rad) and speed (rad/s). */
 int wbc_set_limits(wbc *w, const double *lo, const double *hi, const double *speed);
-/* The frames in contact with the ground (the soles), held where they are at wbc_reset. */
+/* The frames in contact with the ground (the soles), held where they are at wbc_reset; after it, a
+ * frame that stays a contact keeps its anchor and a new one is held where the model has it now. */
 int wbc_set_contacts(wbc *w, int n, const char *const *frames);
 /* Starts from the present joint angles (njoint): the stance frame, the contacts' anchors. */
 int wbc_reset(wbc *w, const double *q);

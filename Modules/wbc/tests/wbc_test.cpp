@@ -177,8 +177,8 @@ void op3_tests() {
   wbc_task_target(c.w, posture, c.q.data(), c.nj);
   for (int k = 0; k < 250; k++) wbc_step(c.w, c.q.data());
   const char *left[1] = { "l_sole" };
-  wbc_set_contacts(c.w, 1, left);
-  tap_ok(wbc_reset(c.w, c.q.data()) == 0, "op3: the left sole the only contact", wbc_error(c.w));
+  const bool released = wbc_set_contacts(c.w, 1, left) == 0;
+  tap_ok(released, "op3: the right sole released while running, the left the only contact", wbc_error(c.w));
   double l1[3], r1[3], cm[3];
   wbc_frame_pose(c.w, "l_sole", l1, nullptr);
   wbc_frame_pose(c.w, "r_sole", r1, rot);
@@ -193,7 +193,7 @@ void op3_tests() {
   wbc_frame_pose(c.w, "com", cm, nullptr);
   double l2[3];
   wbc_frame_pose(c.w, "l_sole", l2, nullptr);
-  tap_ok(std::fabs(r2[2] - r1[2] - 0.05) < 1e-3 && std::hypot(cm[0] - l2[0], cm[1] - l2[1]) < 1e-3 && dist(l1, l2) < 1e-4,
+  tap_ok(std::fabs(r2[2] - r1[2] - 0.05) < 1e-3 && std::hypot(cm[0] - l2[0], cm[1] - l2[1]) < 1e-3 && dist(l0, l2) < 1e-4,
          "op3: the COM over the left sole, the right foot lifted 5 cm in the model",
          fmt("lift %.4f m, COM off the sole %.1e m", r2[2] - r1[2], std::hypot(cm[0] - l2[0], cm[1] - l2[1])).c_str());
 }

@@ -1,0 +1,21 @@
+-- Whole-body control in kinematic mode (Motion.request('wbc'): Player/Motion/states/wbc.lua over
+-- Modules/wbc; docs/whole-body.md): the skill the state runs. Each task: a kind (position,
+-- orientation, pose, com, com_xy, posture), a frame for the frame kinds, a level (1 is the highest,
+-- under the contacts), a gain (1/s: the task closes its error at gain x error), a max_rate (m/s or
+-- rad/s: the fastest the task asks for) and a target: a list of numbers (stance frame), 'stance'
+-- (com_xy: over the stance frame's origin, midway between the feet) or 'entry' (posture: the pose the
+-- state started from), or none (the task rests until WBC.set_target gives one).
+return {
+  -- the frames held on the ground (the level above every task)
+  contacts = { 'l_sole', 'r_sole' },
+  tasks = {
+    -- balance first: the centre of mass over the middle of the feet
+    com = { kind = 'com_xy', level = 1, gain = 4, max_rate = 0.05, target = 'stance' },
+    -- the rest of the body keeps the pose it started from, in whatever freedom the tasks above leave
+    posture = { kind = 'posture', level = 4, gain = 1, max_rate = 0.5, target = 'entry' },
+  },
+  -- WBC.set_target of a frame of the body that is not a task yet makes it a position task with these
+  reach = { level = 2, gain = 3, max_rate = 0.15 },
+  -- the hardness the state drives the joints at
+  hardness = 1.0,
+}

@@ -1,0 +1,121 @@
+-- wbc: whole-body control in kinematic mode (Modules/wbc through Lib/wbc.lua). The skill of the
+-- wbc config (Config/common/wbc.lua, a body's own wbc.lua over it): its tasks in their levels under
+-- the soles held on the ground; targets from Lib/WBC.lua (the REPL, behavior) arrive in c.wbc_inbox
+-- (Player/Motion/wbc_link.lua), the tasks' status leaves in c.wbc_report. A target for a contact
+-- (a sole) lifts it: it leaves the contacts and becomes a pose task (that position, its present
+-- orientation); a nil target puts it down again as a contact where it is. Every joint is the
+-- controller's; the angles it integrates are commanded each tick. Leaves through stance when
+-- another motion is asked for.
+local Config = require('Config')
+local wbc = require('wbc')
+
+local M = {}
+
+M.owns = { 'all' }
+
+-- The controller and the skill, built once per process (a bad skill stops the state naming it).
+local function skill(c)
+  local d = c:scratch('wbc')
+  if not d.ctl then
+    local cfg = Config.load('wbc', nil, { robot = c.robot.name })
+    local ctl = wbc.load({ robot = c.robot.name, dt = c.robot.period })
+    for name, t in pairs(cfg.tasks) do ctl:add(name, t.kind, t) end
+    d.cfg, d.ctl, d.out, d.report = cfg, ctl, {}, { tasks = {} }
+  end
+  return d
+end
+
+local function index_of(list, x)
+  for i, v in ipairs(list) do if v == x then return i end end
+end
+
+-- A contact lifted to a position (its present orientation kept), or put down where it is (nil).
+local function move_contact(d, name, target)
+  local ctl, r = d.ctl, d.cfg.reach
+  local held = index_of(d.contacts, name)
+  if target == nil then
+    if not held then d.contacts[#d.contacts + 1] = name end
+    if ctl:has(name) then ctl:target(name, nil) end
+    ctl:contacts(d.contacts)
+    return
+  end
+  if #target ~= 3 then
+    error(string.format("wbc: '%s' is a contact: its target is a position { x, y, z }", name), 0)
+  end
+  if held and #d.contacts == 1 then
+    error(string.format("wbc: '%s' is the last contact: nothing would hold the body", name), 0)
+  end
+  if not ctl:has(name) then
+    ctl:add(name, 'pose', { frame = name, level = r.level, gain = r.gain, max_rate = r.max_rate })
+  end
+  local R = ctl:pose(name).R
+  ctl:target(name, { target[1], target[2], target[3], R[1], R[2], R[3], R[4], R[5], R[6], R[7], R[8], R[9] })
+  if held then
+    table.remove(d.contacts, held)
+    ctl:contacts(d.contacts)
+  end
+end
+
+-- A target for a task; a frame of the body that is no task yet becomes a position task (cfg.reach).
+local function set_target(d, name, target)
+  local ctl = d.ctl
+  if index_of(d.cfg.contacts, name) then return move_contact(d, name, target) end
+  if not ctl:has(name) then
+    if target == nil then return end
+    local r = d.cfg.reach
+    ctl:add(name, 'position', { frame = name, level = r.level, gain = r.gain, max_rate = r.max_rate })
+  end
+  ctl:target(name, target)
+end
+
+function M.entry(c)
+  local d = skill(c)
+  local ctl = d.ctl
+  d.contacts = {}
+  for i, f in ipairs(d.cfg.contacts) do d.contacts[i] = f end
+  ctl:contacts(d.contacts)
+  ctl:reset(c.q)
+  for _, name in ipairs(ctl:tasks()) do
+    local t = Config.optional(d.cfg.tasks, name)
+    local target = t and Config.optional(t, 'target')
+    if target == 'stance' then target = { 0, 0 } elseif target == 'entry' then target = c.q end
+    ctl:target(name, target)
+  end
+  d.report.tasks = {}
+end
+
+local function apply_inbox(c, d)
+  local inbox = c.wbc_inbox
+  if not inbox then return end
+  c.wbc_inbox = nil
+  local ok, err = pcall(set_target, d, inbox.task, inbox.target)
+  c.wbc_done = { seq = inbox.seq, ok = ok, error = not ok and tostring(err) or nil }
+end
+
+local function report(d)
+  local ctl, r = d.ctl, d.report
+  r.feasible = true
+  for i, name in ipairs(ctl:tasks()) do
+    local s = ctl:status(name, r.tasks[i])
+    s.name = name
+    r.tasks[i] = s
+    -- a posture fills whatever freedom is left: never met whole, it is not a task to flag
+    if s.enabled and not s.feasible and s.kind ~= 'posture' then r.feasible = false end
+  end
+  r.step_us = ctl:step_us()
+  return r
+end
+
+function M.update(c)
+  local d = c:scratch('wbc')
+  apply_inbox(c, d)
+  local q = d.ctl:step(d.out)
+  local h = d.cfg.hardness
+  for _, i in ipairs(c.own) do c.q[i], c.h[i] = q[i], h end
+  c.wbc_report = report(d)
+  if c.want ~= 'wbc' then return 'done' end
+end
+
+function M.exit(c) c.wbc_report = nil end
+
+return M
