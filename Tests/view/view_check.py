@@ -7,9 +7,10 @@ in the sim, ./run_view serving it and Tests/view/probe.lua writing the latency p
 1. the page connects and shows camera frames;
 2. the robot's truth marker (the first robot's colour, a filled disc) found in the screenshot's pixels
    and mapped back to field coordinates (the page's stated geometry: centre of the field canvas = field
-   origin, x right, y up, `scale` px/m) lies within TOLERANCE of the sim's truth, read from shm by this
-   script over the screenshot's time (the robot walks: the truth between 0.3 s before the screenshot
-   and its end counts);
+   origin, x right, y up, `scale` px/m) lies within TOLERANCE of the truth the page held while the
+   screenshot was taken, and that truth is one the sim had: a sample of the sim's truth, read from shm
+   by this script, within TRUTH_MATCH of it (the page's delay is the latency figure below, not this
+   check's: on a loaded machine the page may show a state seconds old);
 3. the camera panel shows the ball: orange pixels (the frame's ball, its labels) in its region;
 4. the latency from a shm write (bench.t_send) to the page, while a second client stalls (connects to
    /events and never reads): p50 below LIVE_MS, and whether it meets the goal (GOAL_MS) is printed
@@ -33,6 +34,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 import shm_read  # noqa: E402
 
 TOLERANCE = 0.06          # m between the marker's centre and the truth (the disc is 0.26 m wide)
+TRUTH_MATCH = 0.02        # m between the page's truth and the nearest sample of the sim's
 GOAL_MS = 100             # the goal for the latency, printed
 LIVE_MS = 250             # the bound the test holds: beyond it the page is not live
 MARKER = (255, 43, 214)   # the first robot's colour (Run/view/www/view.js PALETTE[0])
@@ -151,9 +153,9 @@ def main():
             page.wait_for_function("hrpView.status().camBall", timeout=10000)
         except Exception:  # noqa: BLE001
             pass
-        t_before = time.time()
+        page_truth = [page.evaluate("hrpView.truth()")]
         page.screenshot(path=a.out)
-        t_after = time.time()
+        page_truth.append(page.evaluate("hrpView.truth()"))
         geo = page.evaluate("hrpView.geometry()")
         field_box = page.locator("#field").bounding_box()
         cam_box = page.locator("#camera").bounding_box()
@@ -162,18 +164,24 @@ def main():
     truth.join()
 
     centre, npx = marker_centre(a.out, field_box)
-    window = truth.between(t_before - 0.3, t_after)
-    if centre is None or not window:
-        tap(False, f"the robot's marker is where the truth says (within {TOLERANCE} m)",
-            f"{npx} marker pixels, {len(window)} truth samples")
+    shown = [t for t in page_truth if t]
+    if centre is None or not shown:
+        tap(False, f"the robot's marker is where the page's truth says (within {TOLERANCE} m)",
+            f"{npx} marker pixels, {len(shown)} truths on the page")
     else:
         fx = (centre[0] - field_box["x"] - geo["cx"]) / geo["scale"]
         fy = (geo["cy"] - (centre[1] - field_box["y"])) / geo["scale"]
-        err = min(np.hypot(fx - s[1], fy - s[2]) for s in window)
-        last = window[-1]
-        tap(err <= TOLERANCE, f"the robot's marker is where the truth says (within {TOLERANCE} m)",
-            f"marker ({fx:.3f}, {fy:.3f}) from {npx} px at {geo['scale']:.1f} px/m; truth "
-            f"({last[1]:.3f}, {last[2]:.3f}); error {err:.3f} m")
+        err = min(np.hypot(fx - t[0], fy - t[1]) for t in shown)
+        tap(err <= TOLERANCE, f"the robot's marker is where the page's truth says (within {TOLERANCE} m)",
+            f"marker ({fx:.3f}, {fy:.3f}) from {npx} px at {geo['scale']:.1f} px/m; page's truth "
+            f"({shown[-1][0]:.3f}, {shown[-1][1]:.3f}); error {err:.3f} m")
+    samples = truth.between(0, time.time())
+    if not shown or not samples:
+        tap(False, "the page's truth is one the sim had", f"{len(samples)} truth samples")
+    else:
+        gap = min(np.hypot(t[0] - s[1], t[1] - s[2]) for t in shown for s in samples)
+        tap(gap <= TRUTH_MATCH, f"the page's truth is one the sim had (within {TRUTH_MATCH} m)",
+            f"nearest sample {gap * 1e3:.1f} mm away")
     orange = orange_pixels(a.out, cam_box)
     tap(orange >= 30, "the camera panel shows the ball (orange pixels)", f"{orange} orange pixels")
 
