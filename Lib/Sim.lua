@@ -153,8 +153,8 @@ local function bind(S, R)
   end
 
   function S.link_truth(name)
-    if type(name) ~= 'string' or name == '' then
-      error('Sim.link_truth: the name of a link or frame expected, got ' .. tostring(name), 2)
+    if type(name) ~= 'string' or name == '' or name:find('\0', 1, true) then
+      error(string.format('Sim.link_truth: the name of a link or frame expected, got %q', tostring(name)), 2)
     end
     local s = blocks()
     local cap = s:count('link_name')

@@ -1,35 +1,20 @@
 -- Scenario of Tests/sim/link_truth_test.sh (./run_repl in lockstep, any body): Sim.link_truth
--- against Sim.truth, the standing robot's soles, and the body's forward kinematics from the
--- measured joint angles. Prints the figures and one line per check: "pass NAME" or "fail NAME".
+-- against Sim.truth, the standing robot's soles, and forward kinematics from the measured joint
+-- angles (Lib/kinematics.lua's for the hands and the camera, the tests' URDF reader's for all).
+-- Prints the figures and one line per check: "pass NAME" or "fail NAME".
 -- luacheck: read globals Sim Body wait
 local kin = require('kinematics')
 local Config = require('Config')
+local urdf_read = dofile(os.getenv('HRP_ROOT') .. '/Tests/kinematics/urdf_read.lua')
 
 local function check(ok, name) print((ok and 'pass ' or 'fail ') .. name) end
 
 -- R = Rz(yaw) Ry(pitch) Rx(roll), row-major {9}
-local function rot(p)
-  local cr, sr = math.cos(p.roll), math.sin(p.roll)
-  local cp, sp = math.cos(p.pitch), math.sin(p.pitch)
-  local cy, sy = math.cos(p.yaw), math.sin(p.yaw)
-  return { cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr,
-    sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr,
-    -sp, cp * sr, cp * cr }
-end
-local function mul(A, v)
-  return { A[1] * v[1] + A[2] * v[2] + A[3] * v[3], A[4] * v[1] + A[5] * v[2] + A[6] * v[3],
-    A[7] * v[1] + A[8] * v[2] + A[9] * v[3] }
-end
+local function rot(p) return urdf_read.rpy_rot(p.roll, p.pitch, p.yaw) end
+local mul, matmul = urdf_read.apply, urdf_read.matmul
 local function mulT(A, v)   -- A^T v
   return { A[1] * v[1] + A[4] * v[2] + A[7] * v[3], A[2] * v[1] + A[5] * v[2] + A[8] * v[3],
     A[3] * v[1] + A[6] * v[2] + A[9] * v[3] }
-end
-local function matmul(A, B)
-  local C = {}
-  for i = 0, 2 do
-    for j = 1, 3 do C[3 * i + j] = A[3 * i + 1] * B[j] + A[3 * i + 2] * B[3 + j] + A[3 * i + 3] * B[6 + j] end
-  end
-  return C
 end
 -- angle (rad) between two rotations
 local function angle_between(A, B)
@@ -123,49 +108,18 @@ print(string.format('%s: truth (%.4f, %.4f, %.4f) kinematics (%.4f, %.4f, %.4f) 
   chains.head.tip, ct.x, ct.y, ct.z, cfk[1], cfk[2], cfk[3], ce * 1e3, ca * 1e3))
 print(string.format('hands and camera: largest error %.2f mm', worst * 1e3))
 check(worst < 0.002 and ca < 0.005, 'the hands and the camera agree with the forward kinematics (2 mm, 5 mrad)')
--- every link and frame: its pose at the zero pose (the URDF's joint origins composed from the root)
--- moved by its joint's transform from the kinematics (link_poses: the link's rotation, and where
--- the torso origin goes when carried along with the link), against its truth
-local f = assert(io.open(Config.robot_file(Config.load('robot').description, Config.robot())))
-local urdf = f:read('*a')
-f:close()
-local zero = { [root] = { p = { 0, 0, 0 }, R = rot({ roll = 0, pitch = 0, yaw = 0 }) } }
-local parent, moved_by = {}, { [root] = false }
-for j in urdf:gmatch('<joint .-</joint>') do
-  local child = j:match('<child link="([^"]+)"')
-  local ox, oy, oz = j:match('<origin xyz="(%S+) (%S+) (%S+)"')
-  local rr, rp, ry = j:match('rpy="(%S+) (%S+) (%S+)"')
-  parent[child] = {
-    link = j:match('<parent link="([^"]+)"'), joint = j:match('type="revolute"') and j:match('name="([^"]+)"'),
-    p = { tonumber(ox), tonumber(oy), tonumber(oz) },
-    R = rot({ roll = tonumber(rr) or 0, pitch = tonumber(rp) or 0, yaw = tonumber(ry) or 0 }) }
-end
-local function zero_pose(n)   -- zero-pose pose in the root frame; the joint that moves n (false: none)
-  if not zero[n] then
-    local pj = assert(parent[n], 'no joint to ' .. n)
-    local zp = zero_pose(pj.link)
-    local o = mul(zp.R, pj.p)
-    zero[n] = { p = { zp.p[1] + o[1], zp.p[2] + o[2], zp.p[3] + o[3] }, R = matmul(zp.R, pj.R) }
-    moved_by[n] = pj.joint or moved_by[pj.link]
-  end
-  return zero[n]
-end
-local poses, le, la, lworst = model:link_poses(q), 0, 0, ''
+-- every link and frame against the tests' own URDF reader's forward kinematics
+local u = urdf_read.read(Config.robot_file(Config.load('robot').description, Config.robot()))
+local fk = urdf_read.fk(u, function(joint) return q[model.index[joint] + 1] end)
+local le, la, lworst = 0, 0, ''
 for _, n in ipairs(names) do
-  local z = zero_pose(n)
-  local k = moved_by[n] and poses[model.index[moved_by[n]] + 1]
-  local p, R = z.p, z.R
-  if k then
-    local m = mul(k.R, p)
-    p, R = { m[1] + k[1], m[2] + k[2], m[3] + k[3] }, matmul(k.R, R)
-  end
   local lt3 = Sim.link_truth(n)
-  local e, a = dist(world(p), xyz(lt3)), angle_between(matmul(Rt, R), rot(lt3))
+  local e, a = dist(world(fk[n].p), xyz(lt3)), angle_between(matmul(Rt, fk[n].R), rot(lt3))
   if e > le then le, lworst = e, n end
   la = math.max(la, a)
 end
 print(string.format('%d links and frames: largest error %.2f mm (%s), %.2f mrad', #names, le * 1e3, lworst, la * 1e3))
-check(le < 0.002 and la < 0.005, 'every link and frame agrees with the forward kinematics (2 mm, 5 mrad)')
+check(le < 0.002 and la < 0.005, 'every link and frame agrees with the URDF\'s forward kinematics (2 mm, 5 mrad)')
 
 -- every link and frame comes back finite
 local all_finite = true
@@ -180,6 +134,8 @@ check(not ok and tostring(err):find("'no_such_link'", 1, true) and tostring(err)
 ok, err = pcall(Sim.link_truth, 42)
 print('not a name: ' .. tostring(err))
 check(not ok and tostring(err):find('link or frame', 1, true), 'a non-string name is an error')
+ok, err = pcall(Sim.link_truth, root .. '\0x')
+check(not ok and tostring(err):find('link or frame', 1, true), 'a name with a NUL byte is an error')
 ok, err = pcall(Sim.link_truth, string.rep('a', 80))
 check(not ok and tostring(err):find('longer than', 1, true), 'a name longer than the field is an error')
 print('done')
