@@ -9,6 +9,10 @@
 --   Sim.push(fx, fy, duration)       N on the torso, field frame, for duration s of robot time
 --   Sim.press_button(i [, duration]) button i (1 or 2) held for duration s (default 0.1)
 --   Sim.score()  --> goals into the goal at +x, goals into the goal at -x
+--   Sim.link_truth(name)  --> { x, y, z, roll, pitch, yaw } of a link or frame of the body's URDF
+--                    ('l_sole', 'camera_link', its root link, ...): field frame, R = Rz(yaw) Ry(pitch)
+--                    Rx(roll) as Sim.truth's; a name the body lacks is an error naming it
+--   Sim.link_names() --> the body's links (its root link first) and frames
 --   Sim.of(id)   --> the same functions for robot `id` of this world (a referee: Tools/match/referee.lua)
 --   Sim.use_robot(id)                Sim.* for robot `id` from now on (hardware in the loop: the
 --                                    simulated robot behind a bus emulator has its own id)
@@ -22,7 +26,7 @@ local shm = require('shm')
 local M = {}
 local C = shm.C
 
-local REQUEST = { reset = 1, teleport_robot = 2, teleport_ball = 3, push = 4, button = 5 }
+local REQUEST = { reset = 1, teleport_robot = 2, teleport_ball = 3, push = 4, button = 5, link_truth = 6 }
 local TIMEOUT = 2.0   -- s of wall time to wait for the DCM
 
 -- The blocks of robot `id` (nil: this process's robot). Requests wake this process's own sync
@@ -42,7 +46,8 @@ local function make(id)
   end
   R.blocks = blocks
 
-  function R.request(code, a, b, c, d)
+  -- Request `code` with args a..d; fill(x), if given, writes the request's other fields.
+  function R.request(code, a, b, c, d, fill)
     local s = blocks()
     local pid = sensor.dcm_pid[0]
     if pid == 0 or C.shm_pid_alive(pid) == 0 then
@@ -52,6 +57,7 @@ local function make(id)
     s:write(function(x)
       x.request[0] = code
       x.args[0], x.args[1], x.args[2], x.args[3] = a or 0, b or 0, c or 0, d or 0
+      if fill then fill(x) end
       seq = x.request_seq[0] + 1
       x.request_seq[0] = seq
     end)
@@ -131,6 +137,49 @@ local function bind(S, R)
     local s = blocks()
     local plus, minus = s:read(function(x) return x.score[0], x.score[1] end)
     return plus, minus
+  end
+
+  function S.link_names()
+    local s = blocks()
+    local cap = s:count('link_names')
+    local text = s:read(function(x)
+      local n = 0
+      while n < cap and x.link_names[n] ~= 0 do n = n + 1 end
+      return ffi.string(x.link_names, n)
+    end)
+    local names = {}
+    for n in text:gmatch('%S+') do names[#names + 1] = n end
+    return names
+  end
+
+  function S.link_truth(name)
+    if type(name) ~= 'string' or name == '' or name:find('\0', 1, true) then
+      error(string.format('Sim.link_truth: the name of a link or frame expected, got %q', tostring(name)), 2)
+    end
+    local s = blocks()
+    local cap = s:count('link_name')
+    if #name >= cap then
+      error(string.format("Sim.link_truth: '%s' is longer than the %d bytes a name may have", name, cap - 1), 2)
+    end
+    local ok, err = request(REQUEST.link_truth, 0, 0, 0, 0, function(x)
+      ffi.fill(x.link_name, cap)
+      ffi.copy(x.link_name, name, #name)
+    end)
+    if not ok then return nil, err end
+    local status, pose = s:read(function(x)
+      local p = x.link_pose
+      return x.link_status[0], { x = p[0], y = p[1], z = p[2], roll = p[3], pitch = p[4], yaw = p[5] }
+    end)
+    if status == 2 then
+      error(string.format("Sim.link_truth: the simulator's pose of '%s' is not finite", name), 2)
+    elseif status ~= 0 then
+      local names = S.link_names()
+      local some = {}
+      for k = 1, math.min(#names, 8) do some[k] = names[k] end
+      error(string.format("Sim.link_truth: the body has no link or frame '%s' (it has %d: %s%s)", name, #names,
+        table.concat(some, ', '), #names > #some and ', ...' or ''), 2)
+    end
+    return pose
   end
 
   -- Simulated seconds per wall second, as measured by the DCM.

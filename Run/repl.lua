@@ -99,6 +99,7 @@ hrp REPL (robot id %d, body %s, platform %s)
   replay.pause() replay.resume() replay.step(n) replay.seek(t) replay.speed(x) replay.status()   (PLATFORM=Replay)
   p(x)                print a table
   Sim.truth() Sim.reset() Sim.teleport_robot(x, y, yaw) Sim.teleport_ball(x, y) Sim.push(fx, fy, t)
+  Sim.link_truth('r_sole')   world pose of any link or frame of the body   Sim.link_names()
   Motion.request('walk')  Walk.set_velocity(vx, vy, va)  Vision.ball()   (when loaded)
   Motion.request('wbc')  WBC.set_target('r_palm', {0.35, -0.25, 0.9})  WBC.set_target('r_palm', nil)  WBC.status()
   help()  quit with Ctrl-D]]

@@ -21,6 +21,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <climits>
@@ -158,6 +159,43 @@ struct Sim {
   sim::Sensors sensors;
 };
 
+// Request 6 of robot r: the field-frame pose of the link or frame that link_name names into
+// link_pose, link_status 0; 1 if the body has none of that name, 2 if its pose is not finite (a
+// world that blew up: no NaN is handed out).
+void answer_link_truth(Sim &s, int r) {
+  const dcm_blk_sim &b = s.rob[r].sim;
+  const size_t cap = (size_t)b.n.link_name;
+  std::string name;
+  for (size_t k = 0; k < cap && b.link_name[k]; k++) name += (char)b.link_name[k];
+  sim::Vec3 p = sim::Vec3::Zero();
+  sim::Mat3 R = sim::Mat3::Identity();
+  const bool found = s.world->frame_pose(r, name, &p, &R);
+  const double pose[6] = {p.x(), p.y(), p.z(), std::atan2(R(2, 1), R(2, 2)),
+                          std::asin(std::min(1.0, std::max(-1.0, -R(2, 0)))), std::atan2(R(1, 0), R(0, 0))};
+  bool finite = true;
+  for (double v : pose) finite = finite && std::isfinite(v);
+  shm_write_begin(b.blk);
+  *b.link_status = !found ? 1 : !finite ? 2 : 0;
+  if (found && finite) memcpy(b.link_pose, pose, sizeof pose);
+  shm_write_end(b.blk);
+}
+
+// The body's links (its root first) and frames, space-separated, into link_names; as many whole
+// names as the field holds.
+void publish_link_names(const SimRobot &x, const sim::Model &m) {
+  std::string all;
+  auto add = [&](const std::string &n) {
+    const std::string more = (all.empty() ? "" : " ") + n;
+    if (all.size() + more.size() < (size_t)x.sim.n.link_names) all += more;   // room for the NUL
+  };
+  for (const sim::Link &l : m.links) add(l.name);
+  for (const sim::Frame &f : m.frames) add(f.name);
+  shm_write_begin(x.sim.blk);
+  memset(x.sim.link_names, 0, (size_t)x.sim.n.link_names);
+  memcpy(x.sim.link_names, all.data(), all.size());
+  shm_write_end(x.sim.blk);
+}
+
 // Applies a pending sim request of robot r; returns true if one was applied.
 bool apply_request(Sim &s, int r) {
   SimRobot &x = s.rob[r];
@@ -176,6 +214,7 @@ bool apply_request(Sim &s, int r) {
       case 5:
         if (a[0] == 0 || a[0] == 1) x.button_until[(int)a[0]] = w.time() + a[1];
         break;
+      case 6: answer_link_truth(s, r); break;
       default: break;
     }
   } else {
@@ -249,6 +288,7 @@ int sim_open(void *hw, dcm *d, char *err, size_t errlen) {
         if (joints[j] == "head_tilt") x.head[1] = j;
       }
       const sim::Model &m = s.world->model(r);
+      publish_link_names(x, m);
       x.hide = {m.link_index("head_pan_link"), m.link_index("head_tilt_link")};
       const int cl = m.frame_index(s.params[r].camera_frame);
       if (cl >= 0) x.hide.push_back(m.frames[cl].link);

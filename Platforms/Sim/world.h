@@ -183,6 +183,10 @@ class World {
   std::vector<double> joint_positions(int r) const;
   // Field-frame pose of a link of robot r.
   void link_pose(int r, int link, Vec3 *pos, Mat3 *rot) const;
+  // Field-frame pose of a link or frame of robot r's description, by name (a frame, a massless
+  // fixed child, rides on its link: the link's pose times the frame's offset). False if the body
+  // has no link or frame of that name (pos and rot untouched).
+  bool frame_pose(int r, const std::string &name, Vec3 *pos, Mat3 *rot) const;
 
  private:
   void release();   // the ODE world, spaces, joints and geometry infos (destructor, failed construction)

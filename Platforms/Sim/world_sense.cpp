@@ -95,19 +95,24 @@ Vec3 World::ball_position() const { return body_pos(ball_); }
 
 Mat3 World::ball_rotation() const { return body_rot(ball_); }
 
-void World::camera_pose(int r, Vec3 *pos, Mat3 *rot) const {
+bool World::frame_pose(int r, const std::string &name, Vec3 *pos, Mat3 *rot) const {
   const Model &m = *robots_[r].m;
-  int fi = m.frame_index(p_.camera_frame);
+  const int li = m.link_index(name);
+  if (li >= 0) {
+    link_pose(r, li, pos, rot);
+    return true;
+  }
+  const int fi = m.frame_index(name);
+  if (fi < 0) return false;
+  const Frame &f = m.frames[fi];
   Vec3 lp;
   Mat3 lR;
-  if (fi >= 0) {
-    const Frame &f = m.frames[fi];
-    link_pose(r, f.link, &lp, &lR);
-    *pos = lp + lR * f.pos;
-    *rot = lR * f.rot;
-  } else {
-    link_pose(r, m.link_index(p_.camera_frame), pos, rot);
-  }
+  link_pose(r, f.link, &lp, &lR);
+  *pos = lp + lR * f.pos;
+  *rot = lR * f.rot;
+  return true;
 }
+
+void World::camera_pose(int r, Vec3 *pos, Mat3 *rot) const { frame_pose(r, p_.camera_frame, pos, rot); }
 
 }  // namespace sim
