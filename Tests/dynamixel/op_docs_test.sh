@@ -35,7 +35,7 @@ run() {
   if [ -n "$dr" ]; then ROBOT=$dr PLATFORM=OP ./run_dcm --port "$T/dxl" 2>"$T/dcm.log" &
   else PLATFORM=OP ./run_dcm --port "$T/dxl" 2>"$T/dcm.log" & fi
   DCM=$!
-  for _ in $(seq 200); do grep -q 'servos answer' "$T/dcm.log" && break; sleep 0.05; done
+  for _ in $(seq 600); do grep -q 'servos answer' "$T/dcm.log" && break; sleep 0.05; done
   kill "$DCM" 2>/dev/null; wait "$DCM" 2>/dev/null; DCM=""
   kill "$EMU" 2>/dev/null; wait "$EMU" 2>/dev/null; EMU=""
   sed "s|$T/||; s/^/#   /" "$T/emu.log" "$T/dcm.log"
