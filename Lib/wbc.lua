@@ -70,12 +70,9 @@ end
 -- The body of ROBOT (or opts.robot) with opts.dt (default: the body's control period).
 function M.load(opts)
   opts = opts or {}
-  local Config = require('Config')
-  local robot, urdf, files = Config.description(opts.robot and { robot = opts.robot } or nil)
-  local dt = opts.dt or robot.period
-  local c, err = M.new(robot, urdf, dt, files)
-  if not c then error(err, 2) end
-  return c
+  return require('Config').from_description(function(robot, urdf, files)
+    return M.new(robot, urdf, opts.dt or robot.period, files)
+  end, opts.robot and { robot = opts.robot } or nil)
 end
 
 -- Joint limits from a robot config: `limits` (rad) and each actuator's speed (rad/s).

@@ -30,20 +30,31 @@ void fill_report(LevelReport *r, int rows, const VectorXd &s, int rank, double l
   r->feasible = rank == rows && r->sigma_min >= d.epsilon;
 }
 
+// The SVD of M with its rank and damping: V diag(inv) U^T is M's damped pseudo-inverse.
+struct DampedSvd {
+  Eigen::JacobiSVD<MatrixXd> svd;
+  int rank;
+  double lambda;
+  VectorXd inv;
+  DampedSvd(const MatrixXd &M, const Damping &d) : svd(M, Eigen::ComputeThinU | Eigen::ComputeThinV) {
+    const VectorXd &s = svd.singularValues();
+    rank = rank_of(s, d.rank_tol);
+    // sigma_min among the directions that exist: a conflict (rank < rows) is not a singularity to damp
+    lambda = rank ? damping_for(s(rank - 1), d) : 0;
+    inv = VectorXd::Zero(s.size());
+    for (int i = 0; i < rank; i++) inv(i) = s(i) / (s(i) * s(i) + lambda * lambda);
+  }
+  MatrixXd pinv() const { return svd.matrixV() * inv.asDiagonal() * svd.matrixU().transpose(); }
+};
+
 }  // namespace
 
 MatrixXd damped_pinv(const MatrixXd &M, const Damping &d, VectorXd *sigma, int *rank, double *lambda) {
-  Eigen::JacobiSVD<MatrixXd> svd(M, Eigen::ComputeThinU | Eigen::ComputeThinV);
-  const VectorXd &s = svd.singularValues();
-  const int r = rank_of(s, d.rank_tol);
-  // sigma_min among the directions that exist: a conflict (rank < rows) is not a singularity to damp
-  const double lam = r ? damping_for(s(r - 1), d) : 0;
-  VectorXd inv = VectorXd::Zero(s.size());
-  for (int i = 0; i < r; i++) inv(i) = s(i) / (s(i) * s(i) + lam * lam);
-  if (sigma) *sigma = s;
-  if (rank) *rank = r;
-  if (lambda) *lambda = lam;
-  return svd.matrixV() * inv.asDiagonal() * svd.matrixU().transpose();
+  const DampedSvd ds(M, d);
+  if (sigma) *sigma = ds.svd.singularValues();
+  if (rank) *rank = ds.rank;
+  if (lambda) *lambda = ds.lambda;
+  return ds.pinv();
 }
 
 VectorXd solve_velocity(const std::vector<Level> &levels, int n, const Damping &d, std::vector<LevelReport> *reports,
@@ -53,18 +64,13 @@ VectorXd solve_velocity(const std::vector<Level> &levels, int n, const Damping &
   std::vector<LevelReport> rep(levels.size());
   for (size_t k = 0; k < levels.size(); k++) {
     const Level &L = levels[k];
-    const MatrixXd JP = L.J * P;
-    Eigen::JacobiSVD<MatrixXd> svd(JP, Eigen::ComputeThinU | Eigen::ComputeThinV);
-    const VectorXd &s = svd.singularValues();
-    const int r = rank_of(s, d.rank_tol);
-    const double lam = r ? damping_for(s(r - 1), d) : 0;
-    VectorXd inv = VectorXd::Zero(s.size());
-    for (int i = 0; i < r; i++) inv(i) = s(i) / (s(i) * s(i) + lam * lam);
-    const MatrixXd &V = svd.matrixV();
-    qdot += V * inv.asDiagonal() * svd.matrixU().transpose() * (L.ref - L.J * qdot);
+    const DampedSvd ds(L.J * P, d);
+    const int r = ds.rank;
+    qdot += ds.pinv() * (L.ref - L.J * qdot);
     // the directions this level took leave the projector: exact, whatever the damping
+    const MatrixXd &V = ds.svd.matrixV();
     if (r) P -= V.leftCols(r) * V.leftCols(r).transpose();
-    fill_report(&rep[k], (int)L.J.rows(), s, r, lam, d);
+    fill_report(&rep[k], (int)L.J.rows(), ds.svd.singularValues(), r, ds.lambda, d);
   }
   for (size_t k = 0; k < levels.size(); k++) rep[k].residual = (levels[k].ref - levels[k].J * qdot).norm();
   if (reports) *reports = rep;

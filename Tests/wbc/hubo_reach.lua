@@ -3,23 +3,17 @@
 -- the arm's reach without the torso; each must be reached within 2 cm in 3 s, measured on the
 -- simulated robot (Sim.link_truth of the palm), with no fall and the soles moving under 1 cm. A
 -- target 1.5 m ahead is flagged infeasible and the robot keeps standing. Prints TAP and the figures.
--- luacheck: globals Sim Motion WBC wait
+-- luacheck: globals Sim Motion WBC wait Body
 package.path = os.getenv('HRP_ROOT') .. '/Tests/motion/?.lua;' .. package.path
 local ks = require('kick_setup')
+local sc = require('Tests.scenario_lib').new(wait, Body)
+local tap = sc.tap
 
-local n = 0
-local function tap(ok, msg)
-  n = n + 1
-  print(string.format('%s %d - %s', ok and 'ok' or 'not ok', n, msg))
-  io.stdout:flush()
-end
 
 local function dist(a, b) return math.sqrt((a[1] - b[1]) ^ 2 + (a[2] - b[2]) ^ 2 + (a[3] - b[3]) ^ 2) end
 local function xyz(p) return { p.x, p.y, p.z } end
 
-local motion = ks.wait_for_motion(wait)
-tap(motion ~= nil, 'the motion process runs')
-if not motion then os.exit(1) end
+ks.need_motion(wait, tap)
 Motion.request('stand')
 wait(3)
 Motion.request('wbc')
@@ -67,4 +61,4 @@ wait(3)
 Motion.request('stand')
 wait(3)
 tap(Motion.state() == 'stance' and not Sim.truth().fallen, 'back to stance, standing')
-print('1..' .. n)
+print('1..' .. sc.count)

@@ -6,15 +6,11 @@
 -- luacheck: globals Sim Motion WBC wait Body
 package.path = os.getenv('HRP_ROOT') .. '/Tests/motion/?.lua;' .. package.path
 local ks = require('kick_setup')
+local sc = require('Tests.scenario_lib').new(wait, Body)
+local tap = sc.tap
 local Config = require('Config')
 local kin = require('kinematics')
 
-local n = 0
-local function tap(ok, msg)
-  n = n + 1
-  print(string.format('%s %d - %s', ok and 'ok' or 'not ok', n, msg))
-  io.stdout:flush()
-end
 
 -- The right sole's height above the left one, and the feet's mid-point's sideways offset from the
 -- COM (world axes, from the measured angles and the torso's true roll and pitch).
@@ -39,9 +35,7 @@ local function feet()
   return rw[3] - lw[3], cw[2] - lw[2], t
 end
 
-local motion = ks.wait_for_motion(wait)
-tap(motion ~= nil, 'the motion process runs')
-if not motion then os.exit(1) end
+ks.need_motion(wait, tap)
 Motion.request('stand')
 wait(2)
 Motion.request('wbc')
@@ -81,4 +75,4 @@ wait(2)
 Motion.request('stand')
 wait(2)
 tap(Motion.state() == 'stance' and not Sim.truth().fallen, 'puts the foot down and goes back to stance')
-print('1..' .. n)
+print('1..' .. sc.count)
