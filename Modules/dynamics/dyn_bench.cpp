@@ -40,7 +40,8 @@ int main(int argc, char **argv) {
   int n = argc > 1 ? atoi(argv[1]) : 20000;
   std::string body = argc > 2 ? argv[2] : "hubo2plus";
   const char *env = getenv("HRP_ROOT");
-  std::string urdf = std::string(env && *env ? env : HRP_ROOT_DEFAULT) + "/Config/robots/" + body + "/" + body + ".urdf";
+  std::string root = env && *env ? env : HRP_ROOT_DEFAULT;
+  std::string urdf = root + "/Config/robots/" + body + "/" + body + ".urdf";
   char err[512];
   dyn_model *m = nullptr;
   if (dyn_model_load(urdf.c_str(), 0, nullptr, &m, err, sizeof err) != 0) {
@@ -60,7 +61,8 @@ int main(int argc, char **argv) {
   std::vector<Eigen::VectorXd> qs, vs, as;
   std::vector<std::vector<double>> bases, qjs;
   for (int s = 0; s < NS; s++) {
-    qs.push_back(pinocchio::randomConfiguration(model, -Eigen::VectorXd::Ones(model.nq), Eigen::VectorXd::Ones(model.nq)));
+    Eigen::VectorXd one = Eigen::VectorXd::Ones(model.nq);
+    qs.push_back(pinocchio::randomConfiguration(model, -one, one));
     vs.push_back(Eigen::VectorXd::NullaryExpr(nv, [&] { return u(rng); }));
     as.push_back(Eigen::VectorXd::NullaryExpr(nv, [&] { return u(rng); }));
     bases.push_back(std::vector<double>(qs[s].data(), qs[s].data() + 7));

@@ -74,17 +74,16 @@ extern "C" int dyn_model_load(const char *urdf, int njoint, const char *const *j
   std::string path = urdf;
   if (FILE *f = fopen(urdf, "r")) fclose(f);
   else return refuse(err, errlen, path + ": cannot be read");
-  auto d = std::make_unique<dyn_model>();
+  pinocchio::Model pm;
   try {
-    pinocchio::urdf::buildModel(path, pinocchio::JointModelFreeFlyer(), d->model);
+    pinocchio::urdf::buildModel(path, pinocchio::JointModelFreeFlyer(), pm);
   } catch (const std::exception &e) {
     return refuse(err, errlen, path + ": not a usable URDF: " + e.what());
   }
+  auto d = std::make_unique<dyn_model>(std::move(pm));
   std::string msg = map_joints(*d, path, njoint, joints);
   if (!msg.empty()) return refuse(err, errlen, msg);
   map_frames(*d);
-  d->kin = pinocchio::Data(d->model);
-  d->dyn = pinocchio::Data(d->model);
   d->q = pinocchio::neutral(d->model);
   d->v = Eigen::VectorXd::Zero(d->model.nv);
   d->acc = d->v;

@@ -8,10 +8,14 @@
 #include <pinocchio/multibody.hpp>
 
 #include <string>
+#include <utility>
 #include <unordered_map>
 #include <vector>
 
 struct dyn_model {
+  // The data are built in place from the model (never copied: a copy of Pinocchio's data reads
+  // Eigen solvers' fields that were never set).
+  explicit dyn_model(pinocchio::Model &&m) : model(std::move(m)), kin(model), dyn(model) {}
   pinocchio::Model model;
   // Two data sets: the kinematic queries (joint Jacobians, frames, COM) and the dynamic ones
   // (CRBA, RNEA) each fill Pinocchio's work arrays their own way, so neither spoils the other's.

@@ -116,7 +116,8 @@ int dyn_set_state(dyn_model *m, const double *base, const double *q, const doubl
   Eigen::VectorXd nq = m->q;
   if (base) {
     for (int k = 0; k < 7; k++)
-      if (!std::isfinite(base[k])) return dyn_fail(m, DYN_EBADINPUT, std::string("base ") + bname[k] + " is not finite");
+      if (!std::isfinite(base[k]))
+        return dyn_fail(m, DYN_EBADINPUT, std::string("base ") + bname[k] + " is not finite");
     Eigen::Vector4d quat(base[3], base[4], base[5], base[6]);
     double n = quat.norm();
     if (n < 1e-9) return dyn_fail(m, DYN_EBADINPUT, "base quaternion is zero");

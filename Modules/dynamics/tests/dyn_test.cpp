@@ -12,7 +12,6 @@
 #include <cstdlib>
 #include <fstream>
 #include <random>
-#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -53,9 +52,10 @@ double urdf_mass(const std::string &path) {
   std::stringstream ss;
   ss << f.rdbuf();
   std::string s = ss.str();
-  std::regex re("<mass\\s+value=\"([^\"]+)\"");
+  const std::string tag = "<mass value=\"";
   double sum = 0;
-  for (std::sregex_iterator it(s.begin(), s.end(), re), end; it != end; ++it) sum += std::stod((*it)[1]);
+  for (size_t at = s.find(tag); at != std::string::npos; at = s.find(tag, at + 1))
+    sum += std::stod(s.substr(at + tag.size()));
   return sum;
 }
 
