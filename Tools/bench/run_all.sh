@@ -16,6 +16,7 @@ bench() {
 bench shm_latency luajit Tools/bench/shm_latency.lua 100000
 bench kin_leg_ik luajit Tools/bench/kin_leg_ik.lua 100000
 bench dynamics build/bin/dyn_bench 20000 hubo2plus
+bench wbc build/bin/wbc_bench 5000 hubo2plus
 bench vision_pipeline build/bin/img_bench 2
 bench motion_tick luajit Tools/bench/motion_tick.lua 50000
 bench dxl_wire Tools/bench/dxl_wire.sh 4
