@@ -7,7 +7,8 @@
 --   WBC.set_target('r_palm', nil)                     -- drop the task's target
 --   p(WBC.status())  --> { active = true, feasible = true, tick_us = 310,
 --                    --     tasks = { r_palm = { level = 2, error = 0.004, feasible = true, enabled = true,
---                    --               sigma_min = 0.18 }, com = {...} }, last = { seq, ok, error } }
+--                    --               sigma_min = 0.18, held = false }, com = {...} }, last = { seq, ok, error } }
+--                    (held: out of reach for the skill's hold_after s, the target became where it got to)
 --
 -- set_target checks what it can at once (a name, finite numbers, a frame the body has) and raises
 -- an error naming it; the motion state applies the target on its next tick and answers in
@@ -74,7 +75,7 @@ function M.status()
     for i = 0, math.min(x.ntask[0], 16) - 1 do
       local name = ffi.string(x.task_name + i * 32)
       s.tasks[name] = { level = x.task_level[i], enabled = x.task_enabled[i] == 1, feasible = x.task_feasible[i] == 1,
-        error = x.task_error[i], sigma_min = x.task_sigma[i] }
+        error = x.task_error[i], sigma_min = x.task_sigma[i], held = x.task_held[i] == 1 }
     end
     return s
   end)

@@ -11,7 +11,7 @@
 --   c:add('r_palm', 'position', { frame = 'r_palm', level = 2, gain = 4, max_rate = 0.3 })
 --   c:target('r_palm', { 0.35, -0.25, 0.90 })      -- stance frame, m; nil drops the target
 --   local q = c:step(out)                          -- joint angles to command (robot order)
---   c:status('r_palm')  --> { level, enabled, feasible, error, sigma_min, sigma_max, rank, rows }
+--   c:status('r_palm')  --> { kind, frame, level, enabled, feasible, error, sigma_min, sigma_max, rank, rows }
 --   c:pose('r_palm')    --> { x, y, z, R = {9} } the model's, stance frame ('com': position only)
 --
 -- Kinds: position (3), orientation (9, row-major), pose (12: position then rotation), com (3),
@@ -61,7 +61,7 @@ function M.new(robot, urdf, dt, files)
   end
   local self = setmetatable({
     cw = ffi.gc(b_ctl[0], C.wbc_free), name = rawget(robot, 'name') or urdf, n = n, joints = keep, dt = dt,
-    ids = {}, q_in = ffi.new('double[?]', n), q_out = ffi.new('double[?]', n), vec = ffi.new('double[64]'),
+    ids = {}, frames = {}, q_in = ffi.new('double[?]', n), q_out = ffi.new('double[?]', n), vec = ffi.new('double[64]'),
   }, Ctl)
   self:limits(robot)
   return self
@@ -114,7 +114,7 @@ function Ctl:add(name, kind, opts)
   end
   local id = check(self, C.wbc_task_add(self.cw, name, k, opt('frame', name), opt('level', 1), opt('gain', 1),
     opt('max_rate', 0)))
-  self.ids[name] = id
+  self.ids[name], self.frames[name] = id, opt('frame', name)
   return id
 end
 
@@ -153,6 +153,7 @@ function Ctl:status(name, out)
   local s = b_status
   out = out or {}
   out.kind, out.level, out.rows, out.rank = KIND_NAME[tonumber(s.kind)], s.level, s.rows, s.rank
+  out.frame = self.frames[name]
   out.enabled, out.feasible = s.enabled ~= 0, s.feasible ~= 0
   out.error, out.sigma_min, out.sigma_max, out.damping = s.error, s.sigma_min, s.sigma_max, s.damping
   return out
@@ -183,6 +184,10 @@ function Ctl:pose(frame)
 end
 
 function Ctl:step_us() return C.wbc_step_us(self.cw) end
+
+-- The torso's lean bound (rad from upright; 0: none), and whether the last step held it there.
+function Ctl:max_lean(rad) check(self, C.wbc_set_max_lean(self.cw, rad)) end
+function Ctl:leaning() return C.wbc_leaning(self.cw) == 1 end
 
 M.Ctl = Ctl
 return M

@@ -16,6 +16,13 @@ return {
   },
   -- WBC.set_target of a frame of the body that is not a task yet makes it a position task with these
   reach = { level = 2, gain = 3, max_rate = 0.15 },
+  -- a frame's task infeasible this long (s: out of reach, at a singularity) stops chasing its target:
+  -- the target becomes where the frame got to (the task `held`), so the body does not lean and twist
+  -- after a point it cannot reach
+  hold_after = 0.5,
+  -- rad: the torso leans at most this far from upright (a step that would tilt it further stops the
+  -- tilting, above every task): under the walk's fallAngleRate (0.3 rad on the Hubo2+), with margin
+  max_lean = 0.25,
   -- the hardness the state drives the joints at
   hardness = 1.0,
 }

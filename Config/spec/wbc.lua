@@ -56,4 +56,14 @@ local function hardness(v)
   return 'must be a number in 0..1'
 end
 
-return { contacts = frames, tasks = tasks, reach = reach, hardness = hardness }
+local function seconds(v)
+  if finite(v) and v > 0 then return true end
+  return 'must be a number > 0 (s)'
+end
+
+local function lean(v)
+  if finite(v) and v >= 0 and v < math.pi / 2 then return true end
+  return 'must be a number in 0..pi/2 (rad; 0: no bound)'
+end
+
+return { contacts = frames, tasks = tasks, reach = reach, hardness = hardness, hold_after = seconds, max_lean = lean }

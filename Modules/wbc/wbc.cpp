@@ -49,6 +49,8 @@ struct wbc {
   std::vector<wholebody::Task> tasks;
   std::string err;
   double step_us = 0;
+  double max_lean = 0;                // rad of the base from upright (0: no bound)
+  bool leaning = false;               // the last step stopped the base's tilting at max_lean
   bool ready = false;                 // wbc_reset done
 };
 
@@ -66,7 +68,7 @@ int bad_id(wbc *w, int id) {
 
 // The stack for one solve: the contacts and the locked joints on top, then the tasks by level.
 // Fills `owner`: for each level, the task indices in it (-1: the top).
-std::vector<Level> stack(wbc *w, const std::vector<int> &locked, const std::vector<double> &lock_rate,
+std::vector<Level> stack(wbc *w, const std::vector<int> &locked, const std::vector<double> &lock_rate, bool lean_locked,
                          std::vector<std::vector<int>> *owner) {
   wholebody::Body &b = w->body;
   std::map<int, std::vector<int>> by_level;
@@ -90,6 +92,13 @@ std::vector<Level> stack(wbc *w, const std::vector<int> &locked, const std::vect
       J(0, 6 + locked[k]) = 1;
       Js.push_back(J);
       refs.push_back(VectorXd::Constant(1, lock_rate[k]));
+    }
+    if (lean_locked) {
+      // the base's angular velocity about the world's horizontal axes (its twist is in its own frame)
+      MatrixXd J = MatrixXd::Zero(2, b.nv);
+      J.middleCols(3, 3) = b.base_r.toRotationMatrix().topRows(2);
+      Js.push_back(J);
+      refs.push_back(VectorXd::Zero(2));
     }
     if (!Js.empty()) {
       levels.push_back(wholebody::vstack(Js, refs));
@@ -292,12 +301,25 @@ int wbc_step(wbc *w, double *q_out) {
   std::vector<std::vector<int>> owner;
   std::vector<LevelReport> reports;
   VectorXd qd;
+  bool lean_locked = false;
   // solve; a joint the step would carry past a limit is locked at it (a constraint on top) and the
-  // stack solved again, until none does
-  for (int pass = 0; pass <= nj; pass++) {
-    const std::vector<Level> levels = stack(w, locked, lock_rate, &owner);
+  // stack solved again, until none does; the same for the base's lean past max_lean, whose tilting
+  // is stopped
+  for (int pass = 0; pass <= nj + 1; pass++) {
+    const std::vector<Level> levels = stack(w, locked, lock_rate, lean_locked, &owner);
     qd = wholebody::solve_velocity(levels, b.nv, wholebody::Damping(), &reports);
     int added = 0;
+    if (w->max_lean > 0 && !lean_locked) {
+      const Vector3d wl = qd.segment<3>(3) * w->dt;
+      const Quaterniond next = wl.norm() > 0 ? b.base_r * Quaterniond(Eigen::AngleAxisd(wl.norm(), wl.normalized()))
+                                             : b.base_r;
+      const double tilt = std::acos(std::min(1.0, std::max(-1.0, next.toRotationMatrix()(2, 2))));
+      const double now = std::acos(std::min(1.0, std::max(-1.0, b.base_r.toRotationMatrix()(2, 2))));
+      if (tilt > w->max_lean && tilt > now) {
+        lean_locked = true;
+        added++;
+      }
+    }
     for (int j = 0; j < nj; j++) {
       if (std::find(locked.begin(), locked.end(), j) != locked.end()) continue;
       const double next = b.q(j) + qd(6 + j) * w->dt;
@@ -323,8 +345,17 @@ int wbc_step(wbc *w, double *q_out) {
   wholebody::body_integrate(&b, qd, w->dt);
   for (int j = 0; j < nj; j++) q_out[j] = b.q(j);
   w->step_us = thread_cpu_us() - t0;
-  return (int)locked.size();
+  w->leaning = lean_locked;
+  return (int)locked.size() + (lean_locked ? 1 : 0);
 }
+
+int wbc_set_max_lean(wbc *w, double rad) {
+  if (!std::isfinite(rad) || rad < 0 || rad >= M_PI / 2) return fail(w, "max_lean must be within 0..pi/2 rad");
+  w->max_lean = rad;
+  return 0;
+}
+
+int wbc_leaning(const wbc *w) { return w->leaning ? 1 : 0; }
 
 int wbc_frame_pose(wbc *w, const char *frame, double *pos, double *rot) {
   wholebody::Body &b = w->body;

@@ -70,7 +70,15 @@ int wbc_task_status_of(wbc *w, int id, wbc_task_status *out);
 int wbc_ntask(const wbc *w);
 const char *wbc_task_name(const wbc *w, int id);
 
-/* One step: q_out (njoint) the angles to command. Returns the number of joints a limit held. */
+/* The floating base (the torso) may lean at most `rad` from upright (0: no bound): a step that would
+ * tilt it further stops its tilting (a constraint above every task, as a joint limit). A body leaning
+ * after a target it cannot reach would otherwise tip over. */
+int wbc_set_max_lean(wbc *w, double rad);
+/* 1 if the last step held the base at max_lean. */
+int wbc_leaning(const wbc *w);
+
+/* One step: q_out (njoint) the angles to command. Returns the number of joints (and the lean) a limit
+ * held. */
 int wbc_step(wbc *w, double *q_out);
 
 /* The model's pose of a frame (or 'com': position only) in the stance frame: pos 3, rot 9 (NULL ok). */

@@ -67,6 +67,7 @@ function Link:after(ctl, tick)
       x.task_feasible[i - 1] = s.feasible and 1 or 0
       x.task_error[i - 1] = s.error
       x.task_sigma[i - 1] = s.sigma_min
+      x.task_held[i - 1] = s.held and 1 or 0
     end
   end)
 end

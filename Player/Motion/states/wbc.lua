@@ -4,8 +4,9 @@
 -- (Player/Motion/wbc_link.lua), the tasks' status leaves in c.wbc_report. A target for a contact
 -- (a sole) lifts it: it leaves the contacts and becomes a pose task (that position, its present
 -- orientation); a nil target puts it down again as a contact where it is. Every joint is the
--- controller's; the angles it integrates are commanded each tick. Leaves through stance when
--- another motion is asked for.
+-- controller's; the angles it integrates are commanded each tick. A frame's task infeasible for
+-- `hold_after` s (out of reach, singular) is held where the frame got to (status: held) instead of
+-- leaning the body after it. Leaves through stance when another motion is asked for.
 local Config = require('Config')
 local wbc = require('wbc')
 
@@ -20,6 +21,7 @@ local function skill(c)
     local cfg = Config.load('wbc', nil, { robot = c.robot.name })
     local ctl = wbc.load({ robot = c.robot.name, dt = c.robot.period })
     for name, t in pairs(cfg.tasks) do ctl:add(name, t.kind, t) end
+    ctl:max_lean(cfg.max_lean)
     d.cfg, d.ctl, d.out, d.report = cfg, ctl, {}, { tasks = {} }
   end
   return d
@@ -60,6 +62,8 @@ end
 local function set_target(d, name, target)
   local ctl = d.ctl
   if index_of(d.cfg.contacts, name) then return move_contact(d, name, target) end
+  d.held[name] = nil
+  d.infeasible[name] = 0
   if not ctl:has(name) then
     if target == nil then return end
     local r = d.cfg.reach
@@ -71,7 +75,7 @@ end
 function M.entry(c)
   local d = skill(c)
   local ctl = d.ctl
-  d.contacts = {}
+  d.contacts, d.held, d.infeasible = {}, {}, {}
   for i, f in ipairs(d.cfg.contacts) do d.contacts[i] = f end
   ctl:contacts(d.contacts)
   ctl:reset(c.q)
@@ -92,13 +96,37 @@ local function apply_inbox(c, d)
   c.wbc_done = { seq = inbox.seq, ok = ok, error = not ok and tostring(err) or nil }
 end
 
-local function report(d)
+local FRAME_KINDS = { position = true, pose = true, orientation = true }
+
+-- A frame's task infeasible for hold_after s: its target becomes where the frame is.
+local function hold_if_stuck(c, d, name, s)
+  if not (s.enabled and FRAME_KINDS[s.kind]) or s.feasible then
+    d.infeasible[name] = 0
+    return
+  end
+  d.infeasible[name] = (d.infeasible[name] or 0) + c.dt
+  if d.infeasible[name] < d.cfg.hold_after or d.held[name] then return end
+  local p = d.ctl:pose(s.frame)
+  if s.kind == 'position' then
+    d.ctl:target(name, { p.x, p.y, p.z })
+  elseif s.kind == 'pose' then
+    local R = p.R
+    d.ctl:target(name, { p.x, p.y, p.z, R[1], R[2], R[3], R[4], R[5], R[6], R[7], R[8], R[9] })
+  else
+    d.ctl:target(name, p.R)
+  end
+  d.held[name] = true
+end
+
+local function report(c, d)
   local ctl, r = d.ctl, d.report
   r.feasible = true
   for i, name in ipairs(ctl:tasks()) do
     local s = ctl:status(name, r.tasks[i])
     s.name = name
     r.tasks[i] = s
+    hold_if_stuck(c, d, name, s)
+    s.held = d.held[name] or false
     -- a posture fills whatever freedom is left: never met whole, it is not a task to flag
     if s.enabled and not s.feasible and s.kind ~= 'posture' then r.feasible = false end
   end
@@ -112,7 +140,7 @@ function M.update(c)
   local q = d.ctl:step(d.out)
   local h = d.cfg.hardness
   for _, i in ipairs(c.own) do c.q[i], c.h[i] = q[i], h end
-  c.wbc_report = report(d)
+  c.wbc_report = report(c, d)
   if c.want ~= 'wbc' then return 'done' end
 end
 
