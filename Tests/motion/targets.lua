@@ -24,4 +24,11 @@ return {
     turn = { command = 0.6, least = 0.5 },
     kick = { least = 0 },                         -- no kick target: not a football robot
   },
+  hoap3 = {
+    forward = { command = 0.10, least = 0.08 },
+    sideways = { command = 0.04, least = 0.03 },
+    backward = { command = 0.05, least = 0.04 },
+    turn = { command = 0.4, least = 0.3 },
+    kick = { least = 0 },                         -- no kick yet
+  },
 }
