@@ -9,19 +9,21 @@ return {
   tStep = 0.4,               -- s
   tZmp = 0.175,              -- s: sqrt(0.30 / 9.81)
   phSingle = { 0.15, 0.85 },
-  -- posture: knees a little bent (0.24 m: a 4.5 N*m knee holds the 7.9 kg above it at 3.4 cm of
-  -- lever, 36 deg of knee bend; 0.24 m is about 29 deg)
+  -- posture: the knees bent 35 deg at 0.24 m, where a knee in single support carries the 7.9 kg
+  -- above it at 3.2 cm, 2.5 of its 4.5 N*m (at 0.23 m: 50 deg, 3.4 N*m)
   bodyHeight = 0.24,         -- m
   -- the torso leans forward: the upper body's COM (trunk, head and hanging arms, 5.9 kg) is 2.7 cm
-  -- behind the hip axes upright, 1.5 N*m on 3 N*m hip pitch drives; 0.15 rad over the COM's 0.17 m
-  -- height above the hips puts it over them (upright, random commands tip it backwards)
-  bodyTilt = 0.15,           -- rad
+  -- behind the hip axes upright, 1.5 N*m on 3 N*m hip pitch drives (upright, random commands tip
+  -- it backwards: a fall on 1 of 3 seeds at 0.05 rad, on none of 5 at 0.1); 0.15 would put it over
+  -- the hips, but the sim's reset places a robot with its torso level, so a stance leaning 0.15
+  -- lands on its heels and falls (0.1 does not)
+  bodyTilt = 0.1,            -- rad
   footY = 0.044,             -- m: the hips at 0.039, the soles' centres at 0.044 (S1 foot frames)
   stepHeight = 0.025,        -- m
   -- the soles about the ankle point: toe 0.068, heel 0.040, inner edge 0.0315 (hoap3_reference.txt)
   sole = { toe = 0.068, heel = 0.040, inner = 0.0315 },
   -- velocity and step limits: short steps
-  velLimitX = { -0.06, 0.12 },
+  velLimitX = { -0.06, 0.15 },
   velLimitY = { -0.05, 0.05 },
   velLimitA = { -0.5, 0.5 },
   accLimit = { 0.15, 0.15, 0.5 },
