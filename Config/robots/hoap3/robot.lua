@@ -29,7 +29,10 @@ return {
   joints = joints,
   groups = {
     waist = { 'waist_pitch' },
-    head = { 'head_pan', 'head_tilt', 'head_roll' },
+    -- the head the platform turns (motion.head_command, look-at): pan and tilt; the neck's roll is a
+    -- group of its own that no motion state drives, held like the waist
+    head = { 'head_pan', 'head_tilt' },
+    neck = { 'head_roll' },
     larm = { 'l_sho_pitch', 'l_sho_roll', 'l_arm_yaw', 'l_el', 'l_wrist_yaw' },
     rarm = { 'r_sho_pitch', 'r_sho_roll', 'r_arm_yaw', 'r_el', 'r_wrist_yaw' },
     lleg = { 'l_hip_yaw', 'l_hip_roll', 'l_hip_pitch', 'l_knee', 'l_ank_pitch', 'l_ank_roll' },
@@ -88,10 +91,10 @@ return {
   -- 6-axis force/torque at the ankles (dcm.sensor.ft), the sim's instruments: the real HOAP-3 has four
   -- pressure sensors under each foot instead (S7), which no platform reads yet
   ft = { lfoot = 'l_ank_roll', rfoot = 'r_ank_roll' },
-  -- the kinematics' chains (Config/common/robot.lua): the look-at turns the neck's pan and tilt; the
-  -- roll, between the tilt and the camera's link, takes its angle from the whole-body angles. The arms
-  -- and the head hang from the waist: their functions take the whole-body angles for it.
-  chains = { head = { joints = { 'head_pan', 'head_tilt' }, tip = 'camera_link' } },
+  -- the kinematics' chains are the defaults (Config/common/robot.lua): the head's look-at turns the
+  -- pan and the tilt, and the roll, between the tilt and the camera's link, takes its angle from the
+  -- whole-body angles; the arms and the head hang from the waist: their functions take the
+  -- whole-body angles for it.
   -- massless frames Tools/urdf/gen_urdf.py adds to hoap3.urdf: link, and origin (xyz) and orientation
   -- (rpy) in the reference frame at the zero pose (soles on z = 0)
   frames = {

@@ -14,10 +14,9 @@ return {
   bodyHeight = 0.24,         -- m
   -- the torso leans forward: the upper body's COM (trunk, head and hanging arms, 5.9 kg) is 2.7 cm
   -- behind the hip axes upright, 1.5 N*m on 3 N*m hip pitch drives (upright, random commands tip
-  -- it backwards: a fall on 1 of 3 seeds at 0.05 rad, on none of 5 at 0.1); 0.15 would put it over
-  -- the hips, but the sim's reset places a robot with its torso level, so a stance leaning 0.15
-  -- lands on its heels and falls (0.1 does not)
-  bodyTilt = 0.1,            -- rad
+  -- it backwards: a fall on 1 of 3 seeds at 0.05 rad, on none of 5 at 0.1 or 0.15); 0.15 rad over
+  -- the COM's 0.17 m height above the hips puts it over them
+  bodyTilt = 0.15,           -- rad
   footY = 0.044,             -- m: the hips at 0.039, the soles' centres at 0.044 (S1 foot frames)
   stepHeight = 0.025,        -- m
   -- the soles about the ankle point: toe 0.068, heel 0.040, inner edge 0.0315 (hoap3_reference.txt)
@@ -28,8 +27,8 @@ return {
   velLimitA = { -0.5, 0.5 },
   accLimit = { 0.15, 0.15, 0.5 },
   stepLimitX = { -0.03, 0.06 },
-  stepLimitY = { 0.078, 0.12 },
-  stepLimitA = { -0.05, 0.35 },
+  stepLimitY = { 0.078, 0.13 },
+  stepLimitA = { -0.05, 0.45 },
   -- arms hanging at the sides (shoulder pitch +pi/2 from the zero pose's arms forward), a little out
   -- and the elbows a little bent; the shoulder pitch swings them about the torso's y axis. No roll
   -- joint for feedback: the walk takes each joint's axis at the zero pose, where the shoulder roll
