@@ -72,19 +72,20 @@ return {
   -- joint references at 1 kHz (S4, S5), which a HOAP-3 platform would interpolate to
   period = 0.005,
   -- the DCM's safe state when motion dies or stops answering (Modules/dcm/guard.c): from the pose of
-  -- the trip into this crouch within `ramp` s: both feet flat under the hips, the torso upright
-  -- 0.23 m above the soles (the walk stands at 0.24): the legs' IK of that stance
-  -- (Lib/kinematics.lua). The waist straight; the arms and the head stay where they were. The legs
-  -- are held at `hardness` 0.8, not the platform's 0.3: in this crouch each knee carries 1.7 N*m
-  -- (half of the 7.9 kg above the knees at 4.5 cm), more than 0.3 of its 4.5 N*m.
+  -- the trip into this crouch within `ramp` s: both feet flat under the hips, the torso 0.23 m above
+  -- the soles leaning 0.15 rad forward as the walk's stance (0.24 m), the ankles under the centre of
+  -- mass: the legs' IK of that stance (Lib/kinematics.lua). The waist straight; the arms and the head
+  -- stay where they were. The legs are held at `hardness` 0.8, not the platform's 0.3: in this
+  -- crouch each knee carries 1.7 N*m (half of the 7.9 kg above the knees at 4.5 cm), more than 0.3
+  -- of its 4.5 N*m.
   safe_pose = {
     ramp = 0.3,
     hardness = 0.8,
     q = {
       waist_pitch = 0,
-      l_hip_yaw = 0, l_hip_roll = 0.026, l_hip_pitch = -0.439, l_knee = 0.878, l_ank_pitch = -0.439,
+      l_hip_yaw = 0.004, l_hip_roll = 0.026, l_hip_pitch = -0.604, l_knee = 0.878, l_ank_pitch = -0.424,
       l_ank_roll = -0.026,
-      r_hip_yaw = 0, r_hip_roll = -0.026, r_hip_pitch = -0.439, r_knee = 0.878, r_ank_pitch = -0.439,
+      r_hip_yaw = -0.004, r_hip_roll = -0.026, r_hip_pitch = -0.604, r_knee = 0.878, r_ank_pitch = -0.424,
       r_ank_roll = 0.026,
     },
   },
