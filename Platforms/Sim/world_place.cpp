@@ -1,4 +1,4 @@
-// world_place: teleports -- a robot placed on the carpet in a given pose, on its lower sole, the ball placed
+// world_place: teleports -- a robot placed upright on the carpet in a given pose, the ball placed
 // rolling -- the reset to the start, and pushes on a torso.
 #include <algorithm>
 #include <cmath>
