@@ -4,7 +4,7 @@
 --   Sim.truth()  --> { x, y, z, yaw, roll, pitch, fallen = bool, ball = { x, y, z, vx, vy, touch, touch_time } }
 --                    (ball.touch: world index of the robot that touched it last, -1 none since placed)
 --   Sim.reset()                      every robot to its start pose, ball to the centre, score 0:0
---   Sim.teleport_robot(x, y, yaw)    this robot, upright, joints at their commands, at rest
+--   Sim.teleport_robot(x, y, yaw)    this robot, joints at their commands, on its lower sole laid flat, at rest
 --   Sim.teleport_ball(x, y [, vx, vy])
 --   Sim.push(fx, fy, duration)       N on the torso, field frame, for duration s of robot time
 --   Sim.press_button(i [, duration]) button i (1 or 2) held for duration s (default 0.1)

@@ -11,7 +11,9 @@
 -- damped least squares IK), head (pan, tilt; or two horizontal tilt axes, such as the Hubo's neck,
 -- whose look-at is solved numerically within their limits). `joints` lists
 -- the chain's joints from its base to its tip (default: the group of the same name); `tip` is a
--- frame (or link) of the URDF on the chain's last link. Every chain is optional; a function of a
+-- frame (or link) of the URDF on the chain's last link, or for an arm or the head on a link below it
+-- (the HOAP-3's neck roll between the tilt and the camera: the joints between take their angles from
+-- the trailing `q`, as the joints above the chain do). Every chain is optional; a function of a
 -- chain the body lacks raises an error.
 --
 --   local kin = require('kinematics')

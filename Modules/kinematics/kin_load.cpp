@@ -108,10 +108,14 @@ extern "C" int kin_model_load(const kin_spec *s, kin_model **out, char *err, siz
     } else {
       return fail(err, errlen, what + ": tip '" + tip + "' is no frame or link of " + file);
     }
+    // on the last joint's link, or on a link below it (its joint then named to the model)
     const int last = link_of[idx[i].back()];
-    if (on != last) {
+    int up = on;
+    while (up > 0 && up != last) up = md.links[up].parent;
+    if (up != last) {
       return fail(err, errlen, what + ": tip '" + tip + "' is on link '" + md.links[on].name +
-                                   "', not on the last joint's link '" + md.links[last].name + "' (" + file + ")");
+                                   "', not on or below the last joint's link '" + md.links[last].name + "' (" +
+                                   file + ")");
     }
     kin_chain &c = chains[i];
     c.name = cs.name;
@@ -119,6 +123,7 @@ extern "C" int kin_model_load(const kin_spec *s, kin_model **out, char *err, siz
     c.side = cs.side;
     c.n = cs.n;
     c.joints = idx[i].data();
+    c.tip_below = on == last ? 0 : 1 + index.at(md.links[on].joint);
     for (int k = 0; k < 3; k++) {
       c.tip[k] = tp[k];
       for (int m = 0; m < 3; m++) c.tip_rot[3 * k + m] = tr(k, m);

@@ -37,6 +37,7 @@ struct Chain {
   bool present = false;
   std::vector<int> idx;
   int base = -1;            // parent joint of the first joint (-1: the torso)
+  int tip_joint = -1;       // joint whose link carries the tip: the last one, or one below it
   Vector3d tip = Vector3d::Zero();
   Matrix3d tip_rot = Matrix3d::Identity();
 };
@@ -143,8 +144,23 @@ void fill_full(const kin_model *m, const Chain &c, const double *qc, const doubl
 
 // The tip frame of a chain for the whole-body angles qfull: R (axes) and p (origin), torso frame.
 Pose tip_pose(const kin_model *m, const Chain &c, const double *qfull, int *flags) {
-  Pose T = chain_pose(m, c.idx.back(), qfull, flags);
+  Pose T = chain_pose(m, c.tip_joint, qfull, flags);
   return Pose{T.R * c.tip_rot, T.R * c.tip + T.p - m->origin};
+}
+
+// The tip frame carried onto the chain's last link for the angles qbase gives the joints between
+// them (a neck roll below the tilt): zero-pose coordinates, as Chain::tip and tip_rot.
+void tip_on_last(const kin_model *m, const Chain &c, const double *qbase, Vector3d *tip, Matrix3d *rot) {
+  *tip = c.tip;
+  *rot = c.tip_rot;
+  const int last = c.idx.back();
+  if (c.tip_joint == last || !qbase) return;
+  double q[KIN_MAXJ] = {0};
+  for (int j = c.tip_joint; j != last; j = m->joints[j].parent) q[j] = qbase[j];
+  int flags = 0;
+  const Pose T = chain_pose(m, c.tip_joint, q, &flags);
+  *tip = T.R * c.tip + T.p;
+  *rot = T.R * c.tip_rot;
 }
 
 bool is_axis(const Vector3d &a, int k, double *sign) {
@@ -190,6 +206,19 @@ bool setup_chain(kin_model *m, const kin_desc *d, const kin_chain &c, Chain *out
     }
   }
   out->base = m->joints[c.joints[0]].parent;
+  out->tip_joint = c.joints[c.n - 1];
+  if (c.tip_below != 0) {
+    // the tip's link hangs below the last joint: walk up from it to the last joint
+    const int t = c.tip_below - 1;
+    int j = t;
+    while (j >= 0 && j < d->njoint && j != out->tip_joint) j = m->joints[j].parent;
+    if (c.kind == KIN_LEG || t < 0 || t >= d->njoint || j != out->tip_joint) {
+      hrp_err(err, errlen, "%s: the tip must be on the last joint's link%s", what.c_str(),
+              c.kind == KIN_LEG ? " (a leg's analytic IK)" : " or below it");
+      return false;
+    }
+    out->tip_joint = t;
+  }
   out->tip = Vector3d(c.tip[0], c.tip[1], c.tip[2]);
   for (int i = 0; i < 3; i++)
     for (int k = 0; k < 3; k++) out->tip_rot(i, k) = c.tip_rot[3 * i + k];
@@ -616,8 +645,10 @@ int kin_arm_ik(const kin_model *m, int side, const double *pos, const double *qb
   Pose B = kIdentity;
   if (ch->base >= 0 && qbase) B = chain_pose(m, ch->base, qbase, &flags);
   // target in the base's zero-pose frame (reference coordinates)
-  Vector3d target;
-  const Vector3d h0 = B.R * ch->tip + B.p - m->origin;  // hand at the arm's zero pose
+  Vector3d target, tip;
+  Matrix3d tip_rot;
+  tip_on_last(m, *ch, qbase, &tip, &tip_rot);
+  const Vector3d h0 = B.R * tip + B.p - m->origin;  // hand at the arm's zero pose
   for (int k = 0; k < 3; k++) target[k] = std::isfinite(pos[k]) ? pos[k] : (flags |= KIN_BAD_INPUT, h0[k]);
   target = B.R.transpose() * (target + m->origin - B.p);
   const double lambda = 1e-4;
@@ -636,7 +667,7 @@ int kin_arm_ik(const kin_model *m, int side, const double *pos, const double *qb
       T.p = T.R * (J.anchor - E * J.anchor) + T.p;
       T.R = T.R * E;
     }
-    Vector3d h = T.R * ch->tip + T.p;
+    Vector3d h = T.R * tip + T.p;
     for (int k = 0; k < n; k++) Jac.col(k) = w[k].cross(h - r[k]);
     Vector3d e = target - h;
     err_norm = e.norm();
@@ -722,13 +753,16 @@ int kin_head_look_at(const kin_model *m, const double *target, const double *qba
   Pose B = kIdentity;
   if (ch->base >= 0 && qbase) B = chain_pose(m, ch->base, qbase, &flags);
   const Joint &P = m->joints[ch->idx[0]], &Tl = m->joints[ch->idx[1]];
+  Vector3d tip;
+  Matrix3d tip_rot;
+  tip_on_last(m, *ch, qbase, &tip, &tip_rot);
   // the target in the head base's zero-pose frame
   Vector3d p = B.R.transpose() * (Vector3d(target[0], target[1], target[2]) + m->origin - B.p);
   // Pan: the optical axis (in a plane at lateral offset e from the pan axis: the tilt turns about
   // y, and the optical axis has no y part) must pass over the target.
   double dx = p.x() - P.anchor.x(), dy = p.y() - P.anchor.y();
   double rho = std::hypot(dx, dy);
-  double e = ch->tip.y() - P.anchor.y();
+  double e = tip.y() - P.anchor.y();
   double ratio = rho > 1e-12 ? e / rho : 0.0;
   if (std::fabs(ratio) > 1.0) flags |= KIN_UNREACHABLE;
   double a = std::atan2(dy, dx) - std::asin(clamp(ratio, -1.0, 1.0));
@@ -738,8 +772,8 @@ int kin_head_look_at(const kin_model *m, const double *target, const double *qba
   Vector3d pa(P.anchor.x(), P.anchor.y(), 0);
   Vector3d pl = rz(-a) * (p - pa) + pa;
   double X = pl.x() - Tl.anchor.x(), Z = pl.z() - Tl.anchor.z();
-  double cx = ch->tip.x() - Tl.anchor.x(), cz = ch->tip.z() - Tl.anchor.z();
-  double ddx = ch->tip_rot(0, 0), ddz = ch->tip_rot(2, 0);
+  double cx = tip.x() - Tl.anchor.x(), cz = tip.z() - Tl.anchor.z();
+  double ddx = tip_rot(0, 0), ddz = tip_rot(2, 0);
   const double dn = std::hypot(ddx, ddz);
   ddx /= dn;
   ddz /= dn;

@@ -54,6 +54,9 @@ extern "C" {
 #define KIN_ARM 1    /* 1..16 joints, any axes. Tip: the hand frame. */
 #define KIN_HEAD 2   /* 2 joints: pan (axis along z), tilt (along y), the optical axis (the tip's
                         x) perpendicular to the tilt axis. Tip: the camera frame. */
+/* A tip is a frame on the chain's last link or, for an arm or a head, on a link below it (a neck
+ * roll between the tilt and the camera): the joints between the chain and its tip then take their
+ * angles from qbase, as those above the chain do. A leg's tip is on its last link. */
 
 #define KIN_MAXJ 64          /* joints of a model at most */
 #define KIN_MAXARM 16        /* joints of an arm at most */
@@ -66,6 +69,8 @@ typedef struct kin_chain {
   const int *joints;         /* (n) joint indices from the base to the tip */
   double tip[3];             /* m, tip frame origin at the zero pose, reference frame */
   double tip_rot[9];         /* tip frame axes at the zero pose, reference frame (row-major) */
+  int tip_below;             /* 0: the tip is on the last joint's link; else 1 + the index of the joint
+                                whose link carries it, a joint below the last one (arm, head) */
 } kin_chain;
 
 /* Everything the model needs, in plain arrays (copied by kin_model_create). */

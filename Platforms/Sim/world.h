@@ -148,8 +148,8 @@ class World {
   void step();
   void sense(int r, Sensors *s);
   Truth truth(int r) const;
-  // Places robot r upright at (x, y, yaw), soles on the carpet, joints at `q` (njoints, NULL:
-  // its current commands), at rest.
+  // Places robot r at (x, y, yaw) on the carpet, its lower sole laid flat (a body without soles:
+  // its torso upright), joints at `q` (njoints, NULL: its current commands), at rest.
   void place_robot(int r, double x, double y, double yaw, const double *q = nullptr);
   void place_ball(double x, double y, double vx = 0, double vy = 0);
   // Hangs robot r on a gantry: its torso (root link) lifted `height` m and held fixed to the world

@@ -9,6 +9,42 @@ namespace sim {
 
 using namespace world_internal;
 
+// Link poses for joint angles ql with the root at the origin turned by R0; the lowest point of any
+// box into *zmin, and the link carrying the lowest sole box into *sole (-1: none).
+static void place_links(const Model &m, const std::vector<double> &ql, const Mat3 &R0, std::vector<Vec3> *pos,
+                        std::vector<Mat3> *rot, double *zmin, int *sole, Mat3 *sole_rot) {
+  const int nl = (int)m.links.size();
+  double sole_min = 1e9;
+  *zmin = 1e9;
+  *sole = -1;
+  for (int i = 0; i < nl; i++) {
+    const Link &l = m.links[i];
+    if (l.parent < 0) {
+      (*pos)[i] = Vec3::Zero();
+      (*rot)[i] = R0;
+    } else {
+      (*pos)[i] = (*pos)[l.parent] + (*rot)[l.parent] * l.origin;
+      (*rot)[i] = (*rot)[l.parent] * l.origin_rot * Eigen::AngleAxisd(ql[i], l.axis).toRotationMatrix();
+    }
+    for (const Box &b : l.boxes) {
+      for (int c = 0; c < 8; c++) {
+        Vec3 h((c & 1 ? 0.5 : -0.5) * b.size.x(), (c & 2 ? 0.5 : -0.5) * b.size.y(),
+               (c & 4 ? 0.5 : -0.5) * b.size.z());
+        const double z = ((*pos)[i] + (*rot)[i] * (b.pos + b.rot * h)).z();
+        *zmin = std::min(*zmin, z);
+        if (b.sole && z < sole_min) {
+          sole_min = z;
+          *sole = i;
+          *sole_rot = (*rot)[i] * b.rot;
+        }
+      }
+    }
+  }
+}
+
+// The robot stands on its lower sole laid flat: a pose with the torso leaning over flat feet (a
+// walk's stance) is placed as it stands, not with the torso upright and the feet tipped onto their
+// heels; a body without soles is placed with its torso upright.
 void World::place_robot(int r, double x, double y, double yaw, const double *q) {
   Robot &rb = robots_[r];
   const Model &m = *rb.m;
@@ -21,24 +57,18 @@ void World::place_robot(int r, double x, double y, double yaw, const double *q) 
   }
   std::vector<Vec3> pos(nl);
   std::vector<Mat3> rot(nl);
-  double zmin = 1e9;
-  for (int i = 0; i < nl; i++) {
-    const Link &l = m.links[i];
-    if (l.parent < 0) {
-      pos[i] = Vec3::Zero();
-      rot[i] = rot_z(yaw);
-    } else {
-      pos[i] = pos[l.parent] + rot[l.parent] * l.origin;
-      rot[i] = rot[l.parent] * l.origin_rot * Eigen::AngleAxisd(ql[i], l.axis).toRotationMatrix();
-    }
-    for (const Box &b : l.boxes) {
-      for (int c = 0; c < 8; c++) {
-        Vec3 h((c & 1 ? 0.5 : -0.5) * b.size.x(), (c & 2 ? 0.5 : -0.5) * b.size.y(),
-               (c & 4 ? 0.5 : -0.5) * b.size.z());
-        zmin = std::min(zmin, (pos[i] + rot[i] * (b.pos + b.rot * h)).z());
-      }
-    }
+  double zmin;
+  int sole;
+  Mat3 sole_rot = Mat3::Identity();
+  place_links(m, ql, Mat3::Identity(), &pos, &rot, &zmin, &sole, &sole_rot);
+  Mat3 level = Mat3::Identity();
+  if (sole >= 0) {
+    // the shortest turn taking the sole's normal up
+    const Vec3 up = sole_rot.col(2), axis = up.cross(Vec3::UnitZ());
+    const double s = axis.norm();
+    if (s > 1e-12) level = Eigen::AngleAxisd(std::atan2(s, up.z()), axis / s).toRotationMatrix();
   }
+  place_links(m, ql, rot_z(yaw) * level, &pos, &rot, &zmin, &sole, &sole_rot);
   const Vec3 shift(x, y, -zmin + 0.0002);
   for (int i = 0; i < nl; i++) {
     dBodyID b = rb.body[i];

@@ -13,8 +13,9 @@ local U = require('Tests.kinematics.urdf_read')
 local abs = math.abs
 
 -- total mass of each body's reference data (op3_reference.txt, darwin_reference.txt, waistbot_reference.txt;
--- the Hubo2+: hubo_reference.txt's 38.47 kg plus robot.lua's added_masses, the published 45 kg)
-local MASS = { op3 = 3.1475, darwin = 2.92532, waistbot = 3.4475, hubo2plus = 45.0 }
+-- the Hubo2+: hubo_reference.txt's 38.47 kg plus robot.lua's added_masses, the published 45 kg;
+-- the HOAP-3: hoap3_reference.txt, the Fujitsu sheet's full-load masses)
+local MASS = { op3 = 3.1475, darwin = 2.92532, waistbot = 3.4475, hubo2plus = 45.0, hoap3 = 8.8024 }
 
 local function bodies()
   local list = {}

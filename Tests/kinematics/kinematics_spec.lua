@@ -1,5 +1,5 @@
 -- luacheck: std +busted
--- Kinematics of every body (Config/robots: op3, darwin, the waistbot test body), built from its URDF
+-- Kinematics of every body (Config/robots: op3, darwin, the waistbot test body, hubo2plus, hoap3), built from its URDF
 -- and robot.lua's chains, through the Lua API: FK(IK(x)) = x over the workspace, known poses,
 -- unreachable and NaN targets, limits, look-at (the DARwIn-OP's camera is pitched 45 deg down at
 -- the zero pose), arms of any length, a waist, agreement with an independent reading of the URDF,
@@ -11,7 +11,7 @@ local U = require('Tests.kinematics.urdf_read')
 local sin, cos, abs, sqrt, atan2, pi = math.sin, math.cos, math.abs, math.sqrt, math.atan2, math.pi
 local matmul, rpy_rot = U.matmul, U.rpy_rot
 
-local BODIES = { 'op3', 'darwin', 'waistbot', 'hubo2plus' }
+local BODIES = { 'op3', 'darwin', 'waistbot', 'hubo2plus', 'hoap3' }
 
 -- Where each body's feet and eyes work (torso frame, m and rad): the walking workspace sampled for
 -- the leg IK (x, y outward from the zero-pose foot, z above it: half-ranges or ranges; roll, pitch,
@@ -21,6 +21,10 @@ local BODIES = { 'op3', 'darwin', 'waistbot', 'hubo2plus' }
 local SMALL = { x = 0.09, y = { -0.03, 0.06 }, z = { 0.02, 0.08 }, roll = 0.3, pitch = 0.3, yaw = 0.6,
   look_x = { 0.3, 4 }, look_y = 1.5 }
 local WORKSPACE = {
+  -- the HOAP-3's ankles pitch by 60 deg and roll by 25 deg at most, its hips turn inwards by 30 deg
+  -- (robot.lua, S1's limits); its steps are 0.06 m at most (walk.lua)
+  hoap3 = { x = 0.06, y = { -0.01, 0.05 }, z = { 0.02, 0.06 }, roll = 0.2, pitch = 0.2, yaw = 0.35,
+    look_x = { 0.3, 4 }, look_y = 1.5 },
   hubo2plus = { x = 0.15, y = { -0.03, 0.07 }, z = { 0.05, 0.15 }, roll = 0.08, pitch = 0.2, yaw = 0.3,
     look_x = { 2.5, 5 }, look_y = 0.3 },
 }
@@ -261,7 +265,9 @@ for _, body in ipairs(BODIES) do
           local qa, qs = {}, {}
           for k = 1, #idx do
             local lo, hi = m:limits(m.joints[idx[k]])
-            qa[k], qs[k] = R(math.max(lo, -1), math.min(hi, 1)), 0
+            -- the start: the zero pose, 0.1 rad inside a limit that zero sits on (the HOAP-3's
+            -- straight elbow: from there bending is not a first-order motion of the hand)
+            qa[k], qs[k] = R(math.max(lo, -1), math.min(hi, 1)), math.min(math.max(0, lo + 0.1), hi - 0.1)
           end
           local h = m:arm_fk(side, qa)
           local _, flags = m:arm_ik(side, h, qs)
@@ -475,5 +481,50 @@ describe('waistbot: a waist carries the arms and the head', function()
     end
     assert.is_true(worst_look < 1e-9, worst_look)
     assert.is_true(worst_arm < 1e-4, worst_arm)
+  end)
+end)
+
+describe('hoap3: a neck roll between the tilt and the camera', function()
+  local m = kin.load({ robot = 'hoap3' })
+  -- the roll axis: along -x through the tilt's anchor, 0.015 m ahead of and 0.283 m above the torso
+  -- origin (hoap3_reference.txt: anchor (-0.02, 0, 0.533), the torso origin at (-0.035, 0, 0.25))
+  local ax = { 0.015, 0, 0.283 }
+  local function rolled(p, a)   -- p turned by a about -x through ax
+    local y, z = p[2] - ax[2], p[3] - ax[3]
+    return { p[1], ax[2] + cos(a) * y + sin(a) * z, ax[3] - sin(a) * y + cos(a) * z }
+  end
+
+  it('rolling the neck carries the camera about the roll axis', function()
+    local q = zeros(m)
+    q[m.index.head_roll + 1] = 0.2
+    local c0, c1 = m:head_fk({ 0, 0 }), m:head_fk({ 0, 0 }, nil, q)
+    assert.is_true(dist3(c0, { 0.065, -0.03, 0.279 }) < 1e-12)   -- the right eye, at the zero pose
+    assert.is_true(dist3(c1, rolled(c0, 0.2)) < 1e-12)
+    assert.is_true(dist3(m:camera_pose(q, { 0, 0, 0 }), c1) < 1e-12)
+  end)
+
+  it('look_at points the optical axis at the target with the neck rolled', function()
+    local R = rng(23)
+    for _, roll in ipairs({ -0.2, 0, 0.25 }) do
+      local q = zeros(m)
+      q[m.index.head_roll + 1] = roll
+      local worst, solved = 0, 0
+      for _ = 1, 200 do
+        local t = { R(0.5, 3), R(-1, 1), R(-0.3, 0.1) }
+        local qh, flags = m:look_at(t, nil, q)
+        if flags == 0 then
+          worst, solved = math.max(worst, look_error(t, m:head_fk(qh, nil, q))), solved + 1
+        end
+      end
+      assert.is_true(solved > 100, 'roll ' .. roll .. ': ' .. solved .. ' solved')
+      assert.is_true(worst < 1e-9, 'roll ' .. roll .. ': worst ' .. worst)
+    end
+  end)
+
+  it('weighs the reference\'s 8.80 kg with its COM 0.3 mm ahead of the ankles at the zero pose', function()
+    assert.is_near(8.8024, m.mass, 1e-9)
+    local c = m:com(zeros(m))
+    assert.is_near(0.00027, c[1], 1e-5)           -- torso frame: the ankles at x = 0
+    assert.is_near(0.3174 - m.origin[3], c[3], 1e-4)
   end)
 end)

@@ -64,6 +64,9 @@ end
 -- a fresh world; the robot placed at (x, y, yaw) (default: a field corner, facing along the
 -- diagonal: 10 m of free carpet), the ball out of the way
 local function start_clean(x, y, yaw)
+  -- a walking robot stops first: put back into the world mid-step, a heavy body on weak drives (the
+  -- HOAP-3) falls, and one without stand-ups stays down for the next run
+  if Motion.state() == 'walk' then stand(5) end
   Sim.reset()
   wait(0.2)
   Sim.teleport_robot(x or -4.3, y or -3.3, yaw or math.atan2(6.6, 8.6))

@@ -38,7 +38,7 @@ describe('walk config spec', function()
 
   it("passes every body's walk, filling the kick phases' and the arms' left-out fields", function()
     Config.use_root(nil)
-    for _, body in ipairs({ 'op3', 'darwin', 'hubo2plus', 'waistbot' }) do
+    for _, body in ipairs({ 'op3', 'darwin', 'hubo2plus', 'waistbot', 'hoap3' }) do
       local w = Config.load('walk', nil, { robot = body, platform = 'Sim' })
       for _, ph in ipairs(w.kick.leg) do
         assert.is_number(ph.x + ph.y + ph.z + ph.hip + ph.knee + ph.ankle + ph.arm)

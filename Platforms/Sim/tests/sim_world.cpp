@@ -52,12 +52,14 @@ int main() {
         int hj = -1;
         for (int j = 0; j < nj; j++) if (p.joints[j] == hn) hj = j;
         if (hj < 0) continue;
+        // 0.4 rad, or the joint's upper limit where it is nearer (the HOAP-3's neck tilts up by 0.26)
+        const sim::Link &hl = m.links[m.joint_link(hn)];
+        const double a = std::min(0.4, hl.upper);
         z.assign(nj, 0.0);
-        z[hj] = 0.4;
+        z[hj] = a;
         w.place_robot(0, 0, 0, 0, z.data());
         w.camera_pose(0, &c1, &R1);
-        const sim::Vec3 ax = m.links[m.joint_link(hn)].axis;
-        const sim::Mat3 want = Eigen::AngleAxisd(0.4, ax.normalized()).toRotationMatrix() * R0;
+        const sim::Mat3 want = Eigen::AngleAxisd(a, hl.axis.normalized()).toRotationMatrix() * R0;
         herr = std::max(herr, (R1 - want).norm());
         nh++;
       }
