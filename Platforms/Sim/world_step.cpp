@@ -1,6 +1,6 @@
 // world_step: one tick of the world -- the servo commands, each joint's velocity motor (or its
-// back-driven gear train, or its torque drive), pushes, the ball's air drag, the contacts and their surfaces, the
-// physics steps, the sole forces and the goals.
+// back-driven gear train, or its torque drive), pushes, the ball's air drag, the contacts and their
+// surfaces, the physics steps, the sole forces and the goals.
 #include <algorithm>
 #include <cmath>
 
