@@ -11,6 +11,12 @@
 -- Body.release(group or joint) or a motion request whose state needs it (Motion.request('walk')
 -- takes the head back for behavior). A joint motion holds is simply commanded. Hardness is not
 -- taken: set it on a joint motion holds, or after the command that takes it.
+--
+-- Torque mode (dcm.actuator.mode and torque; docs/whole-body.md, Torque mode): Body.set_torque(joint,
+-- N*m) puts a joint in torque mode with that torque and takes it from motion, which leaves a joint in
+-- torque mode alone; Body.set_mode(joint, 'position') (or Body.release) puts it back in position
+-- mode holding where it is. The DCM clamps a torque to the joint's actuator limit
+-- (dcm.stats.torque_clamped) and on a watchdog trip puts every joint back in position mode.
 local shm = require('shm')
 local Config = require('Config')
 
@@ -52,6 +58,8 @@ for gname, members in pairs(robot.groups) do
 end
 
 local command, hardness, torque = actuator.command, actuator.hardness, actuator.torque_enable
+local mode, joint_torque = actuator.mode, actuator.torque
+local MODES = { position = 0, torque = 1 }
 local position, velocity, load = sensor.position, sensor.velocity, sensor.load
 
 local function finite(x)
@@ -176,8 +184,44 @@ M.set_rarm_hardness = group_hardness('rarm')
 M.set_lleg_hardness = group_hardness('lleg')
 M.set_rleg_hardness = group_hardness('rleg')
 
+-- Torque mode. set_torque(joint, nm): the joint in torque mode with nm N*m (taken from motion; the
+-- DCM clamps to the actuator's limit); a NaN or infinite torque is refused: returns false and a
+-- message naming the joint, and nothing changes (counted in body.stats.refused).
+function M.set_torque(joint, nm)
+  local i = joint_index(joint)
+  if not finite(nm) then
+    stats.refused[0] = stats.refused[0] + 1
+    return false, string.format("Body.set_torque: the torque for joint '%s' must be a finite number of N*m, not %s",
+      names[i], tostring(nm))
+  end
+  if mode[i - 1] == 0 then put_command(i, position[i - 1], true) end   -- taken, holding here on a return
+  actuator:write(function(a) a.torque[i - 1], a.mode[i - 1] = nm, 1 end)
+  return true
+end
+function M.get_torque(joint) return joint_torque[joint_index(joint) - 1] end
+
+-- set_mode(joint, 'position' | 'torque'): 'position' holds the joint where it is now; 'torque' applies
+-- the torque the block holds (0 unless set_torque gave one). get_mode(joint) says which.
+function M.set_mode(joint, name)
+  local i = joint_index(joint)
+  local m = MODES[name]
+  if not m then
+    error(string.format("Body.set_mode: joint '%s': mode 'position' or 'torque' expected, got %s", names[i],
+      tostring(name)), 2)
+  end
+  if m == 0 then
+    if mode[i - 1] ~= 0 then
+      put_command(i, position[i - 1], true)
+      actuator:write(function(a) a.mode[i - 1], a.torque[i - 1] = 0, 0 end)
+    end
+    return true
+  end
+  return M.set_torque(i, joint_torque[i - 1])
+end
+function M.get_mode(joint) return mode[joint_index(joint) - 1] == 1 and 'torque' or 'position' end
+
 -- Gives joints taken by a caller back to the motion process: a group name ('head'), a joint (name
--- or index), or nil for every joint.
+-- or index), or nil for every joint; a joint in torque mode goes back to position mode first.
 function M.release(what)
   local list
   if what == nil then
@@ -188,6 +232,7 @@ function M.release(what)
   else
     list = { joint_index(what) }
   end
+  for _, i in ipairs(list) do M.set_mode(i, 'position') end
   motion():write(function(b) for _, i in ipairs(list) do b.taken[i - 1] = 0 end end)
 end
 -- True while a caller holds the joint (name or index) taken from the motion process.

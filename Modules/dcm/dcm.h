@@ -9,9 +9,10 @@
  *   blocks    dcm.sensor, dcm.actuator, dcm.stats and sync of every robot, bound through the structs
  *             generated from Config/shm.schema at build time (dcm_blocks.h): no field lists by hand
  *   pacing    absolute deadlines, missed cycles, jitter p50 / p99 / max and the rate, into dcm.stats
- *   guard     NaN / inf commands refused (counted), hardness clamped to 0..1; the watchdog: when
- *             tick_ack stops advancing or its writer dies, hold the present pose at the safe
- *             hardness until acknowledgements return
+ *   guard     NaN / inf commands refused (counted), hardness clamped to 0..1, torques clamped to
+ *             each joint's limit (a joint whose torque is refused held in position mode); the
+ *             watchdog: when tick_ack stops advancing or its writer dies, every joint in position
+ *             mode holding the present pose at the safe hardness until acknowledgements return
  *   lockstep  the DCM side of the sync block (Lib/lockstep.lua is the participants' side)
  *   args      the command line, from a table of each DCM's options (args.h)
  *
@@ -139,11 +140,16 @@ double dcm_pacer_count(dcm_pacer *p);
 
 /* ---------------------------------------------------------------- guard */
 
+/* A joint's actuator mode (dcm.actuator.mode). */
+enum { DCM_MODE_POSITION = 0, DCM_MODE_TORQUE = 1 };
+
 /* One cycle's commands of a robot. */
 typedef struct dcm_command {
   double position[DCM_NJ_MAX];   /* rad */
   double hardness[DCM_NJ_MAX];   /* 0..1, fraction of the servo's torque */
   int32_t enable[DCM_NJ_MAX];    /* 0 / 1 */
+  int32_t mode[DCM_NJ_MAX];      /* DCM_MODE_POSITION: position and hardness; DCM_MODE_TORQUE: torque */
+  double torque[DCM_NJ_MAX];     /* N*m, in torque mode */
   uint32_t tick_ack;             /* last sensor tick the motion process acted on */
   uint32_t writer_pid;
 } dcm_command;
@@ -191,6 +197,9 @@ typedef struct dcm_guard {
   double safe_hardness;          /* 0..1, held in the safe state */
   int safe;                      /* 1 while holding the safe pose */
   uint32_t trips, refused;       /* watchdog trips; NaN / inf values refused */
+  double torque_limit[DCM_NJ_MAX];   /* N*m per joint; 0: the platform has no torque path for it */
+  uint32_t torque_refused;       /* torque-mode commands refused: the joint held in position mode */
+  uint32_t torque_clamped;       /* torques clamped to their joint's limit */
   uint32_t trip_lag;             /* cycles since the writer's last tick_ack at the last trip */
   int dead_writer;               /* the last trip's cause: the writer's pid that died (0: the timeout) */
   /* private */
@@ -204,6 +213,8 @@ typedef struct dcm_guard {
   dcm_safe_pose pose;            /* where the safe state moves the joints, how fast, how hard */
   double trip_time;              /* robot time of the trip */
   double last_pos[DCM_NJ_MAX], last_hard[DCM_NJ_MAX], hold[DCM_NJ_MAX];
+  int32_t held[DCM_NJ_MAX];      /* 1 while a refused torque-mode joint is held at torque_hold */
+  double torque_hold[DCM_NJ_MAX];
 } dcm_guard;
 
 /* present: the pose held until the first commands (nj rad). */
@@ -215,6 +226,9 @@ void dcm_guard_set_safe_pose(dcm_guard *g, const dcm_safe_pose *pose);
  * [hardness = 0..1,] q = { joint = rad, ... } }`; a joint not named (or no safe_pose at all) is NaN:
  * held where it is. Returns the number of joints with an angle, or < 0 (err names file and key). */
 int dcm_safe_pose_load(const char *robot, int nj, dcm_safe_pose *out, char *err, size_t errlen);
+/* Each joint's torque limit (nj N*m, the platform's actuator data; NULL or 0: no torque mode for the
+ * joint, which then stays in position mode). Until this is called no joint has a torque path. */
+void dcm_guard_set_torque_limits(dcm_guard *g, const double *limit);
 /* The stall check (Config: stall_cycles, stall_cpu): after `cycles` guard cycles without a new
  * tick_ack the writer is looked at -- stopped, gone (or its pid reused) or more than `cpu` s of CPU
  * burnt since its last tick_ack trips at once; a writer that merely did not run is left to the
@@ -223,9 +237,17 @@ void dcm_guard_set_stall(dcm_guard *g, int cycles, double cpu);
 /* Copies a robot's commands out of dcm.actuator (a torn read is retried). */
 void dcm_command_read(const dcm_blk_dcm_actuator *a, int nj, dcm_command *out);
 /* Checks commands in place at robot time `now`: NaN / inf -> the last good value (counted),
- * hardness clamped; on a watchdog trip holds `present` (the sensed pose, rad), or moves from it into
- * the safe pose, at the safe hardness until tick_ack moves again. Returns 1 while in the safe state. */
+ * hardness clamped; a joint in torque mode has its torque clamped to its limit (counted), and a NaN
+ * / inf torque, a mode other than position or torque, or a joint without a torque limit is refused
+ * (counted): the joint goes to position mode holding `present` as it was at the refusal, until a
+ * valid command comes. On a watchdog trip every joint goes to position mode: it holds `present`
+ * (the sensed pose, rad), or moves from it into the safe pose, at the safe hardness until tick_ack
+ * moves again. Returns 1 while in the safe state. */
 int dcm_guard_apply(dcm_guard *g, double now, const double *present, dcm_command *c);
+/* A trip's end of torque mode in the block itself: every joint of `a` in torque mode is put in
+ * position mode with its command at hold[j] (the pose of the trip) and its torque 0, so the robot's
+ * processes find it there when they answer again (a stale torque never resumes by itself). */
+void dcm_actuator_position_mode(const dcm_blk_dcm_actuator *a, int nj, const double *hold);
 
 /* ---------------------------------------------------------------- lockstep */
 
@@ -278,6 +300,8 @@ typedef struct dcm_robot {
   dcm_blk_sync sync;
   dcm_guard guard;
   dcm_command cmd;                /* this cycle's commands, after the guard */
+  double torque_limit[DCM_NJ_MAX];   /* N*m per joint, set by the driver's configure: its torque path's
+                                        limit (0, the default: no torque mode for the joint) */
 } dcm_robot;
 
 typedef struct dcm {

@@ -1,5 +1,5 @@
 /* guard: what stands between the actuator block and the servos -- NaN / inf refused, hardness
- * clamped, and the watchdog with its safe pose. */
+ * clamped, torques clamped to each joint's limit, and the watchdog with its safe pose. */
 #include "dcm.h"
 
 #include <errno.h>
@@ -85,6 +85,8 @@ void dcm_command_read(const dcm_blk_dcm_actuator *a, int nj, dcm_command *out) {
     memcpy(out->position, a->command, nd);
     memcpy(out->hardness, a->hardness, nd);
     memcpy(out->enable, a->torque_enable, ni);
+    memcpy(out->mode, a->mode, ni);
+    memcpy(out->torque, a->torque, nd);
     out->tick_ack = *(volatile uint32_t *)a->tick_ack;
     out->writer_pid = *(volatile uint32_t *)a->writer_pid;
   } while (shm_read_retry(a->blk, seq));
@@ -95,6 +97,24 @@ void dcm_guard_set_safe_pose(dcm_guard *g, const dcm_safe_pose *pose) {
   g->pose.ramp = pose && pose->ramp > 0 ? pose->ramp : 0;
   const double h = pose ? pose->hardness : NAN;
   g->pose.hardness = isfinite(h) ? (h < 0 ? 0 : h > 1 ? 1 : h) : NAN;
+}
+
+void dcm_guard_set_torque_limits(dcm_guard *g, const double *limit) {
+  for (int j = 0; j < DCM_NJ_MAX; j++) {
+    const double l = limit && j < g->nj ? limit[j] : 0;
+    g->torque_limit[j] = isfinite(l) && l > 0 ? l : 0;
+  }
+}
+
+void dcm_actuator_position_mode(const dcm_blk_dcm_actuator *a, int nj, const double *hold) {
+  shm_write_begin(a->blk);
+  for (int j = 0; j < nj; j++) {
+    if (a->mode[j] == DCM_MODE_POSITION) continue;
+    a->mode[j] = DCM_MODE_POSITION;
+    a->command[j] = hold[j];
+    a->torque[j] = 0;
+  }
+  shm_write_end(a->blk);
 }
 
 void dcm_guard_set_stall(dcm_guard *g, int cycles, double cpu) {
@@ -123,6 +143,31 @@ static int writer_dead(dcm_guard *g, int pid) {
   return poll(&p, 1, 0) > 0;
 }
 
+/* Joint j's torque-mode command: clamped to its limit, or refused -- then the joint is in position
+ * mode holding the pose it had at the refusal, until a valid command (torque or position) comes. */
+static void check_torque(dcm_guard *g, int j, const double *present, dcm_command *c) {
+  const int32_t mode = c->mode[j];
+  if (mode == DCM_MODE_POSITION) {
+    g->held[j] = 0;
+    return;
+  }
+  const double lim = g->torque_limit[j];
+  if (mode == DCM_MODE_TORQUE && lim > 0 && isfinite(c->torque[j])) {
+    g->held[j] = 0;
+    if (c->torque[j] > lim || c->torque[j] < -lim) {
+      g->torque_clamped++;
+      c->torque[j] = c->torque[j] > 0 ? lim : -lim;
+    }
+    return;
+  }
+  g->torque_refused++;
+  if (!g->held[j]) g->torque_hold[j] = present[j];
+  g->held[j] = 1;
+  c->mode[j] = DCM_MODE_POSITION;
+  c->position[j] = g->torque_hold[j];
+  c->torque[j] = 0;
+}
+
 int dcm_guard_apply(dcm_guard *g, double now, const double *present, dcm_command *c) {
   for (int j = 0; j < g->nj; j++) {
     if (!isfinite(c->position[j])) {
@@ -135,6 +180,7 @@ int dcm_guard_apply(dcm_guard *g, double now, const double *present, dcm_command
     }
     c->hardness[j] = c->hardness[j] < 0 ? 0 : c->hardness[j] > 1 ? 1 : c->hardness[j];
     c->enable[j] = c->enable[j] ? 1 : 0;
+    check_torque(g, j, present, c);
     g->last_pos[j] = c->position[j];
     g->last_hard[j] = c->hardness[j];
   }
@@ -184,6 +230,8 @@ int dcm_guard_apply(dcm_guard *g, double now, const double *present, dcm_command
     for (int j = 0; j < g->nj; j++) {
       const double to = g->pose.q[j];
       c->position[j] = isfinite(to) ? g->hold[j] + (to - g->hold[j]) * s : g->hold[j];
+      c->mode[j] = DCM_MODE_POSITION;
+      c->torque[j] = 0;
       const double cap = isfinite(to) ? posed_hardness : g->safe_hardness;
       if (c->hardness[j] > cap) c->hardness[j] = cap;
     }

@@ -46,7 +46,8 @@ static int open_blocks(dcm *d, char *err, size_t errlen) {
     }
     /* every joint array must hold the robot's joints */
     const int have[] = { R->sensor.n.position, R->sensor.n.velocity, R->sensor.n.load, R->sensor.n.temperature,
-                         R->actuator.n.command, R->actuator.n.hardness, R->actuator.n.torque_enable };
+                         R->actuator.n.command, R->actuator.n.hardness, R->actuator.n.torque_enable,
+                         R->actuator.n.mode, R->actuator.n.torque };
     for (size_t k = 0; k < sizeof have / sizeof have[0]; k++) {
       if (have[k] < R->nj) {
         snprintf(err, errlen, "robot '%s' (id %d) has %d joints, the shm schema's joint arrays hold %d (const njoint)",
@@ -97,6 +98,8 @@ static void write_stats(dcm *d, const dcm_driver *drv, void *hw) {
     *s->cycles = d->pacer.cycles;
     *s->missed_cycles = d->pacer.missed;
     *s->nan_commands = g->refused;
+    *s->torque_refused = g->torque_refused;
+    *s->torque_clamped = g->torque_clamped;
     *s->watchdog_trips = g->trips;
     *s->watchdog_lag = g->trip_lag;
     if (drv->stats) drv->stats(hw, d, r, s);
@@ -105,9 +108,9 @@ static void write_stats(dcm *d, const dcm_driver *drv, void *hw) {
 }
 
 /* The DCM owns the start state: on every start, whatever the actuator block held (a REPL command
- * written before any DCM ran, a previous run's last pose or hardness 0), every joint is commanded
- * to its present position at start_hardness with its torque on, so nothing moves when the DCM starts
- * and nothing is limp. The robot's processes take over with their next commands. */
+ * written before any DCM ran, a previous run's last pose or hardness 0, torque mode), every joint is
+ * commanded in position mode to its present position at start_hardness with its torque on, so
+ * nothing moves when the DCM starts and nothing is limp. The robot's processes take over with their next commands. */
 static void seed_actuators(dcm *d) {
   for (int r = 0; r < d->nrobots; r++) {
     dcm_robot *R = &d->robot[r];
@@ -117,6 +120,8 @@ static void seed_actuators(dcm *d) {
       a->command[j] = R->sensor.position[j];
       a->hardness[j] = d->start_hardness;
       a->torque_enable[j] = 1;
+      a->mode[j] = DCM_MODE_POSITION;
+      a->torque[j] = 0;
     }
     shm_write_end(a->blk);
   }
@@ -217,6 +222,7 @@ int dcm_main(dcm *d, const dcm_driver *drv, void *hw, char *err, size_t errlen) 
                    *R->actuator.tick_ack);
     dcm_guard_set_safe_pose(&R->guard, &g_safe[r].pose);
     dcm_guard_set_stall(&R->guard, d->stall_cycles, d->stall_cpu);
+    dcm_guard_set_torque_limits(&R->guard, R->torque_limit);
   }
   /* lockstep waits for a stalled participant no longer than the guard would in real time */
   d->sync.stall_after = d->stall_cycles > 0 ? d->stall_cycles * d->period : 0;
@@ -244,6 +250,7 @@ int dcm_main(dcm *d, const dcm_driver *drv, void *hw, char *err, size_t errlen) 
       dcm_command_read(&R->actuator, R->nj, &R->cmd);
       const int was_safe = R->guard.safe;
       dcm_guard_apply(&R->guard, d->time, R->sensor.position, &R->cmd);
+      if (R->guard.safe && !was_safe) dcm_actuator_position_mode(&R->actuator, R->nj, R->guard.hold);
       char into[96];
       safe_state_words(into, sizeof into, &g_safe[r].pose, g_safe[r].has, d->safe_hardness);
       if (R->guard.safe && !was_safe && R->guard.dead_writer)

@@ -259,6 +259,12 @@ int sim_configure(void *hw, dcm *d, char *err, size_t errlen) {
   for (int r = 0; r < d->nrobots; r++) {
     d->robot[r].id = s.o.ids[r];
     d->robot[r].nj = (int)s.bodies[r].joints.size();
+    // the guard clamps a torque to the joint's actuator torque (the URDF effort the drive applies)
+    const sim::Model &m = s.bodies[r].model;
+    for (int j = 0; j < d->robot[r].nj; j++) {
+      const int li = m.joint_link(s.bodies[r].joints[j]);
+      d->robot[r].torque_limit[j] = li >= 0 ? m.links[li].effort : 0;
+    }
     snprintf(d->robot[r].name, sizeof d->robot[r].name, "%s", s.params[r].name.c_str());
   }
   const sim::Params &p = s.params[0];
@@ -356,7 +362,7 @@ void sim_write(void *hw, dcm *d) {
   s.prof.lap(Profile::kWait);
   for (int r = 0; r < d->nrobots; r++) {
     const dcm_command &c = d->robot[r].cmd;
-    s.world->set_command(r, c.position, c.hardness, c.enable);
+    s.world->set_command(r, c.position, c.hardness, c.enable, c.mode, c.torque);
     while (apply_request(s, r)) {}
   }
   s.prof.lap(Profile::kCommands);

@@ -227,6 +227,9 @@ void World::build_robot(int r, const Body &body) {
   rb.hard.assign(nj, 1);
   rb.enable.assign(nj, 1);
   rb.mode.assign(nj, 0);
+  rb.actuate.assign(nj, 0);
+  rb.tau.assign(nj, 0);
+  rb.applied.assign(nj, 0);
   // self-collision: not between a link and its parent or grandparent, nor between links whose
   // boxes already touch at the zero pose (the mesh boxes are larger than the parts)
   rb.allowed.assign(nl * nl, 1);

@@ -140,9 +140,12 @@ class World {
   const Params &params() const { return p_; }
   const Model &model(int r = 0) const { return *robots_[r].m; }
 
-  // Servo commands of robot r (arrays of njoints; rad, 0..1, 0/1). Non-finite entries are
-  // ignored (the previous value stays) and counted; returns how many were ignored.
-  int set_command(int r, const double *cmd, const double *hardness, const int *enable);
+  // Servo commands of robot r (arrays of njoints; rad, 0..1, 0/1) and, optionally, each joint's
+  // actuator mode (0 position, 1 torque) and torque (N*m, for a joint in torque mode: applied through
+  // its actuator model, world_step.cpp). Non-finite entries are ignored (the previous value stays)
+  // and counted; returns how many were ignored.
+  int set_command(int r, const double *cmd, const double *hardness, const int *enable, const int *mode = nullptr,
+                  const double *torque = nullptr);
   const std::vector<double> &command(int r) const { return robots_[r].cmd; }
   // Advances one control period (period / timestep physics steps).
   void step();
@@ -202,7 +205,10 @@ class World {
     std::vector<int> jlink;                // shm joint -> model link
     std::vector<double> cmd, hard;
     std::vector<int> enable;
-    std::vector<int> mode;                 // servo mode last set: 0 unset, 1 active, 2 relaxed
+    std::vector<int> mode;                 // servo mode last set: 0 unset, 1 active, 2 relaxed, 3 torque
+    std::vector<int> actuate;              // per shm joint: 0 position, 1 torque (as dcm.actuator.mode)
+    std::vector<double> tau;               // per shm joint: the torque commanded (N*m)
+    std::vector<double> applied;           // per shm joint: the torque applied in the last physics step
     std::vector<char> allowed;             // self-collision allowed, nlink x nlink
     double foot_acc[2] = {0, 0};
     Vec3 vel_start = Vec3::Zero();

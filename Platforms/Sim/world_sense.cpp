@@ -47,7 +47,8 @@ void World::sense(int r, Sensors *s) {
     const dJointFeedback &f = rb.fb[li];
     const Vec3 arm = body_pos(rb.body[li]) - Vec3(an[0], an[1], an[2]);
     const Vec3 t = Vec3(f.t1[0], f.t1[1], f.t1[2]) + arm.cross(Vec3(f.f1[0], f.f1[1], f.f1[2]));
-    s->load[j] = t.dot(Vec3(ax[0], ax[1], ax[2]));
+    // in torque mode the drive's torque is no constraint of ODE's: it is added
+    s->load[j] = t.dot(Vec3(ax[0], ax[1], ax[2])) + rb.applied[j];
   }
   const Mat3 R = body_rot(rb.body[0]);
   const dReal *w = dBodyGetAngularVel(rb.body[0]);

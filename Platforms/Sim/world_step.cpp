@@ -1,6 +1,6 @@
 // world_step: one tick of the world -- the servo commands, each joint's velocity motor (or its
-// back-driven gear train), pushes, the ball's air drag, the contacts and their surfaces, the
-// physics steps, the sole forces and the goals.
+// back-driven gear train, or its torque drive), pushes, the ball's air drag, the contacts and their
+// surfaces, the physics steps, the sole forces and the goals.
 #include <algorithm>
 #include <cmath>
 
@@ -10,7 +10,8 @@ namespace sim {
 
 using namespace world_internal;
 
-int World::set_command(int r, const double *cmd, const double *hardness, const int *enable) {
+int World::set_command(int r, const double *cmd, const double *hardness, const int *enable, const int *mode,
+                       const double *torque) {
   Robot &rb = robots_[r];
   int bad = 0;
   for (size_t j = 0; j < rb.cmd.size(); j++) {
@@ -21,6 +22,10 @@ int World::set_command(int r, const double *cmd, const double *hardness, const i
       if (std::isfinite(hardness[j])) rb.hard[j] = std::min(std::max(hardness[j], 0.0), 1.0); else bad++;
     }
     if (enable) rb.enable[j] = enable[j] != 0;
+    if (mode) rb.actuate[j] = mode[j] == 1;
+    if (torque) {
+      if (std::isfinite(torque[j])) rb.tau[j] = torque[j]; else bad++;
+    }
   }
   return bad;
 }
@@ -29,7 +34,28 @@ void World::servo_update(Robot &rb) {
   for (size_t j = 0; j < rb.jlink.size(); j++) {
     const Link &l = rb.m->links[rb.jlink[j]];
     dJointID h = rb.hinge[rb.jlink[j]];
-    if (rb.enable[j] && rb.hard[j] > 0) {
+    rb.applied[j] = 0;
+    if (rb.enable[j] && rb.actuate[j]) {
+      // torque mode: a current-controlled drive, from the actuator's data only (Config/common/
+      // actuators.lua through the URDF joint: effort, damping, friction). The commanded torque is
+      // applied on the hinge within the stall torque (effort) and the drive's speed-torque line: at
+      // joint speed w the motor gives at most effort - damping * w in the direction of w (the back-EMF
+      // damping of the torque-off model, damping = torque / speed: no torque at the no-load speed)
+      // and brakes with at most effort. The gear's friction is ODE's dry friction: the hinge's motor,
+      // no longer the servo, holds speed 0 with at most `friction` N*m. The rotor inertia is the
+      // world's (physics.link_rotor_inertia on every moving link), as in position mode. Hardness does
+      // not apply. Not modelled (no data): the current loop's bandwidth, torque ripple, heating.
+      if (rb.mode[j] != 3) {
+        dJointSetHingeParam(h, dParamCFM, kWorldCfm);
+        rb.mode[j] = 3;
+      }
+      dJointSetHingeParam(h, dParamVel, 0);
+      dJointSetHingeParam(h, dParamFMax, l.friction);
+      const double bw = l.damping * dJointGetHingeAngleRate(h);
+      const double hi = std::min(l.effort, l.effort - bw), lo = std::max(-l.effort, -l.effort - bw);
+      rb.applied[j] = std::min(std::max(rb.tau[j], lo), hi);
+      dJointAddHingeTorque(h, rb.applied[j]);
+    } else if (rb.enable[j] && rb.hard[j] > 0) {
       if (rb.mode[j] != 1) {
         dJointSetHingeParam(h, dParamCFM, kWorldCfm);
         rb.mode[j] = 1;

@@ -11,7 +11,8 @@
 -- falls, fall_time, odometry, walk_velocity, the walk's COM, ZMP, feet and capture error, zmp and
 -- zmp_contact (balance), owner (per joint: 0 held, 1 motion, 2 a caller), tick.
 -- Only the joints the current state owns (or a caller took) are written: the others hold whatever
--- the actuator block has (Player/Motion/control.lua).
+-- the actuator block has (Player/Motion/control.lua). A joint in torque mode (Body.set_torque) is
+-- not written at all: its caller's torque drives it.
 local ffi = require('ffi')
 local shm = require('shm')
 local Config = require('Config')
@@ -119,7 +120,7 @@ local params_live = param.follow('motion')
 local participant = lockstep.join()
 local tick = -1 -- the current tick is handled first (the lockstep waits for it)
 local pos, gyro, angle, acc, ft = ctl.pos, ctl.gyro, ctl.angle, ctl.acc, ctl.ft
-local hardness = actuator.hardness
+local hardness, actuator_mode = actuator.hardness, actuator.mode
 
 -- a DCM restarted with another layout, or any block removed or recreated: the mappings held here
 -- are dead; exit naming the block, and run_main starts a fresh process that opens what is there now
@@ -184,7 +185,11 @@ while true do
     -- commands of the joints motion drives now (Body clamps to the limits and refuses NaN)
     local q, write = ctl.q, ctl.write
     for i = 1, n do
-      if write[i] then
+      if actuator_mode[i - 1] ~= 0 then
+        -- torque mode: the caller's hold follows the joint, so a return to position mode (the DCM's
+        -- guard on a trip) is not undone by an older command
+        if motion.taken[i - 1] ~= 0 then motion.taken_command[i - 1] = pos[i] end
+      elseif write[i] then
         Body.drive(i, q[i])
         local h = ctl.h[i]
         if hardness[i - 1] ~= h then Body.set_hardness(i, h) end

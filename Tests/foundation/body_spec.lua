@@ -82,6 +82,43 @@ describe('Body', function()
     assert.has_error(function() Body.release('no_such_joint') end)
   end)
 
+  it('puts a joint in torque mode and back, refusing NaN torques and unknown joints and modes by name', function()
+    local motion = shm.open('motion')
+    local sen = shm.open('dcm.sensor')
+    motion:set('owner', 0)
+    motion:set('taken', 0)
+    act:set('mode', 0)
+    act:set('torque', 0)
+    local elbow = Body.index('r_el')
+    motion.owner[elbow - 1] = 1
+    sen.position[elbow - 1] = 0.25
+    assert.is_true(Body.set_torque('r_el', -0.4))
+    assert.equal('torque', Body.get_mode('r_el'))
+    assert.equal(1, act.mode[elbow - 1])
+    assert.equal(-0.4, Body.get_torque(elbow))
+    assert.is_true(Body.taken('r_el'))
+    assert.equal(0.25, motion.taken_command[elbow - 1])   -- a return to position mode holds it here
+    for _, bad in ipairs({ 0 / 0, math.huge, -math.huge }) do
+      local ok, msg = Body.set_torque('r_el', bad)
+      assert.is_false(ok)
+      assert.matches("joint 'r_el'", msg, 1, true)
+    end
+    assert.equal(-0.4, act.torque[elbow - 1])
+    assert.equal(3, stats.refused[0])
+    assert.has_error(function() Body.set_torque('no_such_joint', 1) end, "Body: unknown joint 'no_such_joint'")
+    assert.has_error(function() Body.set_mode('r_el', 'current') end,
+      "Body.set_mode: joint 'r_el': mode 'position' or 'torque' expected, got current")
+    sen.position[elbow - 1] = 0.3
+    Body.set_mode('r_el', 'position')
+    assert.equal('position', Body.get_mode('r_el'))
+    assert.equal(0.3, act.command[elbow - 1])
+    assert.equal(0, act.torque[elbow - 1])
+    Body.set_torque('r_el', 0.2)
+    Body.release('r_el')
+    assert.equal(0, act.mode[elbow - 1])
+    assert.is_false(Body.taken('r_el'))
+  end)
+
   it('reads sensors from dcm.sensor', function()
     local s = shm.open('dcm.sensor')
     s:set('gyro', { 0.1, 0.2, 0.3 })

@@ -1,5 +1,7 @@
 /* Tests of the DCM library (TAP): generated shm bindings, pacing statistics on a fake clock, the
- * guard (NaN refusal, hardness clamp, watchdog trip and resume, dead writer; the stall check's
+ * guard (NaN refusal, hardness clamp, watchdog trip and resume, dead writer; torque mode: the torque
+ * clamped to the joint's limit, a NaN torque or a joint without a torque path refused and held, a
+ * trip putting every joint in position mode, in the block too; the stall check's
  * verdicts: stopped, busy, starved, pid reused), the lockstep wait (dead participants dropped,
  * stopped ones passed over, live ones waited for), the config reader's errors and the command-line
  * parser (strict numbers, ranges, unknown and missing arguments, the usage, the exit statuses). */
@@ -130,6 +132,8 @@ static void fill(dcm_command *c, int nj, double pos, double hard, uint32_t ack) 
     c->position[j] = pos;
     c->hardness[j] = hard;
     c->enable[j] = 1;
+    c->mode[j] = DCM_MODE_POSITION;
+    c->torque[j] = 0;
   }
   c->tick_ack = ack;
   c->writer_pid = 0;
@@ -259,6 +263,98 @@ static int fake_probe(int pid, dcm_proc *out) {
 static double fake_cpu(int pid) {
   (void)pid;
   return g_fake.state ? g_fake.cpu : -1;
+}
+
+/* Torque mode: joint 0 and 1 have torque paths (10 and 2 N*m), joint 2 none. */
+static void test_torque(void) {
+  enum { NJ = 3 };
+  const double present[NJ] = { 0.1, 0.2, 0.3 }, limit[NJ] = { 10, 2, 0 };
+  double sensed[NJ] = { 0.1, 0.2, 0.3 };
+  dcm_guard g;
+  dcm_command c;
+  dcm_guard_init(&g, NJ, 0.5, 0.3, present, 0);
+  fill(&c, NJ, 0.5, 1, 0);
+  c.mode[0] = c.mode[1] = c.mode[2] = DCM_MODE_TORQUE;
+  c.torque[0] = 4;
+  c.torque[1] = -2.5;
+  c.torque[2] = 1;
+  dcm_guard_apply(&g, 0, sensed, &c);
+  check(c.mode[0] == DCM_MODE_POSITION && c.mode[2] == DCM_MODE_POSITION && c.position[2] == 0.3 &&
+            g.torque_refused == 3,
+        "no torque limits set: no joint leaves position mode, each holds its pose (counted)");
+  dcm_guard_set_torque_limits(&g, limit);
+  fill(&c, NJ, 0.5, 1, 0);
+  c.mode[0] = c.mode[1] = DCM_MODE_TORQUE;
+  c.torque[0] = 4;
+  c.torque[1] = -2.5;
+  dcm_guard_apply(&g, 0.01, sensed, &c);
+  check(c.mode[0] == DCM_MODE_TORQUE && c.torque[0] == 4 && c.mode[1] == DCM_MODE_TORQUE && c.torque[1] == -2,
+        "a torque within the limit goes through; one beyond it is clamped to the limit");
+  check(g.torque_clamped == 1 && c.mode[2] == DCM_MODE_POSITION && c.position[2] == 0.5,
+        "the clamp is counted; a position-mode joint keeps its command");
+  /* a NaN torque: the joint to position mode, holding the pose it had at the refusal */
+  fill(&c, NJ, 0.5, 1, 0);
+  c.mode[0] = c.mode[1] = DCM_MODE_TORQUE;
+  c.torque[0] = NAN;
+  c.torque[1] = INFINITY;
+  dcm_guard_apply(&g, 0.02, sensed, &c);
+  check(c.mode[0] == DCM_MODE_POSITION && c.position[0] == 0.1 && c.mode[1] == DCM_MODE_POSITION &&
+            c.position[1] == 0.2 && g.torque_refused == 5,
+        "a NaN / inf torque is refused (counted): position mode holding the pose of the refusal");
+  sensed[0] = 0.15;   /* it sagged a little meanwhile: the hold stays where it was taken */
+  fill(&c, NJ, 0.5, 1, 0);
+  c.mode[0] = DCM_MODE_TORQUE;
+  c.torque[0] = NAN;
+  dcm_guard_apply(&g, 0.03, sensed, &c);
+  check(c.mode[0] == DCM_MODE_POSITION && c.position[0] == 0.1, "while the NaN stays, the same pose is held");
+  fill(&c, NJ, 0.5, 1, 0);
+  c.mode[0] = 7;
+  dcm_guard_apply(&g, 0.04, sensed, &c);
+  check(c.mode[0] == DCM_MODE_POSITION && c.position[0] == 0.1 && g.torque_refused == 7,
+        "a mode other than position or torque is refused likewise");
+  fill(&c, NJ, 0.5, 1, 0);
+  c.mode[0] = DCM_MODE_TORQUE;
+  c.torque[0] = -3;
+  dcm_guard_apply(&g, 0.05, sensed, &c);
+  check(c.mode[0] == DCM_MODE_TORQUE && c.torque[0] == -3, "a valid torque again: torque mode resumes");
+
+  /* the watchdog: every joint in position mode holding its pose */
+  fill(&c, NJ, 0.5, 1, 9);
+  c.mode[0] = c.mode[1] = DCM_MODE_TORQUE;
+  c.torque[0] = c.torque[1] = 1;
+  dcm_guard_apply(&g, 1.0, sensed, &c);
+  check(c.mode[0] == DCM_MODE_TORQUE && c.mode[1] == DCM_MODE_TORQUE, "motion acknowledges: torque mode");
+  fill(&c, NJ, 0.5, 1, 9);
+  c.mode[0] = c.mode[1] = DCM_MODE_TORQUE;
+  c.torque[0] = c.torque[1] = 1;
+  const int safe = dcm_guard_apply(&g, 1.6, sensed, &c);
+  check(safe == 1 && c.mode[0] == DCM_MODE_POSITION && c.mode[1] == DCM_MODE_POSITION && c.torque[0] == 0 &&
+            c.position[0] == 0.15 && c.position[1] == 0.2 && c.hardness[0] == 0.3,
+        "a watchdog trip: every joint in position mode holding the pose of the trip at the safe hardness");
+
+  /* the same in the block: the trip's end of torque mode (dcm_actuator_position_mode) */
+  char err[512] = "";
+  shm_schema *s = NULL;
+  dcm_blk_dcm_actuator a;
+  memset(&a, 0, sizeof a);
+  int rc = shm_schema_load(NULL, &s, err, sizeof err);
+  rc = rc == 0 ? dcm_blocks_open(s, g_id, DCM_BLK_dcm_actuator(&a), err, sizeof err) : rc;
+  if (rc == 0) {
+    for (int j = 0; j < NJ; j++) {
+      a.mode[j] = j < 2 ? DCM_MODE_TORQUE : DCM_MODE_POSITION;
+      a.command[j] = 0.9;
+      a.torque[j] = 5;
+    }
+    dcm_actuator_position_mode(&a, NJ, g.hold);
+    dcm_command_read(&a, NJ, &c);
+    check(c.mode[0] == DCM_MODE_POSITION && c.mode[1] == DCM_MODE_POSITION && c.position[0] == 0.15 &&
+              c.position[1] == 0.2 && c.torque[0] == 0 && c.position[2] == 0.9 && c.torque[2] == 5,
+          "after a trip the block holds position mode at the pose of the trip (a position-mode joint untouched)");
+    shm_block_close(a.blk);
+  } else {
+    tap_ok(0, "dcm.actuator opens", err);
+  }
+  shm_schema_free(s);
 }
 
 static void test_verdict(void) {
@@ -917,6 +1013,7 @@ int main(void) {
   test_blocks();
   test_pacing();
   test_guard();
+  test_torque();
   test_verdict();
   test_stall();
   test_lockstep();
