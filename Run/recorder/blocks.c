@@ -84,6 +84,8 @@ int rec_blocks_open(rec_blocks *bs, const rec_opts *o, char *err, size_t errlen)
     if (!strcmp(name, "dcm.sensor") && t && type == SHM_F64) {
       bs->sensor = bs->n - 1;
       bs->time_offset = (uint64_t)(t - (const uint8_t *)shm_block_header(blk));
+      const uint8_t *k = (const uint8_t *)shm_field_ptr(blk, "tick", &type, &count);
+      bs->tick_offset = k && type == SHM_U32 ? (int64_t)(k - (const uint8_t *)shm_block_header(blk)) : -1;
     }
   }
   return 0;
@@ -157,6 +159,15 @@ int rec_blocks_sample(rec_blocks *bs, rec_queue *q, struct rec_history *h, uint6
       if (t > 0) log_time = (uint64_t)(t * 1e9 + 0.5);
     }
     if (!changed(rb)) continue;
+    if (i == bs->sensor && bs->tick_offset >= 0) {
+      /* missed ticks from the copies themselves: a tick read beside the copy could be one the copy
+       * already holds (the DCM wrote between the two reads) and count a gap the file does not have */
+      uint32_t tick;
+      memcpy(&tick, rb->now + bs->tick_offset, 4);
+      if (bs->have_tick && tick > bs->last_tick + 1) bs->missed += tick - bs->last_tick - 1;
+      bs->last_tick = tick;
+      bs->have_tick = 1;
+    }
     rec_item *frame = NULL;
     if (rb->has_frame) {
       /* a new frame: its pixels and its fields from one read */

@@ -182,9 +182,8 @@ int main(int argc, char **argv) {
 
   const double t0 = shm_now(), cpu0 = cpu_seconds();
   double next_stats = t0 + 1, cpu_last = cpu0, t_last = t0;
-  uint64_t bytes_last = 0, missed = 0;
-  uint32_t writes = 0, last_tick = 0;
-  int have_tick = 0;
+  uint64_t bytes_last = 0;
+  uint32_t writes = 0;
   *s_pid = (int32_t)getpid();
   while (!g_stop) {
     uint32_t observed = 0;
@@ -192,12 +191,6 @@ int main(int argc, char **argv) {
     if (lockstep && (observed = rec_observer_wait(&ob, 0.05)) == 0 && *ob.lockstep == 1) sample = 0;
     else if (!observed) writes = shm_wait_write(sensor, writes, 0.05);
     if (sample) {
-      const uint32_t tick = *tick_p;
-      if (have_tick && tick > last_tick + 1) missed += tick - last_tick - 1;
-      if (!have_tick || tick != last_tick) {
-        last_tick = tick;
-        have_tick = 1;
-      }
       const double t = *time_p;
       const uint64_t log_time = t > 0 ? (uint64_t)(t * 1e9 + 0.5) : 0, wall = wall_ns();
       if (rec_blocks_sample(&bs, &q, &hist, log_time, wall) + rec_packets_sample(&pk, &q, log_time, wall) > 0)
@@ -213,7 +206,7 @@ int main(int argc, char **argv) {
       *s_msg = f.messages;
       *s_bytes = f.bytes;
       *s_drop = (uint32_t)rec_queue_dropped(&q);
-      *s_miss = (uint32_t)missed;
+      *s_miss = (uint32_t)bs.missed;
       *s_frames = (uint32_t)f.frames;
       *s_files = (uint32_t)f.files;
       *s_rate = (double)(f.bytes - bytes_last) / (now - t_last);
@@ -243,7 +236,7 @@ int main(int argc, char **argv) {
          "(JPEG %.2f ms/frame)\n",
          elapsed, (unsigned long long)f.messages, (unsigned long long)f.frames, (unsigned long long)f.bytes,
          (unsigned long long)f.files, (double)f.bytes / elapsed, (unsigned long long)rec_queue_dropped(&q),
-         (unsigned long long)missed, (unsigned long long)pk.taken, (unsigned long long)pk.lost, cpu,
+         (unsigned long long)bs.missed, (unsigned long long)pk.taken, (unsigned long long)pk.lost, cpu,
          100 * cpu / elapsed, f.frames ? 1e3 * f.jpeg_cpu / (double)f.frames : 0.0);
   shm_block_close(stats);
   return rc < 0 ? 1 : 0;

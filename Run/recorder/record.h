@@ -102,6 +102,10 @@ typedef struct rec_blocks {
   int n;
   int sensor;              /* index of dcm.sensor (-1: none): its own time stamps each sample */
   uint64_t time_offset;    /* of its f64 time field */
+  int64_t tick_offset;     /* of its u32 tick field (-1: none) */
+  uint32_t last_tick;      /* the tick of the last dcm.sensor copy that changed */
+  int have_tick;
+  uint64_t missed;         /* DCM ticks between two recorded copies: the ticks the recorder missed */
   rec_block b[REC_BLOCKS_MAX];
   shm_schema *schema;
 } rec_blocks;
