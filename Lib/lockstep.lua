@@ -39,13 +39,19 @@ function M.join(opts)
     for i = 0, n - 1 do
       local p = pids[i]
       if p == pid then return M._setup(sync, i) end
-      if p == 0 or (pass == 2 and C.shm_pid_alive(p) == 0) then
-        -- claim the slot as "not done with anything yet": from the moment the DCM sees this pid it
-        -- waits for our first done() at its first tick > 0, so it cannot run ahead of us
+      -- a slot is taken in two steps: its pid negated (claimed: nobody else writes the slot, and the
+      -- DCM does not count it yet) while its fields are set, then the pid itself. A process that wrote
+      -- the fields before owning the slot could reset the progress of the one that won it (its
+      -- done_tick back to 0 after it had finished the tick: the DCM would wait for it for ever)
+      if (p == 0 or (pass == 2 and C.shm_pid_alive(math.abs(p)) == 0))
+         and C.shm_cas_i32(pids + i, p, -pid) == 1 then
+        -- "not done with anything yet": from the moment the DCM sees this pid it waits for our first
+        -- done() at its first tick > 0, so it cannot run ahead of us
         sync.done_tick[i] = 0
         sync.wake_tick[i] = 0
         sync.observer[i] = observer
-        if C.shm_cas_i32(pids + i, p, pid) == 1 then return M._setup(sync, i) end
+        assert(C.shm_cas_i32(pids + i, -pid, pid) == 1, 'lockstep: a claimed slot was taken away')
+        return M._setup(sync, i)
       end
     end
   end
@@ -110,7 +116,7 @@ function Participant:settle(tick, timeout)
     local waiting = false
     for i = 0, s:count('pid') - 1 do
       local p = pid[i]
-      if i ~= me and p ~= 0 and s.observer[i] < stage and wake[i] <= tick and done[i] < tick
+      if i ~= me and p > 0 and s.observer[i] < stage and wake[i] <= tick and done[i] < tick
          and C.shm_pid_alive(p) == 1 and C.shm_pid_stopped(p) == 0 then
         waiting = true
         break

@@ -43,7 +43,7 @@ function M.participants(sync)
   local shm = require('shm')
   local n = 0
   for i = 0, sync:count('pid') - 1 do
-    if sync.pid[i] ~= 0 and shm.C.shm_pid_alive(sync.pid[i]) == 1 then n = n + 1 end
+    if sync.pid[i] > 0 and shm.C.shm_pid_alive(sync.pid[i]) == 1 then n = n + 1 end
   end
   return n
 end

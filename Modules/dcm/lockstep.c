@@ -1,5 +1,5 @@
 /* lockstep: the DCM side of the sync block. Participants (Lib/lockstep.lua) claim a slot with their
- * pid; the DCM publishes tick N and waits until every live participant whose wake_tick <= N
+ * pid (negated while they set the slot up: not a participant yet, but not free either); the DCM publishes tick N and waits until every live participant whose wake_tick <= N
  * reports done_tick >= N. Participants that died without leaving are dropped. */
 #include "dcm.h"
 
@@ -10,7 +10,7 @@ void dcm_lockstep_start(dcm_lockstep *l, uint32_t tick) {
     dcm_blk_sync *y = l->sync[r];
     /* a participant registered with an earlier DCM: consult it from the first tick on */
     for (int k = 0; k < y->n.pid; k++)
-      if (y->pid[k] != 0 && y->wake_tick[k] != 0xffffffffu && y->wake_tick[k] > tick) y->wake_tick[k] = tick;
+      if (y->pid[k] > 0 && y->wake_tick[k] != 0xffffffffu && y->wake_tick[k] > tick) y->wake_tick[k] = tick;
     *y->lockstep = 1;
   }
 }
@@ -37,7 +37,7 @@ static int joined(const dcm_lockstep *l, uint32_t tick, int need) {
     for (int k = 0; k < y->n.pid; k++) {
       const int pid = LOAD32(&y->pid[k]);
       /* one that answered the last tick needs no system call to prove it is alive */
-      if (pid != 0 && (LOAD32(&y->done_tick[k]) + 1 >= tick || shm_pid_alive(pid)) && ++n >= need) return 1;
+      if (pid > 0 && (LOAD32(&y->done_tick[k]) + 1 >= tick || shm_pid_alive(pid)) && ++n >= need) return 1;
     }
   }
   return 0;
@@ -53,7 +53,7 @@ static int pending(const dcm_lockstep *l, int r, uint32_t tick) {
   const dcm_blk_sync *y = l->sync[r];
   for (int k = 0; k < y->n.pid; k++) {
     const int32_t pid = LOAD32(&y->pid[k]);
-    if (pid == 0) continue;
+    if (pid <= 0) continue;
     if (k < DCM_SYNC_MAX && l->skip[r][k] == pid) continue;
     if (LOAD32(&y->wake_tick[k]) > tick) continue;
     if (LOAD32(&y->done_tick[k]) >= tick) continue;
@@ -111,8 +111,9 @@ int dcm_lockstep_wait(dcm_lockstep *l, uint32_t tick, void (*idle)(void *ctx, in
       }
       if (shm_now() - since > l->drop_after) {
         for (int k = 0; k < y->n.pid; k++) {
-          const int pid = y->pid[k];
-          if (pid != 0 && !shm_pid_alive(pid) && shm_cas_i32(&y->pid[k], pid, 0)) l->dropped++;
+          const int pid = LOAD32(&y->pid[k]);
+          /* a claim (a negative pid) is dropped only when its claimant died */
+          if (pid != 0 && !shm_pid_alive(pid < 0 ? -pid : pid) && shm_cas_i32(&y->pid[k], pid, 0)) l->dropped++;
         }
         since = shm_now();
       }

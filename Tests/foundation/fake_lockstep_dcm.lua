@@ -20,7 +20,7 @@ sync.lockstep[0] = 1
 local t0 = C.shm_now()
 while C.shm_now() - t0 < 10 do
   local any = false
-  for i = 0, sync:count('pid') - 1 do if pids[i] ~= 0 then any = true end end
+  for i = 0, sync:count('pid') - 1 do if pids[i] > 0 then any = true end end
   if any then break end
   C.shm_futex_wait(done_count, done_count[0], 0.01)
 end
@@ -34,8 +34,8 @@ for tick = 0, n - 1 do
     local waiting = false
     for i = 0, sync:count('pid') - 1 do
       local pid = pids[i]
-      if pid ~= 0 then
-        if C.shm_pid_alive(pid) == 0 then pids[i] = 0
+      if pid > 0 then
+        if C.shm_pid_alive(pid) == 0 then C.shm_cas_i32(pids + i, pid, 0)
         elseif sync.wake_tick[i] <= tick and sync.done_tick[i] < tick then waiting = true end
       end
     end

@@ -670,6 +670,38 @@ static void test_lockstep(void) {
   rc = dcm_lockstep_wait(&f, 1, NULL, NULL, NULL);
   check(rc == 0, "start_with 2: once started, one participant keeps it going");
   y.pid[0] = 0;
+
+  /* a slot being claimed (a negative pid: Lib/lockstep.lua sets its fields) is no participant yet:
+   * neither counted nor waited for, and kept while its claimant lives; dropped once it died */
+  dcm_lockstep c;
+  lockstep_of(&c, &y);
+  c.start_with = 2;
+  c.drop_after = 0.01;
+  y.pid[0] = (int32_t)getpid();
+  y.done_tick[0] = 11;
+  y.wake_tick[0] = 12;
+  y.pid[1] = -(int32_t)getpid();
+  y.done_tick[1] = 0;
+  y.wake_tick[1] = 0;
+  stop_after = 0;
+  idles = 0;
+  rc = dcm_lockstep_wait(&c, 12, idle_count, &ic, &stop_after);
+  check(rc == 1 && !c.started, "a claim in progress does not count towards start_with");
+  c.started = 1;
+  pid_t answer12 = finish_later(&y, 12, 0.1);   /* the wait lasts past drop_after: the dead are looked for */
+  rc = dcm_lockstep_wait(&c, 12, NULL, NULL, NULL);
+  waitpid(answer12, NULL, 0);
+  check(rc == 0 && y.pid[1] == -(int32_t)getpid() && c.dropped == 0,
+        "a live claim in progress is not waited for, nor dropped");
+  pid_t gone = fork();
+  if (gone == 0) _exit(0);
+  waitpid(gone, NULL, 0);
+  y.pid[1] = -(int32_t)gone;
+  answer12 = finish_later(&y, 13, 0.1);
+  rc = dcm_lockstep_wait(&c, 13, NULL, NULL, NULL);
+  waitpid(answer12, NULL, 0);
+  check(rc == 0 && y.pid[1] == 0 && c.dropped == 1, "the claim of a process that died is dropped");
+  y.pid[0] = 0;
   dcm_lockstep_end(&l);
   check(*y.lockstep == 0, "lockstep off");
   shm_block_close(y.blk);
