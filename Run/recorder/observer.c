@@ -35,14 +35,15 @@ int rec_observer_join(rec_observer *ob, shm_schema *schema, int robot_id, char *
   for (int pass = 0; pass < 2; pass++) {
     for (int i = 0; i < ob->n; i++) {
       const int p = LOAD(&ob->pid[i]);
-      if (p == 0 || (pass == 1 && !shm_pid_alive(p))) {
+      /* claimed first (the pid negated: Lib/lockstep.lua's protocol), then set up, then shown: the
+       * fields of a slot another process won are never written */
+      if ((p == 0 || (pass == 1 && !shm_pid_alive(p < 0 ? -p : p))) && shm_cas_i32(&ob->pid[i], p, -me)) {
         ob->done[i] = 0;
         ob->wake[i] = 0;
         ob->observer[i] = OBSERVER_STAGE;
-        if (shm_cas_i32(&ob->pid[i], p, me)) {
-          ob->slot = i;
-          return 0;
-        }
+        shm_cas_i32(&ob->pid[i], -me, me);
+        ob->slot = i;
+        return 0;
       }
     }
   }
@@ -64,7 +65,7 @@ uint32_t rec_observer_wait(rec_observer *ob, double timeout_s) {
     int waiting = 0;
     for (int i = 0; i < ob->n && !waiting; i++) {
       const int p = LOAD(&ob->pid[i]);
-      waiting = i != ob->slot && p != 0 && LOAD(&ob->observer[i]) < OBSERVER_STAGE && LOAD(&ob->wake[i]) <= tick &&
+      waiting = i != ob->slot && p > 0 && LOAD(&ob->observer[i]) < OBSERVER_STAGE && LOAD(&ob->wake[i]) <= tick &&
                 LOAD(&ob->done[i]) < tick && shm_pid_alive(p);
     }
     if (!waiting) break;
