@@ -1,6 +1,6 @@
 -- The motion process from Lua and the REPL: request a motion, read its state.
 --
---   Motion.request('walk')     -- relax, sit, stand, walk, kick_left, kick_right, wbc (Lib/WBC.lua)
+--   Motion.request('walk')     -- relax, sit, stand, walk, kick_left, kick_right, wbc (Lib/WBC.lua), touch
 --   Motion.state()             -- 'stance', 'walk', 'falling', 'standup_front', ...
 --   Motion.falls()             -- falls detected since the motion process started
 --   Motion.owners()            -- per joint group: 'motion' (its state drives it), 'caller' (taken with
@@ -17,10 +17,10 @@ local M = {}
 
 -- the motion state machine's states, in the order of motion.state / motion.request
 M.STATES = { 'relax', 'sit', 'stance', 'walk', 'kick_left', 'kick_right', 'falling', 'standup_front',
-  'standup_back', 'wbc' }
+  'standup_back', 'wbc', 'touch' }
 -- request names and the state each asks for
 M.REQUESTS = { relax = 'relax', sit = 'sit', stand = 'stance', walk = 'walk', kick_left = 'kick_left',
-  kick_right = 'kick_right', wbc = 'wbc' }
+  kick_right = 'kick_right', wbc = 'wbc', touch = 'touch' }
 
 local index = {}
 for i, s in ipairs(M.STATES) do index[s] = i - 1 end
@@ -33,7 +33,11 @@ function M.request(name)
   local s = M.REQUESTS[name]
   if not s then
     error(string.format("Motion.request: unknown motion '%s' (%s)", tostring(name),
-      'relax, sit, stand, walk, kick_left, kick_right, wbc'), 2)
+      'relax, sit, stand, walk, kick_left, kick_right, wbc, touch'), 2)
+  end
+  if name == 'touch' and #require('Config').load('touch').arms == 0 then
+    error(string.format("Motion.request: the body '%s' has no arms to touch with (its touch.lua lists none)",
+      require('Config').robot()), 2)
   end
   local b = motion()
   b:write(function(m)

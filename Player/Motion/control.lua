@@ -3,8 +3,8 @@
 -- driven by tests and benchmarks directly.
 --
 -- States (Lib/Motion.lua's STATES, one small file each in Player/Motion/states/): relax, sit,
--- stance, walk, kick_left, kick_right, falling, standup_front, standup_back, wbc. Requests (relax,
--- sit, stand, walk, kick_left, kick_right, wbc) are wishes: `ctl.want` holds the last one and the
+-- stance, walk, kick_left, kick_right, falling, standup_front, standup_back, wbc, touch. Requests (relax,
+-- sit, stand, walk, kick_left, kick_right, wbc, touch) are wishes: `ctl.want` holds the last one and the
 -- states move towards it (relax at once from anywhere; the rest through stance).
 --
 -- Who drives a joint (as ROBOTIS' motion modules: each owns the joints it drives): every tick
@@ -39,7 +39,7 @@ local TRANSITIONS = {
   relax = { sit = 'sit', stand = 'stance', walk = 'stance', kick_left = 'stance', kick_right = 'stance' },
   sit = { stand = 'stance', walk = 'stance', kick_left = 'stance', kick_right = 'stance' },
   stance = { sit = 'sit', walk = 'walk', kick_left = 'kick_left', kick_right = 'kick_right', wbc = 'wbc',
-    fall = 'falling' },
+    touch = 'touch', fall = 'falling' },
   walk = { done = 'stance', fall = 'falling' },
   kick_left = { done = 'stance', fall = 'falling' },
   kick_right = { done = 'stance', fall = 'falling' },
@@ -47,10 +47,11 @@ local TRANSITIONS = {
   standup_front = { done = 'stance', fall = 'falling' },
   standup_back = { done = 'stance', fall = 'falling' },
   wbc = { done = 'stance', fall = 'falling' },
+  touch = { done = 'stance', fall = 'falling' },
   ['*'] = { relax = 'relax' },
 }
 -- states in which a fall is watched for (the stand-ups check the result themselves)
-local WATCH_FALL = { stance = true, walk = true, kick_left = true, kick_right = true, wbc = true }
+local WATCH_FALL = { stance = true, walk = true, kick_left = true, kick_right = true, wbc = true, touch = true }
 
 local ROLES = { legs = true, arms = true, head = true, all = true }
 

@@ -90,8 +90,10 @@ return {
     },
   },
   -- 6-axis force/torque at the ankles (dcm.sensor.ft), the sim's instruments: the real HOAP-3 has four
-  -- pressure sensors under each foot instead (S7), which no platform reads yet
-  ft = { lfoot = 'l_ank_roll', rfoot = 'r_ank_roll' },
+  -- pressure sensors under each foot instead (S7), which no platform reads yet. At the wrists: the
+  -- wrist force sensors S0 reports (one per wrist), between the forearm and the hand (the wrist yaw
+  -- servo's link), as six-axis sensors (S0 gives no axes)
+  ft = { lfoot = 'l_ank_roll', rfoot = 'r_ank_roll', lhand = 'l_wrist_yaw', rhand = 'r_wrist_yaw' },
   -- the kinematics' chains are the defaults (Config/common/robot.lua): the head's look-at turns the
   -- pan and the tilt, and the roll, between the tilt and the camera's link, takes its angle from the
   -- whole-body angles; the arms and the head hang from the waist: their functions take the
