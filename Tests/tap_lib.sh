@@ -17,3 +17,26 @@ tap_merge() {
   fi
   return 0
 }
+
+# lockstep_scenario ID LABEL SCRIPT [ARGS...]: the sim's robot ROBOT_ID=ID in lockstep (the DCM holds
+# its first tick for two participants: motion and the script; no camera) with ./run_main motion, and
+# ./run_repl SCRIPT ARGS as the second (at most 300 s); then both stopped, the robot's blocks removed
+# and the script's TAP merged under LABEL (tap_merge). ROBOT, HRP_SITE and the like come from the
+# caller's environment; SCENARIO_DCM_ARGS adds arguments for the DCM (e.g. "--seed 3"). The logs:
+# $LOGDIR/main_LABEL.log and $LOGDIR/LABEL.log.
+lockstep_scenario() {
+  local id=$1 label=$2 script=$3 arg main_pid rc
+  shift 3
+  local dcm_args=(--dcm-arg --lockstep-wait --dcm-arg 2 --dcm-arg --no-camera)
+  for arg in ${SCENARIO_DCM_ARGS:-}; do dcm_args+=(--dcm-arg "$arg"); done
+  Tools/shm/shm --robot "$id" remove >/dev/null 2>&1   # stale segments of an earlier run
+  ROBOT_ID=$id ./run_main --sim --quiet --no-restart "${dcm_args[@]}" motion >"$LOGDIR/main_$label.log" 2>&1 &
+  main_pid=$!
+  for _ in $(seq 200); do grep -q 'motion started' "$LOGDIR/main_$label.log" 2>/dev/null && break; sleep 0.1; done
+  ROBOT_ID=$id timeout 300 ./run_repl "$script" "$@" >"$LOGDIR/$label.log" 2>&1
+  rc=$?
+  kill -TERM "$main_pid" 2>/dev/null
+  wait "$main_pid" 2>/dev/null
+  Tools/shm/shm --robot "$id" remove >/dev/null 2>&1
+  tap_merge "$LOGDIR/$label.log" "$label" "$rc"
+}

@@ -23,17 +23,6 @@ cp Config/site/*.lua "$site/"
 cat >"$site/sim.lua" <<LUA
 return { objects = { { pos = { $wall_x + 0.05, 0, 0.5 }, size = { 0.1, 1.0, 1.0 }, rpy = { 0, 0, 0 } } } }
 LUA
-Tools/shm/shm --robot "$id" remove >/dev/null 2>&1   # stale segments of an earlier run
-HRP_SITE=$site ROBOT=hoap3 ROBOT_ID=$id ./run_main --sim --quiet --no-restart --dcm-arg --lockstep-wait \
-  --dcm-arg 2 --dcm-arg --no-camera motion >"$LOGDIR/main_hoap3_touch.log" 2>&1 &
-main_pid=$!
-for _ in $(seq 200); do grep -q 'motion started' "$LOGDIR/main_hoap3_touch.log" 2>/dev/null && break; sleep 0.1; done
-HRP_SITE=$site ROBOT=hoap3 ROBOT_ID=$id timeout 300 ./run_repl Tests/motion/hoap3_touch.lua "$wall_x" \
-  >"$LOGDIR/hoap3_touch.log" 2>&1
-rc=$?
-kill -TERM "$main_pid" 2>/dev/null
-wait "$main_pid" 2>/dev/null
-Tools/shm/shm --robot "$id" remove >/dev/null 2>&1
-tap_merge "$LOGDIR/hoap3_touch.log" hoap3_touch "$rc"
+HRP_SITE=$site ROBOT=hoap3 lockstep_scenario "$id" hoap3_touch Tests/motion/hoap3_touch.lua "$wall_x"
 echo "1..$k"
 [ $failed -eq 0 ]

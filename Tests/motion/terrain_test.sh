@@ -29,19 +29,10 @@ for layout in "${LAYOUTS[@]}"; do
   rm -rf "$site"; mkdir -p "$site"
   cp Config/site/*.lua "$site/"
   luajit Tests/motion/terrain.lua sim "$layout" >"$site/sim.lua" || { echo "not ok $((k + 1)) - terrain $layout: no layout"; exit 1; }
-  Tools/shm/shm --robot "$id" remove >/dev/null 2>&1   # stale segments of an earlier run
-  HRP_SITE=$site ROBOT_ID=$id ./run_main --sim --quiet --no-restart --dcm-arg --lockstep-wait --dcm-arg 2 \
-    --dcm-arg --seed --dcm-arg "${SIM_SEED:-1}" --dcm-arg --no-camera motion >"$LOGDIR/main_terrain_$layout.log" 2>&1 &
-  main_pid=$!
-  for _ in $(seq 200); do grep -q 'motion started' "$LOGDIR/main_terrain_$layout.log" 2>/dev/null && break; sleep 0.1; done
   params=${WALK_PARAMS-}
   [ "$layout" = step ] && [ -z "${WALK_PARAMS+x}" ] && params=${TILT_PARAMS:-feedback.tilt=0.5,1.0}
-  WALK_PARAMS=$params HRP_SITE=$site ROBOT_ID=$id timeout 300 ./run_repl Tests/motion/terrain_scenario.lua "$layout" ${TERRAIN_MODES:-} \
-    >"$LOGDIR/terrain_$layout.log" 2>&1
-  rc=$?
-  kill -TERM "$main_pid" 2>/dev/null
-  wait "$main_pid" 2>/dev/null
-  Tools/shm/shm --robot "$id" remove >/dev/null 2>&1
-  tap_merge "$LOGDIR/terrain_$layout.log" "$layout" "$rc"
+  # shellcheck disable=SC2086
+  WALK_PARAMS=$params HRP_SITE=$site SCENARIO_DCM_ARGS="--seed ${SIM_SEED:-1}" \
+    lockstep_scenario "$id" "terrain_$layout" Tests/motion/terrain_scenario.lua "$layout" ${TERRAIN_MODES:-}
 done
 [ $failed -eq 0 ]

@@ -26,16 +26,6 @@ if [ -n "$iterations" ]; then
   printf 'return { physics = { iterations = %d } }\n' "$iterations" >"$site/sim.lua"
   export HRP_SITE=$site TORQUE_DRIFT_BOUND=0.01
 fi
-Tools/shm/shm --robot "$id" remove >/dev/null 2>&1   # stale segments of an earlier run
-ROBOT=hubo2plus ROBOT_ID=$id ./run_main --sim --quiet --no-restart --dcm-arg --lockstep-wait --dcm-arg 2 \
-  --dcm-arg --no-camera motion >"$LOGDIR/main_$label.log" 2>&1 &
-main_pid=$!
-for _ in $(seq 200); do grep -q 'motion started' "$LOGDIR/main_$label.log" 2>/dev/null && break; sleep 0.1; done
-ROBOT=hubo2plus ROBOT_ID=$id timeout 300 ./run_repl Tests/sim/torque_arm.lua >"$LOGDIR/$label.log" 2>&1
-rc=$?
-kill -TERM "$main_pid" 2>/dev/null
-wait "$main_pid" 2>/dev/null
-Tools/shm/shm --robot "$id" remove >/dev/null 2>&1
-tap_merge "$LOGDIR/$label.log" "$label" "$rc"
+ROBOT=hubo2plus lockstep_scenario "$id" "$label" Tests/sim/torque_arm.lua
 echo "1..$k"
 [ $failed -eq 0 ]
