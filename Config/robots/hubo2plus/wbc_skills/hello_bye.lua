@@ -1,6 +1,6 @@
 -- The Hubo2+ waves (stanford-wbc's "hello-bye" as a skill, Lib/wbc_skill.lua; docs/whole-body.md):
 -- the right palm up beside the head, over to either side of it three times, then down again (its
--- task dropped: the wbc config's posture takes the arm back to where the skill started). Targets
+-- task dropped: the wbc config's posture, faster, takes the arm back to where the skill started). Targets
 -- in the stance frame (m): on the ground midway between the soles, x ahead, y left, z up; the
 -- shoulder is about 1.0 m up and 0.21 m right, the palm 0.42 m from it with the arm straight, so
 -- every target sits 0.25-0.32 m from the shoulder (the elbow bent). Levels and gains as the wbc
@@ -19,7 +19,8 @@ return {
       { go = 'wave_out', reached = { r_palm = 0.01 }, after = 3, times = 2 },
       { go = 'bye', reached = { r_palm = 0.01 }, after = 3 },
     } },
-    -- the palm's task dropped: the posture brings the arm back; the skill rests here
-    bye = {},
+    -- the palm's task dropped: the posture brings the arm back, at three times its gain in the wbc config
+    -- (its max_rate, 0.5 rad/s, bounds it: the shoulder comes down 1.4 rad in about 3 s); the skill rests here
+    bye = { tasks = { posture = { kind = 'posture', level = 4, gain = 3, max_rate = 0.5, target = 'entry' } } },
   },
 }
