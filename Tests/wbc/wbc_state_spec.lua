@@ -11,6 +11,7 @@ local wbc_link = require('Motion.wbc_link')
 local wbc_skill = require('wbc_skill')
 local wbc = require('wbc')
 local shm = require('shm')
+local ffi = require('ffi')
 
 local BODY = 'hubo2plus'
 local robot = Config.load('robot', nil, { robot = BODY })
@@ -24,6 +25,8 @@ local function tick(c, link, k)
   c:tick(c.t + c.dt)
   link:after(c, k)
 end
+
+local function block_of(link) return link.b end
 
 -- bytes of garbage per tick over n ticks
 local function garbage(c, link, n)
@@ -162,5 +165,23 @@ describe('whole-body skills', function()
     assert.is_nil(c.wbc_skill_error)
     assert.same({ 'hello', 'wave_out', 'wave_in', 'wave_out', 'wave_in', 'wave_out', 'wave_in', 'bye' }, order)
     assert.equals('hello_bye', c.wbc_report.skill)
+    -- another skill asked for while it runs: it starts at once; one that cannot run is refused, naming
+    -- why, and the default runs
+    c.wbc_skill, c.wbc_skill_seq = 'nosuch', 2
+    tick(c, link, 1)
+    assert.equals(2, block_of(link).skill_done[0])
+    assert.equals(-1, block_of(link).skill_rc[0])
+    assert.truthy(ffi.string(block_of(link).skill_error):find("no config file for 'wbc_skills/nosuch'", 1, true))
+    assert.equals('default', c.wbc_report.skill)
+    assert.equals('hold', c.wbc_report.skill_state)
+    c.wbc_skill, c.wbc_skill_seq = 'hello_bye', 3
+    tick(c, link, 2)
+    assert.equals(0, block_of(link).skill_rc[0])
+    assert.equals('hello', ffi.string(block_of(link).skill_state))
+    assert.is_true(c.wbc_report.by_name.r_palm.enabled)
+    c.wbc_skill, c.wbc_skill_seq = nil, 4   -- the default again: the palm's task rests
+    tick(c, link, 3)
+    assert.equals('default', ffi.string(block_of(link).skill))
+    assert.is_false(c.wbc_report.by_name.r_palm.enabled)
   end)
 end)
