@@ -120,8 +120,14 @@ function M.entry(c)
   ctl:contacts(d.contacts)
   ctl:reset(c.q)
   for i = 1, c.n do d.entry_q[i] = c.q[i] end
+  -- the config's tasks as it says (a skill's state may have changed their levels and gains), the rest
+  -- resting until a skill or a target names them
   for _, name in ipairs(ctl:tasks()) do
     local t = Config.optional(d.cfg.tasks, name)
+    if t then
+      ctl:level(name, t.level)
+      ctl:gain(name, t.gain)
+    end
     ctl:target(name, t and resolve(d, t) or nil)
   end
   d.report.tasks, d.report.by_name = {}, {}
