@@ -52,7 +52,9 @@ function M.load(name, opts)
   end
   local copts = { robot = opts.robot }
   local concern = M.concern(name)
-  local cfg = Config.load(concern, nil, copts)   -- the shape: Config/spec/wbc_skills.lua
+  -- the shape: Config/spec/wbc_skills.lua (the message without this line's position: it names the files)
+  local loaded, cfg = pcall(Config.load, concern, nil, copts)
+  if not loaded then error((tostring(cfg):gsub('^[^\n]-wbc_skill%.lua:%d+: ', '')), 0) end
   local function where(key) return Config.origin(concern, key, copts) end
   local robot = Config.load('robot', nil, copts)
   local base = opts.base or Config.load('wbc', nil, copts).tasks
