@@ -236,11 +236,14 @@ local function validate(tbl, spec, where, prefix, whole)
   end
 end
 
--- The spec of a concern (Config/spec/<concern>.lua; nil: none).
+-- The spec of a concern (Config/spec/<concern>.lua; a concern in a folder, wbc_skills/wave, without
+-- a spec of its own: its folder's, Config/spec/wbc_skills.lua; nil: none).
 local function concern_spec(concern)
-  local abs = config_root() .. '/Config/spec/' .. concern .. '.lua'
-  if not exists(abs) then return nil end
-  return read_file({ abs = abs, file = 'Config/spec/' .. concern .. '.lua' })
+  for _, name in ipairs({ concern, concern:match('^(.+)/[^/]+$') }) do
+    local abs = config_root() .. '/Config/spec/' .. name .. '.lua'
+    if exists(abs) then return read_file({ abs = abs, file = 'Config/spec/' .. name .. '.lua' }) end
+  end
+  return nil
 end
 
 -- robot.lua's per-joint tables (limits, actuator) name a joint that both sides have once: a key that
@@ -335,6 +338,14 @@ function M.load(concern, spec, opts)
     if not ok then error(err, 2) end
   end
   return entry.cfg
+end
+
+-- The file that set key path `key` ('tasks.com.gain') of a concern, or all of its files when no
+-- layer did: for errors a caller finds beyond the spec (a frame the body lacks).
+function M.origin(concern, key, opts)
+  M.load(concern, nil, opts)
+  local robot, platform = resolve(opts)
+  return cache[concern .. '|' .. robot .. '|' .. platform].where(key)
 end
 
 -- The same as a plain table without metatables (for C readers and tools), plus the files used;

@@ -1,6 +1,7 @@
 -- The motion process from Lua and the REPL: request a motion, read its state.
 --
 --   Motion.request('walk')     -- relax, sit, stand, walk, kick_left, kick_right, wbc (Lib/WBC.lua), touch
+--   Motion.request('wbc', { skill = 'hello_bye' })   -- whole-body control running a skill (WBC.skill)
 --   Motion.state()             -- 'stance', 'walk', 'falling', 'standup_front', ...
 --   Motion.falls()             -- falls detected since the motion process started
 --   Motion.owners()            -- per joint group: 'motion' (its state drives it), 'caller' (taken with
@@ -28,8 +29,9 @@ M.INDEX = index
 
 local motion = shm.lazy('motion')
 
--- Asks the motion process for a motion; errors on an unknown name.
-function M.request(name)
+-- Asks the motion process for a motion; errors on an unknown name. opts: { skill = name } for wbc
+-- (checked first: a skill refused asks for nothing).
+function M.request(name, opts)
   local s = M.REQUESTS[name]
   if not s then
     error(string.format("Motion.request: unknown motion '%s' (%s)", tostring(name),
@@ -38,6 +40,13 @@ function M.request(name)
   if name == 'touch' and #require('Config').load('touch').arms == 0 then
     error(string.format("Motion.request: the body '%s' has no arms to touch with (its touch.lua lists none)",
       require('Config').robot()), 2)
+  end
+  if opts ~= nil then
+    if name ~= 'wbc' or type(opts) ~= 'table' then
+      error("Motion.request: options are for 'wbc' only ({ skill = name })", 2)
+    end
+    local ok, err = pcall(require('WBC').skill, opts.skill)
+    if not ok then error(err, 2) end
   end
   local b = motion()
   b:write(function(m)

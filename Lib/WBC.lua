@@ -9,6 +9,9 @@
 --                    --     tasks = { r_palm = { level = 2, error = 0.004, feasible = true, enabled = true,
 --                    --               sigma_min = 0.18, held = false }, com = {...} }, last = { seq, ok, error } }
 --                    (held: out of reach for the skill's hold_after s, the target became where it got to)
+--   WBC.skill('hello_bye')   -- the skill the state runs (Lib/wbc_skill.lua; nil: the default), from its
+--                            -- first state: at once when the state runs, else when it starts
+--   p(WBC.status().skill)    --> { name = 'hello_bye', state = 'wave_out', time = 0.8, last = { seq, ok, error } }
 --
 -- set_target checks what it can at once (a name, finite numbers, a frame the body has) and raises
 -- an error naming it; the motion state applies the target on its next tick and answers in
@@ -48,7 +51,7 @@ function M.set_target(name, target)
     if name ~= 'com' and name ~= 'posture' and not known_frame(name) then
       local ok = pcall(require('Config').load, 'wbc')
       local skill = ok and require('Config').load('wbc').tasks or {}
-      if rawget(skill, name) == nil then
+      if rawget(skill, name) == nil and M.status().tasks[name] == nil then
         error(string.format("WBC.set_target: '%s' is neither a frame of the body nor a task of the skill", name), 2)
       end
     end
@@ -65,12 +68,35 @@ function M.set_target(name, target)
   return seq
 end
 
+-- Asks for skill `name` (nil or 'default': the wbc config's tasks alone); checks the skill's files
+-- against the body at once (an error naming the file and the key). Returns the request's number.
+function M.skill(name)
+  if name ~= nil and type(name) ~= 'string' then error('WBC.skill: a skill name or nil expected', 2) end
+  local skills = require('wbc_skill')
+  if name == skills.DEFAULT then name = nil end
+  if name ~= nil then
+    local ok, err = pcall(skills.load, name, { has_frame = known_frame })
+    if not ok then error('WBC.skill: ' .. tostring(err), 2) end
+  end
+  local seq
+  block():write(function(x)
+    ffi.fill(x.request_skill, 32)
+    ffi.copy(x.request_skill, name or '')
+    seq = x.skill_seq[0] + 1
+    x.skill_seq[0] = seq
+  end)
+  return seq
+end
+
 -- The controller's state: see the header.
 function M.status()
   return block():read(function(x)
     local s = { active = x.active[0] == 1, feasible = x.feasible[0] == 1, tick_us = x.step_us[0], tick = x.tick[0],
       tasks = {}, last = { seq = x.done_seq[0], ok = x.done_rc[0] == 0, error = ffi.string(x.done_error) } }
     if s.last.error == '' then s.last.error = nil end
+    s.skill = { name = ffi.string(x.skill), state = ffi.string(x.skill_state), time = x.skill_time[0],
+      last = { seq = x.skill_done[0], ok = x.skill_rc[0] == 0, error = ffi.string(x.skill_error) } }
+    if s.skill.last.error == '' then s.skill.last.error = nil end
     if not s.active then return s end
     for i = 0, math.min(x.ntask[0], 16) - 1 do
       local name = ffi.string(x.task_name + i * 32)

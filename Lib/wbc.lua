@@ -61,7 +61,8 @@ function M.new(robot, urdf, dt, files)
   end
   local self = setmetatable({
     cw = ffi.gc(b_ctl[0], C.wbc_free), name = rawget(robot, 'name') or urdf, n = n, joints = keep, dt = dt,
-    ids = {}, frames = {}, q_in = ffi.new('double[?]', n), q_out = ffi.new('double[?]', n), vec = ffi.new('double[64]'),
+    ids = {}, frames = {}, names = {}, q_in = ffi.new('double[?]', n), q_out = ffi.new('double[?]', n),
+    vec = ffi.new('double[64]'),
   }, Ctl)
   self:limits(robot)
   return self
@@ -115,6 +116,7 @@ function Ctl:add(name, kind, opts)
   local id = check(self, C.wbc_task_add(self.cw, name, k, opt('frame', name), opt('level', 1), opt('gain', 1),
     opt('max_rate', 0)))
   self.ids[name], self.frames[name] = id, opt('frame', name)
+  self.names[#self.names + 1] = name
   return id
 end
 
@@ -159,12 +161,9 @@ function Ctl:status(name, out)
   return out
 end
 
--- The task names, in the order they were added.
-function Ctl:tasks()
-  local list = {}
-  for i = 0, C.wbc_ntask(self.cw) - 1 do list[i + 1] = ffi.string(C.wbc_task_name(self.cw, i)) end
-  return list
-end
+-- The task names, in the order they were added: the controller's own list (kept from call to
+-- call, so a tick makes no garbage; not to be changed).
+function Ctl:tasks() return self.names end
 
 -- One step: the joint angles to command (robot order) into out; returns out and how many joints a
 -- limit held.
@@ -181,6 +180,11 @@ function Ctl:pose(frame)
   local R = {}
   for k = 1, 9 do R[k] = rot[k - 1] end
   return { x = self.vec[0], y = self.vec[1], z = self.vec[2], R = R }
+end
+
+-- Whether the body has frame `name` (a link or joint of the URDF, or 'com').
+function Ctl:has_frame(name)
+  return type(name) == 'string' and C.wbc_frame_pose(self.cw, name, self.vec, nil) == 0
 end
 
 function Ctl:step_us() return C.wbc_step_us(self.cw) end

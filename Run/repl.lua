@@ -102,6 +102,7 @@ hrp REPL (robot id %d, body %s, platform %s)
   Sim.link_truth('r_sole')   world pose of any link or frame of the body   Sim.link_names()
   Motion.request('walk')  Walk.set_velocity(vx, vy, va)  Vision.ball()   (when loaded)
   Motion.request('wbc')  WBC.set_target('r_palm', {0.35, -0.25, 0.9})  WBC.set_target('r_palm', nil)  WBC.status()
+  Motion.request('wbc', { skill = 'hello_bye' })  WBC.skill('hello_bye')  WBC.skill(nil)   (skills: docs/whole-body.md)
   help()  quit with Ctrl-D]]
 function env.help() print(string.format(HELP, shm.robot_id(), Config.robot(), Config.platform())) end
 

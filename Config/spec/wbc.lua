@@ -18,8 +18,15 @@ local function task(t)
   if target == nil or (target == 'stance' and t.kind == 'com_xy') or (target == 'entry' and t.kind == 'posture') then
     return true
   end
+  if count == true and type(target) == 'table' and #target == 0 then
+    -- a posture's joints by name (the others keep the entry pose; the names: against the body)
+    for j, a in pairs(target) do
+      if type(j) ~= 'string' or not finite(a) then return 'must map joint names to finite angles', 'target' end
+    end
+    return true
+  end
   if type(target) ~= 'table' or (count ~= true and #target ~= count) then
-    local what = count == true and 'joint angles' or tostring(count) .. ' numbers'
+    local what = count == true and 'joint angles (or joint = angle)' or tostring(count) .. ' numbers'
     return 'must be a list of ' .. what .. ", 'stance' (com_xy) or 'entry' (posture)", 'target'
   end
   for i = 1, #target do

@@ -16,6 +16,15 @@ in the sim, ./run_view serving it and Tests/view/probe.lua writing the latency p
    /events and never reads): p50 below LIVE_MS, and whether it meets the goal (GOAL_MS) is printed
    (a figure, as benchmarks do: the shared machine's load shows in it);
 and prints the latency p50/p99 and the server's CPU share.
+
+    view_check.py --url URL --wbc --out PNG
+
+With --wbc (a robot whose motion runs the whole-body state, Tests/view/view_test.sh's second part):
+5. the whole-body panel lists every task of the wbc block the page holds, each row with the block's
+   level, error and feasibility (the page's own block, hrpView.wbc(), against the table's text);
+6. that block is one the robot wrote: a sample of the shm block, read by this script every 2 ms,
+   with the same tick has the same tasks, levels and errors;
+7. the panel shows the task `com` with a number for its error.
 """
 import argparse
 import os
@@ -105,15 +114,109 @@ def stall_client(url):
     return s
 
 
+class WbcLog(threading.Thread):
+    """Samples the wbc block every 2 ms: tick -> {task: (level, error, feasible)}."""
+
+    def __init__(self, robot):
+        super().__init__(daemon=True)
+        self.seg = shm_read.Segment(shm_read.segment_path("wbc", robot))
+        self.by_tick = {}
+        self.stop = False
+
+    def run(self):
+        while not self.stop:
+            x = self.seg.read()
+            if x["active"][0]:
+                names = x["task_name"].tobytes()
+                tasks = {}
+                for i in range(min(int(x["ntask"][0]), 16)):
+                    name = names[i * 32:(i + 1) * 32].split(b"\0")[0].decode("latin-1")
+                    tasks[name] = (int(x["task_level"][i]), float(x["task_error"][i]), int(x["task_feasible"][i]))
+                self.by_tick[int(x["tick"][0])] = tasks
+            time.sleep(0.002)
+
+
+def check_wbc(a, robot):
+    """The whole-body panel against the page's block and the page's block against the robot's."""
+    for _ in range(100):
+        if os.path.exists(shm_read.segment_path("wbc", robot)):
+            break
+        time.sleep(0.1)
+    log = WbcLog(robot)
+    log.start()
+    with tempfile.TemporaryDirectory(prefix="hrp-view-chromium-") as profile, sync_playwright() as p:
+        ctx = p.chromium.launch_persistent_context(
+            profile, executable_path="/usr/bin/chromium", headless=True, args=CHROMIUM_ARGS,
+            viewport={"width": 1600, "height": 900}, device_scale_factor=1)
+        page = ctx.new_page()
+        errors = []
+        page.on("pageerror", lambda e: errors.append(str(e)))
+        page.goto(a.url)
+        try:
+            page.wait_for_function("hrpView.wbc() && hrpView.wbc().active && "
+                                   "document.querySelectorAll('#wbc tr[data-task]').length > 0", timeout=30000)
+        except Exception as e:  # noqa: BLE001 (the page's state goes into the report)
+            errors.append(str(e).splitlines()[0])
+        time.sleep(1.0)
+        # the page's block and the table drawn from it, read together (the text panels redraw at 4 Hz:
+        # read until both agree on the same block, at most a few times)
+        for _ in range(20):
+            held = page.evaluate("hrpView.wbc()")
+            rows = page.evaluate("""[...document.querySelectorAll('#wbc tr[data-task]')].map(r => ({
+                name: r.dataset.task, level: r.querySelector('.level').textContent,
+                error: r.querySelector('.error').textContent, feasible: r.querySelector('.feasible').textContent }))""")
+            again = page.evaluate("hrpView.wbc()")
+            if held and again and held["tick"] == again["tick"]:
+                break
+            time.sleep(0.05)
+        info = page.locator("#wbc-info").inner_text()
+        page.locator("#wbc-panel").scroll_into_view_if_needed()
+        page.screenshot(path=a.out, full_page=True)
+        ctx.close()
+    log.stop = True
+    log.join()
+    tasks = {t["name"]: t for t in (held or {}).get("tasks", [])}
+    shown = {r["name"]: r for r in rows}
+    bad = []
+    for name, t in tasks.items():
+        r = shown.get(name)
+        want_err = f"{t['error'] * 1e3:.1f}" if t["enabled"] else "–"
+        want_feas = ("no target" if not t["enabled"] else "fills the rest" if t["kind"] == "posture"
+                     else "yes" if t["feasible"] else "NO")
+        if not r or r["level"] != str(t["level"]) or r["error"] != want_err or r["feasible"] != want_feas:
+            bad.append(f"{name}: shown {r}, block level {t['level']} error {want_err} {want_feas}")
+    tap(not errors and tasks and not bad and set(shown) == set(tasks),
+        "the whole-body panel shows every task of the page's wbc block with its level, error and feasibility",
+        f"{len(tasks)} tasks ({', '.join(sorted(tasks))}); header '{info}' {'; '.join(bad + errors)}")
+    sample = log.by_tick.get(held["tick"]) if held else None
+    same = sample is not None and set(sample) == set(tasks) and all(
+        sample[n][0] == t["level"] and abs(sample[n][1] - t["error"]) < 1e-12 for n, t in tasks.items())
+    tap(same, "the page's wbc block is one the robot wrote (the shm sample of the same tick)",
+        f"tick {held and held['tick']}; {len(log.by_tick)} ticks sampled")
+    com = shown.get("com")
+    tap(com is not None and com["error"] not in ("", "–"),
+        "the panel shows the task com and its error",
+        f"com: level {com and com['level']}, error {com and com['error']} mm, feasible {com and com['feasible']}; "
+        f"screenshot {a.out}")
+    print(f"1..{n_tests}")
+    return 1 if failed else 0
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--url", required=True)
-    ap.add_argument("--server-pid", type=int, required=True)
+    ap.add_argument("--server-pid", type=int)
     ap.add_argument("--out", required=True)
     ap.add_argument("--seconds", type=float, default=8.0, help="latency measurement")
+    ap.add_argument("--wbc", action="store_true", help="check the whole-body panel (a robot in the wbc state)")
+    ap.add_argument("--first", type=int, default=1, help="number of the first TAP line")
     a = ap.parse_args()
     robot = int(os.environ["ROBOT_ID"])
     os.makedirs(os.path.dirname(os.path.abspath(a.out)), exist_ok=True)
+    global n_tests
+    n_tests = a.first - 1
+    if a.wbc:
+        return check_wbc(a, robot)
 
     for _ in range(100):   # the sim DCM creates its blocks within a second or two
         if os.path.exists(shm_read.segment_path("sim", robot)):

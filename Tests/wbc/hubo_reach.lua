@@ -1,11 +1,15 @@
 -- Whole-body control on the Hubo2+ in the sim (Tests/wbc/wbc_sim_test.sh): from stance,
 -- Motion.request('wbc'); five right-hand targets up to 0.45 m ahead of the stance frame, some beyond
 -- the arm's reach without the torso; each must be reached within 2 cm in 3 s, measured on the
--- simulated robot (Sim.link_truth of the palm), with no fall and the soles moving under 1 cm. A
--- target 1.5 m ahead is flagged infeasible and the robot keeps standing. Prints TAP and the figures.
+-- simulated robot (Sim.link_truth of the palm), with no fall, the soles moving under 1 cm and the
+-- measured ZMP (the feet's F/T sensors, Tests/wbc/zmp_margin.lua) inside the soles' support polygon
+-- throughout each reach. A target 1.5 m ahead is flagged infeasible and the robot keeps standing.
+-- Prints TAP and the figures.
 -- luacheck: globals Sim Motion WBC wait Body
-package.path = os.getenv('HRP_ROOT') .. '/Tests/motion/?.lua;' .. package.path
+package.path = os.getenv('HRP_ROOT') .. '/Tests/motion/?.lua;' .. os.getenv('HRP_ROOT') .. '/Tests/wbc/?.lua;'
+  .. package.path
 local ks = require('kick_setup')
+local zmp_margin = require('zmp_margin')
 local sc = require('Tests.scenario_lib').new(wait, Body)
 local tap = sc.tap
 
@@ -31,10 +35,24 @@ end
 
 local targets = { { 0.30, -0.25, 0.80 }, { 0.35, -0.25, 0.90 }, { 0.40, -0.15, 0.85 }, { 0.45, -0.20, 0.75 },
   { 0.25, -0.35, 1.00 } }
-local worst_hand, worst_sole, fell = 0, 0, false
+local zm = zmp_margin.new(Sim, require('shm'))
+local worst_hand, worst_sole, fell, worst_margin, unloaded = 0, 0, false, math.huge, 0
 for i, t in ipairs(targets) do
   WBC.set_target('r_palm', t)
-  wait(3)
+  -- the measured ZMP every 0.02 s of the 3 s: its smallest margin to the support polygon's edge
+  zm:feet()
+  local margin, at = math.huge, nil
+  for _ = 1, 150 do
+    wait(0.02)
+    local m, zx, zy = zm:margin()
+    if not m then unloaded = unloaded + 1 elseif m < margin then margin, at = m, { zx, zy } end
+  end
+  -- where it came closest to an edge, in the stance frame
+  local c, s = math.cos(yaw), math.sin(yaw)
+  local dx, dy = at and at[1] - ox or 0 / 0, at and at[2] - oy or 0 / 0
+  print(string.format('# target %d: measured ZMP at least %.1f mm inside the support polygon (closest at %.3f, %.3f '
+    .. 'in the stance frame)', i, margin * 1e3, c * dx + s * dy, -s * dx + c * dy))
+  worst_margin = math.min(worst_margin, margin)
   local hand = dist(xyz(Sim.link_truth('r_palm')), to_field(t))
   local sole = math.max(dist(xyz(Sim.link_truth('l_sole')), xyz(l0)), dist(xyz(Sim.link_truth('r_sole')), xyz(r0)))
   local st = WBC.status()
@@ -48,6 +66,8 @@ tap(worst_hand < 0.02, string.format('five targets up to 0.45 m ahead reached wi
   worst_hand * 1e3))
 tap(not fell and Motion.state() == 'wbc', 'no fall')
 tap(worst_sole < 0.01, string.format('the soles moved under 1 cm (%.1f mm)', worst_sole * 1e3))
+tap(worst_margin > 0 and unloaded == 0, string.format('the measured ZMP inside the feet throughout each reach '
+  .. '(smallest margin %.1f mm to the support polygon; %d samples with no foot loaded)', worst_margin * 1e3, unloaded))
 print(string.format('# controller step: %.0f us of CPU', WBC.status().tick_us))
 
 -- holding a target, a 60 N push on the torso for 0.2 s (forwards, then sideways): survived, the hand

@@ -6,9 +6,13 @@
 -- orientation); a nil target puts it down again as a contact where it is. Every joint is the
 -- controller's; the angles it integrates are commanded each tick. A frame's task infeasible for
 -- `hold_after` s (out of reach, singular) is held where the frame got to (status: held) instead of
--- leaning the body after it. Leaves through stance when another motion is asked for.
+-- leaning the body after it. Leaves through stance when another motion is asked for. A skill
+-- (Lib/wbc_skill.lua: states of tasks and the rules between them) runs over the config's tasks: the
+-- one c.wbc_skill names (WBC.skill, Motion.request('wbc', { skill = ... })), else the default.
+-- A tick makes no garbage: the task list and the status tables are kept from tick to tick.
 local Config = require('Config')
 local wbc = require('wbc')
+local wbc_skill = require('wbc_skill')
 
 local M = {}
 
@@ -22,9 +26,27 @@ local function skill(c)
     local ctl = wbc.load({ robot = c.robot.name, dt = c.robot.period })
     for name, t in pairs(cfg.tasks) do ctl:add(name, t.kind, t) end
     ctl:max_lean(cfg.max_lean)
-    d.cfg, d.ctl, d.out, d.report = cfg, ctl, {}, { tasks = {} }
+    local joint = {}
+    for i, j in ipairs(c.robot.joints) do joint[j] = i end
+    d.cfg, d.ctl, d.out, d.joint, d.entry_q = cfg, ctl, {}, joint, {}
+    d.report = { tasks = {}, by_name = {}, skill = wbc_skill.DEFAULT, skill_state = '', skill_time = 0 }
   end
   return d
+end
+
+-- A task's target as numbers: 'stance' (com_xy: over the stance frame's origin), 'entry' (posture:
+-- the pose the state started from), a posture's joints by name (the rest: the entry pose).
+local function resolve(d, t)
+  local target = t.target
+  if target == 'stance' then return { 0, 0 } end
+  if target == 'entry' then return d.entry_q end
+  if t.kind == 'posture' and type(target) == 'table' and #target == 0 then
+    local q = {}
+    for i, a in ipairs(d.entry_q) do q[i] = a end
+    for j, a in pairs(target) do q[d.joint[j]] = a end
+    return q
+  end
+  return target
 end
 
 local function index_of(list, x)
@@ -72,6 +94,24 @@ local function set_target(d, name, target)
   ctl:target(name, target)
 end
 
+-- The skill `name` (nil: the default) from its first state; a skill that cannot run (a bad file,
+-- a task its controller has with another kind) is refused naming why, and the default runs.
+local function start_skill(c, d, name)
+  local ctl = d.ctl
+  if d.run then d.run:leave() end
+  local ok, err = pcall(function()
+    local s = wbc_skill.load(name, { robot = c.robot.name, base = d.cfg.tasks,
+      has_frame = function(f) return ctl:has_frame(f) end })
+    d.run = wbc_skill.run(s, ctl, d.cfg.tasks, function(_, t) return resolve(d, t) end)
+  end)
+  if not ok then
+    d.run = wbc_skill.run(wbc_skill.load(nil), ctl, d.cfg.tasks, function(_, t) return resolve(d, t) end)
+  end
+  for _, tname in ipairs(d.run:enter(d.run.skill.initial)) do d.held[tname], d.infeasible[tname] = nil, 0 end
+  d.report.skill = d.run.skill.name
+  return ok, not ok and tostring(err) or nil
+end
+
 function M.entry(c)
   local d = skill(c)
   local ctl = d.ctl
@@ -79,13 +119,21 @@ function M.entry(c)
   for i, f in ipairs(d.cfg.contacts) do d.contacts[i] = f end
   ctl:contacts(d.contacts)
   ctl:reset(c.q)
+  for i = 1, c.n do d.entry_q[i] = c.q[i] end
+  -- the config's tasks as it says (a skill's state may have changed their levels and gains), the rest
+  -- resting until a skill or a target names them
   for _, name in ipairs(ctl:tasks()) do
     local t = Config.optional(d.cfg.tasks, name)
-    local target = t and Config.optional(t, 'target')
-    if target == 'stance' then target = { 0, 0 } elseif target == 'entry' then target = c.q end
-    ctl:target(name, target)
+    if t then
+      ctl:level(name, t.level)
+      ctl:gain(name, t.gain)
+    end
+    ctl:target(name, t and resolve(d, t) or nil)
   end
-  d.report.tasks = {}
+  d.report.tasks, d.report.by_name = {}, {}
+  d.skill_seq, d.run = c.wbc_skill_seq, nil
+  local ok, err = start_skill(c, d, c.wbc_skill)
+  c.wbc_skill_done = { seq = c.wbc_skill_seq or 0, ok = ok, error = err }
 end
 
 local function apply_inbox(c, d)
@@ -124,7 +172,7 @@ local function report(c, d)
   for i, name in ipairs(ctl:tasks()) do
     local s = ctl:status(name, r.tasks[i])
     s.name = name
-    r.tasks[i] = s
+    r.tasks[i], r.by_name[name] = s, s
     hold_if_stuck(c, d, name, s)
     s.held = d.held[name] or false
     -- a posture fills whatever freedom is left: never met whole, it is not a task to flag
@@ -136,11 +184,22 @@ end
 
 function M.update(c)
   local d = c:scratch('wbc')
+  if c.wbc_skill_seq ~= d.skill_seq then   -- another skill asked for: it starts over
+    d.skill_seq = c.wbc_skill_seq
+    local ok, err = start_skill(c, d, c.wbc_skill)
+    c.wbc_skill_done = { seq = c.wbc_skill_seq, ok = ok, error = err }
+  end
   apply_inbox(c, d)
   local q = d.ctl:step(d.out)
   local h = d.cfg.hardness
   for _, i in ipairs(c.own) do c.q[i], c.h[i] = q[i], h end
-  c.wbc_report = report(c, d)
+  local r = report(c, d)
+  local run = d.run
+  if run:update(c.dt, r.by_name) then
+    for _, tname in ipairs(run.skill.states[run.state].names) do d.held[tname], d.infeasible[tname] = nil, 0 end
+  end
+  r.skill_state, r.skill_time = run.state, run.time
+  c.wbc_report = r
   if c.want ~= 'wbc' then return 'done' end
 end
 

@@ -239,6 +239,41 @@ function drawWalk() {
   g.moveTo(zu - 4, zv - 4); g.lineTo(zu + 4, zv + 4); g.moveTo(zu + 4, zv - 4); g.lineTo(zu - 4, zv + 4); g.stroke();
 }
 
+// The whole-body controller (the wbc block, Player/Motion/wbc_link.lua): per task its level, error,
+// feasibility, sigma_min and whether it is held; the controller's step time, the skill's state.
+const WBC_KINDS = ['position', 'orientation', 'pose', 'com', 'com_xy', 'posture'];   // Modules/wbc/wbc.h
+const WBC_UNIT = { position: 'mm', orientation: 'mrad', pose: 'mm|mrad', com: 'mm', com_xy: 'mm', posture: 'mrad RMS' };
+function wbcTasks(x) {
+  const out = [];
+  for (let i = 0; i < Math.min(x.ntask[0], 16); i++) {
+    out.push({ name: x.task_name.slice(i * 32, i * 32 + 32).replace(/\0.*$/s, ''), level: x.task_level[i],
+      kind: WBC_KINDS[x.task_kind[i]] ?? '?', enabled: !!x.task_enabled[i], feasible: !!x.task_feasible[i],
+      error: x.task_error[i], sigma: x.task_sigma[i], held: !!x.task_held[i] });
+  }
+  return out;
+}
+// a task's feasibility as shown: a posture fills whatever freedom is left (never met whole, not flagged)
+function wbcFlag(t) {
+  if (!t.enabled) return ['no target', 'rest'];
+  if (t.kind === 'posture') return ['fills the rest', 'rest'];
+  return t.feasible ? ['yes', 'yes'] : ['NO', 'no'];
+}
+function drawWbc() {
+  const x = (view.blocks[view.sel] || {}).wbc, el = $('wbc');
+  if (!x || !x.active || !x.active[0]) {
+    $('wbc-info').textContent = 'not running (Motion.request(\'wbc\'))'; el.innerHTML = ''; return;
+  }
+  $('wbc-info').innerHTML = `<b class="${x.feasible[0] ? 'yes' : 'no'}">${x.feasible[0] ? 'feasible' : 'INFEASIBLE'}</b>` +
+    ` · tick ${fmt(x.step_us[0], 0)} µs · skill ${esc(x.skill || 'default')}: ${esc(x.skill_state)} ${fmt(x.skill_time[0], 1)} s`;
+  const rows = wbcTasks(x).sort((a, b) => a.level - b.level || a.name.localeCompare(b.name)).map(t =>
+    `<tr data-task="${esc(t.name)}"${t.enabled ? '' : ' class="rest"'}><td>${esc(t.name)}</td><td>${esc(t.kind)}</td>` +
+    `<td class="level">${t.level}</td><td class="error">${t.enabled ? fmt(t.error * 1e3, 1) : '–'}</td><td>${WBC_UNIT[t.kind] ?? ''}</td>` +
+    `<td class="feasible ${wbcFlag(t)[1]}">${wbcFlag(t)[0]}</td>` +
+    `<td>${fmt(t.sigma, 3)}</td><td>${t.held ? 'held' : ''}</td></tr>`);
+  el.innerHTML = '<tr><th>task</th><th>kind</th><th>level</th><th>error</th><th></th><th>feasible</th><th>σ min</th><th></th></tr>' +
+    rows.join('');
+}
+
 function drawRaw() {
   if (!$('raw-panel').open) return;
   const b = view.blocks[view.sel] || {};
@@ -264,7 +299,7 @@ function frame(ts) {
   drawWalk();
   if (ts - lastSlow > 250) {   // text panels: 4 Hz is enough to read
     lastSlow = ts;
-    drawState(); drawJoints(); drawRaw(); drawLink();
+    drawState(); drawJoints(); drawWbc(); drawRaw(); drawLink();
   }
 }
 
@@ -305,6 +340,8 @@ window.hrpView = {
   resetLatency: () => { view.lat = { server: [], probe: [] }; },
   status: () => ({ connected: view.connected, messages: view.messages, frames: view.frames, cpu: view.cpu, camBall: !!view.camBall,
     robots: Object.keys(view.blocks) }),
+  // the wbc block the page holds and the tasks in it (null: none)
+  wbc: () => { const x = (view.blocks[view.sel] || {}).wbc; return x ? { tick: x.tick[0], active: x.active[0], tasks: wbcTasks(x) } : null; },
   truth: () => { const s = (view.blocks[view.sel] || {}).sim; return s ? [s.robot[0], s.robot[1], s.robot[3]] : null; },
 };
 start();
