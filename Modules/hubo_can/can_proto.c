@@ -58,7 +58,10 @@ int hcan_ref(hcan_frame *f, int board, int32_t c0, int32_t c1) {
 /* A current into counts of HCAN_CUR_UNIT, truncated toward zero; -EINVAL / -ERANGE. */
 static int cur_counts(double amps, int32_t *c) {
   if (!isfinite(amps)) return -EINVAL;
-  const double n = trunc(amps / HCAN_CUR_UNIT + (amps > 0 ? 1e-9 : -1e-9));   /* 0.29 A is 29, not 28.999 */
+  /* 0.29 A / 0.01 is 28.999999999999996 in binary: a value within a millionth of a count of a whole
+   * count is that count, anything else is truncated */
+  const double x = amps / HCAN_CUR_UNIT, r = round(x);
+  const double n = fabs(x - r) < 1e-6 ? r : trunc(x);
   if (n > HCAN_REF_MAX || n < -HCAN_REF_MAX) return -ERANGE;
   *c = (int32_t)n;
   return 0;
