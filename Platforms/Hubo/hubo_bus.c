@@ -219,18 +219,20 @@ static int board_mode(hubo *h, dcm *d, const dcm_command *cmd, int k) {
   const ht_board *bd = &h->t.board[k];
   int ntq = 0;
   for (int i = 0; i < bd->nch; i++) ntq += cmd->mode[bd->ch[i].joint] == DCM_MODE_TORQUE;
-  const int want = ntq == bd->nch && h->mode[k] >= 0 ? HCAN_MODE_CURRENT : HCAN_MODE_POSITION;
+  const int back = h->mode[k] < 0;   /* answers again after dying in current mode: one cycle in position mode */
+  const int want = ntq == bd->nch && !back ? HCAN_MODE_CURRENT : HCAN_MODE_POSITION;
   for (int i = 0; i < bd->nch; i++) {
     const int j = bd->ch[i].joint;
     const int held = want == HCAN_MODE_POSITION && cmd->mode[j] == DCM_MODE_TORQUE;
     if (held && !h->split[j]) {
       char js[128];
       h->split_hold[j] = h->st.pos[j];
-      dcm_log(d, "joint %s in torque mode, but board %s (%s) is one control mode for all its joints: it stays in "
-                 "position mode, %s held at %.4f rad", h->t.joint[j], bd->name, joints_of(h, bd, js, sizeof js),
-              h->t.joint[j], h->split_hold[j]);
+      if (!back)
+        dcm_log(d, "joint %s in torque mode, but board %s (%s) is one control mode for all its joints: it stays in "
+                   "position mode, %s held at %.4f rad", h->t.joint[j], bd->name, joints_of(h, bd, js, sizeof js),
+                h->t.joint[j], h->split_hold[j]);
     }
-    if (held) {
+    if (held && !back) {
       h->split_refused++;
       d->robot[0].guard.torque_refused++;   /* a torque-mode command refused: the joint held in position mode */
     }

@@ -18,6 +18,7 @@ typedef struct emu_board {
   int mode;                     /* HCAN_MODE_POSITION / HCAN_MODE_CURRENT (H_SET_CTRL_MODE) */
   double amps[HT_CH_MAX];       /* A, the current reference in current mode */
   uint32_t mode_frames, cur_refs;   /* H_SET_CTRL_MODE frames taken; current references taken */
+  uint32_t enc_reqs;            /* encoder requests answered (one per DCM cycle) */
   int home_state;               /* 6 once homed */
   double homing_until;          /* s, a homing in progress ends then */
   uint8_t faults, limits;       /* injected status flags */

@@ -104,6 +104,7 @@ static int motor_cmd(emu_world *w, emu_board *b, const hcan_frame *f, double now
   const int arg = f->dlc > 2 ? f->data[2] : 0;
   switch (f->data[1]) {
   case HCAN_C_ENCODER:
+    b->enc_reqs++;
     hcan_rep_encoder(out, b->def->number, (int32_t)lround(b->pos[0]), nch > 1 ? (int32_t)lround(b->pos[1]) : 0);
     return 1;
   case HCAN_C_STATUS:

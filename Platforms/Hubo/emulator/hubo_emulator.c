@@ -23,7 +23,7 @@
  *   ft BOARD MX MY FZ | imu ROLL PITCH ROLL_RATE PITCH_RATE | power V A W | move BOARD CH COUNTS (a
  *   hand moves the joint: its encoder jumps there) | stats | quit.
  * stats prints per board "board NAME bus B number N ref R0 R1 enc E0 E1 fet F ctrl C home H dead D refs N
- *   mode M amps A0 A1 mode_frames N cur_refs N" (mode 0 position, 1 current: H_SET_CTRL_MODE; amps the
+ *   mode M amps A0 A1 mode_frames N cur_refs N enc_reqs N" (mode 0 position, 1 current: H_SET_CTRL_MODE; amps the
  *   current reference in current mode, emu.h says what a current does),
  * "sensor NAME ..." for sensor and power boards, "silent NAME ..." for boards it does not emulate (the
  * Hubo2+ neck: formats unknown), per bus "bus B frames_in N frames_out M bits BITS load_pct L", totals
@@ -240,9 +240,9 @@ static void stats(void) {
     const ht_board *d = b->def;
     if (d->kind == HT_JMC)
       printf("board %s bus %d number 0x%02X ref %ld %ld enc %ld %ld fet %d ctrl %d home %d dead %d refs %u mode %d "
-             "amps %.2f %.2f mode_frames %u cur_refs %u\n", d->name, d->bus + 1, d->number, lround(b->ref[0]),
-             lround(b->ref[1]), lround(b->pos[0]), lround(b->pos[1]), b->fet, b->ctrl, b->home_state, b->dead, b->refs,
-             b->mode, b->amps[0], b->amps[1], b->mode_frames, b->cur_refs);
+             "amps %.2f %.2f mode_frames %u cur_refs %u enc_reqs %u\n", d->name, d->bus + 1, d->number,
+             lround(b->ref[0]), lround(b->ref[1]), lround(b->pos[0]), lround(b->pos[1]), b->fet, b->ctrl, b->home_state,
+             b->dead, b->refs, b->mode, b->amps[0], b->amps[1], b->mode_frames, b->cur_refs, b->enc_reqs);
     else
       printf("%s %s bus %d number %d dead %d\n", d->kind == HT_JMC3 ? "silent" : "sensor", d->name, d->bus + 1,
              d->number, b->dead);
