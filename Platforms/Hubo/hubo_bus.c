@@ -290,12 +290,14 @@ static void send_refs(hubo *h, dcm *d, const dcm_command *cmd) {
     const hcan_board *b = hubo_board(h, k);
     if (!is_motor(h, k) || !h->enabled[k] || b->dead || bus_of(h, k)->fd < 0) continue;
     const int want = board_mode(h, d, cmd, k);
+    int back_to_position = want == HCAN_MODE_POSITION && h->mode[k] != HCAN_MODE_POSITION;
     switch_mode(h, d, k, want);
     hcan_frame f;
     if (want == HCAN_MODE_CURRENT) {
       if (current_ref(h, cmd, k, &f) < 0) {
         h->ref_refused++;   /* cannot be: the guard passes finite torques within the limit only */
         switch_mode(h, d, k, HCAN_MODE_POSITION);
+        back_to_position = 1;
       } else {
         hio_queue(bus_of(h, k), &f);
         continue;
@@ -307,7 +309,8 @@ static void send_refs(hubo *h, dcm *d, const dcm_command *cmd) {
     for (int i = 0; i < bd->nch; i++) {
       const ht_channel *ch = &bd->ch[i];
       if (!h->seeded[ch->joint]) ok = 0;   /* never read: nothing to start from */
-      r[i] = next_ref(h, d, target_of(h, cmd, ch->joint), ch);
+      /* the first reference after current mode is the measured position itself */
+      r[i] = next_ref(h, d, back_to_position ? h->st.pos[ch->joint] : target_of(h, cmd, ch->joint), ch);
       ok = ok && isfinite(r[i]);
       if (ok) c[ch->ch] = ht_rad_to_counts(ch, r[i]);
     }
