@@ -8,7 +8,9 @@
  * real kernel's vcan works; with HUBO_FAKE_CAN=1 in the environment, the fake SocketCAN of
  * Platforms/Hubo/tests/fake_socketcan.c, linked in, for a kernel without AF_CAN). Motor boards start at encoder zero with FETs and controllers off, homed
  * (--unhomed: home state 0 until a homing command), and move first-order towards their reference
- * (time constant --tau, capped at the channel's max_speed) while FETs and controller are on.
+ * (time constant --tau, capped at the channel's max_speed) while FETs and controller are on; after
+ * H_SET_CTRL_MODE 1 a board reads its reference frame as currents and its joints turn as emu.h says
+ * (emu_step), H_SET_CTRL_MODE 0 puts it back in position mode holding where it is.
  *
  * Timing model of a 1 Mbit/s bus (the table's bitrate): every frame occupies its bus for its exact
  * bit count (hcan_frame_bits: stuff bits included) at the bit rate, one frame at a time; a board
