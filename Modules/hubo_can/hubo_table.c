@@ -220,8 +220,8 @@ int ht_load_actuators(const dcm_config *robot, const dcm_config *act, ht_table *
       char key[DCM_NAME_MAX + 32], model[DCM_NAME_MAX];
       snprintf(key, sizeof key, "actuator.%s", t->joint[ch->joint]);
       if (!dcm_config_has(robot, key))
-        return dcm_config_fail(robot, err, n, "%s: joint '%s' has current mode (can.lua boards[%d] (%s)) but no actuator",
-                               key, t->joint[ch->joint], b->row, b->name);
+        return dcm_config_fail(robot, err, n, "%s: joint '%s' has current mode (can.lua boards[%d] (%s)) but no "
+                               "actuator", key, t->joint[ch->joint], b->row, b->name);
       if (dcm_config_str(robot, key, model, sizeof model, err, n) < 0) return -EINVAL;
       snprintf(key, sizeof key, "%s.torque", model);
       if (dcm_config_num(act, key, &ch->torque, err, n) < 0) return -EINVAL;

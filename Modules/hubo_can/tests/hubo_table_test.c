@@ -155,8 +155,8 @@ int main(void) {
           "a missing speed limit is named by its key");
   refused("t.boards[2].channels[1].max_current = nil", "boards[2] (JMC1) channels[1]",
           "torque_constant and max_current go together", "a torque constant without a current limit");
-  refused("t.boards[2].channels[1].torque_constant = 0", "boards[2] (JMC1) channels[1]: torque_constant must be > 0", NULL,
-          "a torque constant of 0");
+  refused("t.boards[2].channels[1].torque_constant = 0", "boards[2] (JMC1) channels[1]: torque_constant must be > 0",
+          NULL, "a torque constant of 0");
   refused("t.boards[2].channels[1].max_current = -1", "boards[2] (JMC1) channels[1]: max_current must be > 0", NULL,
           "a negative current limit");
   printf("1..%d\n", tap_count);

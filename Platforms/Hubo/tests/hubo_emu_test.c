@@ -81,7 +81,8 @@ int main(void) {
   f = F(0x001, 2, 0x09, 0x04);
   const int n = emu_handle(&w, 0, &f, 0.1, out);
   double amps[2], temp;
-  check(n == 1 && hcan_dec_current(&out[0], amps, &temp) == 0 && fabs(amps[0] - 0.5) < 1e-9 && fabs(amps[1] - 0.25) < 1e-9,
+  check(n == 1 && hcan_dec_current(&out[0], amps, &temp) == 0 && fabs(amps[0] - 0.5) < 1e-9 &&
+            fabs(amps[1] - 0.25) < 1e-9,
         "the current reply reads the reference's magnitude");
   f = F(0x001, 3, 0x09, 0x02, 0x00);
   emu_handle(&w, 0, &f, 0.1, out);
@@ -94,7 +95,8 @@ int main(void) {
   emu_handle(&w, 0, &f, 0.1, out);
   for (int k = 0; k < 200; k++) emu_step(&w, 0.1 + 0.005 * (k + 1), 0.005);
   snprintf(d, sizeof d, "%.4f rad", e->pos[1] / b->ch[1].cpr);
-  tap_ok(fabs(e->pos[1] / b->ch[1].cpr + 3) < 1e-4, "at -10 A the joint runs into the end of its range and stays there", d);
+  tap_ok(fabs(e->pos[1] / b->ch[1].cpr + 3) < 1e-4, "at -10 A the joint runs into the end of its range and stays there",
+         d);
 
   const double held = e->pos[0];
   f = F(0x001, 3, 0x09, 0x10, 0x00);
