@@ -33,7 +33,7 @@ if [ "$SAN" = thread ]; then
 else
   # the fake devices are linked into the programs that use them (the camera test, the Hubo DCM's
   # test build, the CAN test), so they run here instrumented with them
-  default='ctest:.|scenario:(sim/sim_dcm_test|dynamixel/op_dcm_test|fault/faults_test|hubo/hubo_dcm_test)'
+  default='ctest:.|scenario:(sim/sim_dcm_test|dynamixel/op_dcm_test|fault/faults_test|hubo/hubo_dcm_test|hubo/hubo_torque_test)'
 fi
 TESTS="${SAN_TESTS:-$default}" Tests/run_all.sh
 rc=$?

@@ -55,6 +55,29 @@ int hcan_ref(hcan_frame *f, int board, int32_t c0, int32_t c1) {
   return 0;
 }
 
+/* A current into counts of HCAN_CUR_UNIT, truncated toward zero; -EINVAL / -ERANGE. */
+static int cur_counts(double amps, int32_t *c) {
+  if (!isfinite(amps)) return -EINVAL;
+  /* 0.29 A / 0.01 is 28.999999999999996 in binary: a value within a millionth of a count of a whole
+   * count is that count, anything else is truncated */
+  const double x = amps / HCAN_CUR_UNIT, r = round(x);
+  const double n = fabs(x - r) < 1e-6 ? r : trunc(x);
+  if (n > HCAN_REF_MAX || n < -HCAN_REF_MAX) return -ERANGE;
+  *c = (int32_t)n;
+  return 0;
+}
+
+int hcan_cur_ref(hcan_frame *f, int board, double amps0, double amps1) {
+  int32_t c0, c1;
+  int r = cur_counts(amps0, &c0);
+  if (r == 0) r = cur_counts(amps1, &c1);
+  if (r < 0) return r;
+  frame(f, HCAN_ID_REF(board), 6);
+  put_sm24(f->data, c0);
+  put_sm24(f->data + 3, c1);
+  return 0;
+}
+
 void hcan_cmd(hcan_frame *f, int board, int code, const uint8_t *args, int nargs) {
   if (nargs < 0) nargs = 0;
   if (nargs > 6) nargs = 6;
@@ -89,6 +112,10 @@ void hcan_ctrl(hcan_frame *f, int board, int on) {
 void hcan_enc_zero(hcan_frame *f, int board, int ch) {
   const uint8_t a = (uint8_t)ch;
   hcan_cmd(f, board, HCAN_C_ENC_ZERO, &a, 1);
+}
+void hcan_ctrl_mode(hcan_frame *f, int board, int mode) {
+  const uint8_t a = (uint8_t)mode;
+  hcan_cmd(f, board, HCAN_C_CTRL_MODE, &a, 1);
 }
 static void sensor_req(hcan_frame *f, int sensor, const uint8_t *b, int n) {
   frame(f, HCAN_ID_SENSOR_REQ, 1 + n);
@@ -197,6 +224,13 @@ int hcan_dec_ref(const hcan_frame *f, int32_t c[2]) {
   if (need(f, 6)) return HCAN_E_SHORT;
   c[0] = get_sm24(f->data);
   c[1] = get_sm24(f->data + 3);
+  return 0;
+}
+
+int hcan_dec_cur_ref(const hcan_frame *f, double amps[2]) {
+  if (need(f, 6)) return HCAN_E_SHORT;
+  amps[0] = get_sm24(f->data) * HCAN_CUR_UNIT;
+  amps[1] = get_sm24(f->data + 3) * HCAN_CUR_UNIT;
   return 0;
 }
 

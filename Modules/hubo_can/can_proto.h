@@ -7,7 +7,8 @@
  * struct can_frame (id with the same EFF / RTR / ERR flag bits, dlc, 8 data bytes).
  *
  * Byte orders and encodings (section numbers of hubo_can.md):
- *   reference 0x10+#      DLC 6: two 24-bit sign-magnitude counts, LE (4.1)
+ *   reference 0x10+#      DLC 6: two 24-bit sign-magnitude counts, LE (4.1); in current mode two
+ *                         24-bit sign-magnitude currents in 0.01 A (our reading: see hcan_cur_ref)
  *   command   0x001       [board, code, args...] (4.2); sensor request 0x002 [$, type...] (4.3)
  *   encoder   0x60+#      DLC 8: two int32 LE counts (5.1); the power board answers on 0x06E (5.7)
  *   status    0x150+#     4 bytes per channel: flags, faults, limits (5.2)
@@ -56,7 +57,7 @@ typedef struct hcan_frame {
 /* Command codes (byte 1 of id 0x001). */
 enum {
   HCAN_C_STATUS = 0x02, HCAN_C_ENCODER = 0x03, HCAN_C_CURRENT = 0x04, HCAN_C_ENC_ZERO = 0x06,
-  HCAN_C_FET = 0x0B, HCAN_C_CTRL_ON = 0x0E, HCAN_C_CTRL_OFF = 0x0F, HCAN_C_HOME = 0x11,
+  HCAN_C_FET = 0x0B, HCAN_C_CTRL_ON = 0x0E, HCAN_C_CTRL_OFF = 0x0F, HCAN_C_CTRL_MODE = 0x10, HCAN_C_HOME = 0x11,
   HCAN_C_NULL = 0x81, HCAN_C_POWER = 0xE0, HCAN_C_INIT = 0xFA,
 };
 /* Sensor request types (byte 1 of id 0x002). */
@@ -64,6 +65,10 @@ enum { HCAN_S_FT = 0x12, HCAN_S_TILT = 0x22, HCAN_S_IMU = 0x00 };
 #define HCAN_ALL_CHANNELS 0x0F   /* channel argument of 0x06 / 0x11 for every channel */
 #define HCAN_HOME_OK 6           /* home state of a homed channel */
 #define HCAN_REF_MAX 8388607     /* largest magnitude of a 24-bit sign-magnitude reference */
+/* Control modes of H_SET_CTRL_MODE (4.2: 0 position, 1 current -- the 2008 sheet's "torque" --, 2 the
+ * DRC finger boards' hybrid mode, which no Hubo2+ body board has). */
+enum { HCAN_MODE_POSITION = 0, HCAN_MODE_CURRENT = 1 };
+#define HCAN_CUR_UNIT 0.01       /* A per count of a current reference (4.1 DRC finger currents, 5.3 replies) */
 
 /* ---------------------------------------------------------------- host -> boards */
 
@@ -79,6 +84,14 @@ void hcan_home(hcan_frame *f, int board, int ch);           /* ch 0.. or HCAN_AL
 void hcan_fet(hcan_frame *f, int board, int on);            /* [#, 0x0B, on] */
 void hcan_ctrl(hcan_frame *f, int board, int on);           /* [#, 0x0E] / [#, 0x0F] */
 void hcan_enc_zero(hcan_frame *f, int board, int ch);       /* [#, 0x06, ch] */
+/* H_SET_CTRL_MODE [#, 0x10, mode], DLC 3 (4.2): one mode for the whole board, every channel. */
+void hcan_ctrl_mode(hcan_frame *f, int board, int mode);
+/* The current reference of a 1- or 2-channel board in current mode (mode 1): id 0x10+#, DLC 6, the
+ * position reference's layout (4.1) with each channel's slot holding a signed current in 0.01 A as
+ * 24-bit sign-magnitude, truncated toward zero (never more than asked). hubo_can.md does not give
+ * this frame for the body boards; why this reading: Platforms/Hubo/README.md, "Current mode".
+ * -EINVAL for a current that is not finite, -ERANGE beyond 24 bits (nothing is written). */
+int hcan_cur_ref(hcan_frame *f, int board, double amps0, double amps1);
 void hcan_req_ft(hcan_frame *f, int sensor);                /* 0x002 [$, 0x12] */
 void hcan_req_tilt(hcan_frame *f, int sensor);              /* 0x002 [$, 0x22] */
 void hcan_req_imu(hcan_frame *f, int sensor);               /* 0x002 [$, 0x00, 0x01] */
@@ -94,6 +107,7 @@ typedef struct hcan_status {
 } hcan_status;
 #define HCAN_ST_DRIVER 0x01
 #define HCAN_ST_CTRL 0x02
+#define HCAN_ST_MODE 0x04   /* set: not position mode */
 #define HCAN_ST_HOME(s) ((s).flags >> 4)
 /* hubo-ach's isError: any fault or limit flag. */
 static inline int hcan_status_fault(hcan_status s) { return (s.faults & 0x7F) || (s.limits & 0x1F); }
@@ -128,6 +142,8 @@ hcan_kind hcan_classify(const hcan_frame *f, int *number);
 
 /* Field decoders; 0, or HCAN_E_SHORT when the DLC is below the layout's. */
 int hcan_dec_ref(const hcan_frame *f, int32_t c[2]);
+/* A current reference (the emulator's side of hcan_cur_ref): A per channel. */
+int hcan_dec_cur_ref(const hcan_frame *f, double amps[2]);
 int hcan_dec_encoder(const hcan_frame *f, int32_t c[2]);
 int hcan_dec_status(const hcan_frame *f, hcan_status st[2]);
 int hcan_dec_current(const hcan_frame *f, double amps[2], double *temp);

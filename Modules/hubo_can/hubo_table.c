@@ -31,6 +31,16 @@ double ht_counts_to_rad(const ht_channel *c, int32_t counts) {
   return c->dir * hcan_counts_to_rad(counts - c->zero, c->cpr);
 }
 
+double ht_torque_limit(const ht_channel *c) {
+  if (!(c->kt > 0) || !(c->torque > 0)) return 0;
+  const double by_current = c->max_current * c->kt * c->ratio;
+  return c->torque < by_current ? c->torque : by_current;
+}
+
+double ht_torque_to_current(const ht_channel *c, double nm) {
+  return c->kt > 0 ? c->dir * nm / (c->kt * c->ratio) : 0;
+}
+
 /* ---------------------------------------------------------------- the body */
 
 static int load_body(const dcm_config *c, ht_table *t, char *err, size_t n) {
@@ -96,6 +106,7 @@ static int load_channel(const dcm_config *c, ht_table *t, ht_board *b, int k, in
     if (g[i] <= 0) return dcm_config_fail(c, err, n, "%s: %s must be > 0, got %d", where, gear[i], g[i]);
   }
   ch->cpr = hcan_counts_per_rad(g[0], g[1], g[2], g[3]);
+  ch->ratio = (double)g[1] * g[2] / g[0];
   snprintf(key, sizeof key, "%s.direction", pre);
   if (dcm_config_int(c, key, &ch->dir, err, n) < 0) return -EINVAL;
   if (ch->dir != 1 && ch->dir != -1) return dcm_config_fail(c, err, n, "%s: direction must be 1 or -1, got %d", where, ch->dir);
@@ -106,6 +117,22 @@ static int load_channel(const dcm_config *c, ht_table *t, ht_board *b, int k, in
   snprintf(key, sizeof key, "%s.max_speed", pre);
   if (dcm_config_num(c, key, &ch->max_speed, err, n) < 0) return -EINVAL;
   if (!(ch->max_speed > 0)) return dcm_config_fail(c, err, n, "%s: max_speed must be > 0, got %g", where, ch->max_speed);
+  /* current mode: both keys or neither */
+  char kkey[128], ikey[128];
+  snprintf(kkey, sizeof kkey, "%s.torque_constant", pre);
+  snprintf(ikey, sizeof ikey, "%s.max_current", pre);
+  const int hk = dcm_config_has(c, kkey), hi = dcm_config_has(c, ikey);
+  if (hk != hi)
+    return dcm_config_fail(c, err, n, "%s: torque_constant and max_current go together (current mode), %s is missing",
+                           where, hk ? "max_current" : "torque_constant");
+  if (hk) {
+    if (dcm_config_num(c, kkey, &ch->kt, err, n) < 0 || dcm_config_num(c, ikey, &ch->max_current, err, n) < 0)
+      return -EINVAL;
+    if (!(ch->kt > 0 && isfinite(ch->kt)))
+      return dcm_config_fail(c, err, n, "%s: torque_constant must be > 0 N*m/A, got %g", where, ch->kt);
+    if (!(ch->max_current > 0 && isfinite(ch->max_current)))
+      return dcm_config_fail(c, err, n, "%s: max_current must be > 0 A, got %g", where, ch->max_current);
+  }
   return 0;
 }
 
@@ -181,6 +208,30 @@ static int load_board(const dcm_config *c, ht_table *t, int r, char *err, size_t
     }
   }
   t->nboard++;
+  return 0;
+}
+
+int ht_load_actuators(const dcm_config *robot, const dcm_config *act, ht_table *t, char *err, size_t n) {
+  for (int k = 0; k < t->nboard; k++) {
+    ht_board *b = &t->board[k];
+    for (int i = 0; i < b->nch; i++) {
+      ht_channel *ch = &b->ch[i];
+      if (!(ch->kt > 0)) continue;
+      char key[DCM_NAME_MAX + 32], model[DCM_NAME_MAX];
+      snprintf(key, sizeof key, "actuator.%s", t->joint[ch->joint]);
+      if (!dcm_config_has(robot, key))
+        return dcm_config_fail(robot, err, n, "%s: joint '%s' has current mode (can.lua boards[%d] (%s)) but no "
+                               "actuator", key, t->joint[ch->joint], b->row, b->name);
+      if (dcm_config_str(robot, key, model, sizeof model, err, n) < 0) return -EINVAL;
+      snprintf(key, sizeof key, "%s.torque", model);
+      if (dcm_config_num(act, key, &ch->torque, err, n) < 0) return -EINVAL;
+      snprintf(key, sizeof key, "%s.speed", model);
+      if (dcm_config_num(act, key, &ch->speed, err, n) < 0) return -EINVAL;
+      if (!(ch->torque > 0) || !(ch->speed > 0))
+        return dcm_config_fail(act, err, n, "%s: torque and speed must be > 0, got %g N*m and %g rad/s", model,
+                               ch->torque, ch->speed);
+    }
+  }
   return 0;
 }
 

@@ -5,7 +5,14 @@
  * an unknown kind or mount, a bus that is not one of `buses`, a board or sensor number twice on a
  * bus (or out of range), a channel number twice or beyond the board's channels, a joint that is
  * not one of the body's or on two channels, a body joint on no channel, gear numbers <= 0, a
- * direction other than +-1, a speed limit <= 0.
+ * direction other than +-1, a speed limit <= 0, a torque constant or a current limit <= 0 or one
+ * of the two without the other.
+ *
+ * Current mode (H_SET_CTRL_MODE 1): a channel with `torque_constant` (N*m/A of its motor) and
+ * `max_current` (A) has a current path; joint torque = current * torque_constant * ratio, the ratio
+ * the channel's gears give (driven * harmonic / drive). ht_load_actuators adds each such joint's
+ * drive (robot.lua `actuator` naming a model of the `actuators` concern: its stall torque and
+ * no-load speed).
  */
 #ifndef HRP_HUBO_TABLE_H
 #define HRP_HUBO_TABLE_H
@@ -30,6 +37,11 @@ typedef struct ht_channel {
   int dir;                /* +1 / -1 */
   int32_t zero;           /* counts at the joint's zero */
   double max_speed;       /* rad/s */
+  double ratio;           /* motor turns per joint turn: driven * harmonic / drive */
+  double kt;              /* N*m/A of the motor (0: no current mode for this channel) */
+  double max_current;     /* A, the largest current reference ever sent */
+  double torque;          /* N*m, the joint's drive's stall torque (ht_load_actuators; 0 unknown) */
+  double speed;           /* rad/s, its no-load speed (ht_load_actuators; 0 unknown) */
 } ht_channel;
 
 typedef struct ht_board {
@@ -61,6 +73,15 @@ typedef struct ht_table {
 
 /* Reads and checks both concerns (robot.lua and can.lua of one body). */
 int ht_load(const dcm_config *robot, const dcm_config *can, ht_table *t, char *err, size_t errlen);
+/* Each current-mode channel's drive: robot.lua's `actuator.<joint>` names a model of the actuators
+ * concern (Config/common/actuators.lua + the body's), whose `torque` and `speed` are read. An error
+ * names the file and key (a current-mode joint with no actuator, a model without them). */
+int ht_load_actuators(const dcm_config *robot, const dcm_config *actuators, ht_table *t, char *err, size_t errlen);
+/* The joint torque a channel's current path gives at most (N*m): its drive's torque, and no more than
+ * max_current gives; 0 for a channel without current mode. */
+double ht_torque_limit(const ht_channel *c);
+/* Joint torque (N*m) -> the motor current (A) of a current-mode channel (its direction applied). */
+double ht_torque_to_current(const ht_channel *c, double nm);
 /* The board kind can_proto keeps per board. */
 hcan_board_kind ht_hcan_kind(ht_kind k);
 /* Joint angle <-> motor counts of a channel. */

@@ -10,7 +10,7 @@
  * one raw CAN socket per bus (retried) -> enable: the bring-up (hubo_bus.h) -> each cycle
  * references and requests out (write), replies in until the reply window closes (read).
  * Statistics per bus (frames, bits, load, errors) and per board (timeouts, faults, status, dead)
- * in dcm.stats.
+ * in dcm.stats. Torque mode maps to the boards' current mode (hubo_bus.h).
  */
 #include "dcm/args.h"
 #include "dcm/dcm.h"
@@ -63,14 +63,17 @@ static int load_settings(const dcm_config *c, hubo_dcm *o, char *err, size_t n) 
 
 static int hubo_configure(void *hw, dcm *d, char *err, size_t n) {
   hubo_dcm *o = (hubo_dcm *)hw;
-  dcm_config *rc = NULL, *cc = NULL, *pc = NULL;
+  dcm_config *rc = NULL, *cc = NULL, *pc = NULL, *ac = NULL;
   int r = dcm_config_load("robot", NULL, "Hubo", &rc, err, n);
   if (r == 0) r = dcm_config_load("can", dcm_config_robot(rc), "Hubo", &cc, err, n);
   if (r == 0) r = ht_load(rc, cc, &o->h.t, err, n);
+  if (r == 0) r = dcm_config_load("actuators", dcm_config_robot(rc), "Hubo", &ac, err, n);
+  if (r == 0) r = ht_load_actuators(rc, ac, &o->h.t, err, n);
   if (r == 0) r = dcm_config_load("dcm", dcm_config_robot(rc), "Hubo", &pc, err, n);
   if (r == 0) r = load_settings(pc, o, err, n);
   dcm_config_free(rc);
   dcm_config_free(cc);
+  dcm_config_free(ac);
   dcm_config_free(pc);
   if (r < 0) return -EINVAL;
   for (int b = 0; b < HT_BUS_MAX; b++)
@@ -79,6 +82,13 @@ static int hubo_configure(void *hw, dcm *d, char *err, size_t n) {
   d->robot[0].id = shm_robot_id();
   d->robot[0].nj = o->h.t.nj;
   snprintf(d->robot[0].name, sizeof d->robot[0].name, "%s", o->h.t.name);
+  /* torque mode for the joints of driven boards with a current path (can.lua torque_constant): the
+   * guard clamps their torque to the drive's, within what max_current gives; the others have none */
+  for (int k = 0; k < o->h.t.nboard; k++) {
+    const ht_board *b = &o->h.t.board[k];
+    for (int i = 0; i < b->nch; i++)
+      d->robot[0].torque_limit[b->ch[i].joint] = b->active && b->kind == HT_JMC ? ht_torque_limit(&b->ch[i]) : 0;
+  }
   d->period = o->rate > 0 ? 1.0 / o->rate : o->h.t.period;
   d->watchdog = o->watchdog;
   d->stall_cycles = o->stall_cycles;
@@ -189,6 +199,7 @@ static void hubo_stats(void *hw, dcm *d, int r, const dcm_blk_dcm_stats *s) {
 
 static void hubo_close(void *hw, dcm *d) {
   hubo_dcm *o = (hubo_dcm *)hw;
+  hubo_release(&o->h, d);
   for (int b = 0; b < o->h.nbus; b++) {
     const hio_bus *bus = &o->h.bus[b];
     dcm_log(d, "bus %d (%s) stopped after %u cycles (%u missed): %llu frames out, %llu in; %u corrupt, %u misaddressed, "

@@ -177,12 +177,10 @@ int hubo_bringup(hubo *h, dcm *d, char *err, size_t n) {
 
 /* ---------------------------------------------------------------- the cycle: write */
 
-/* The next reference of joint j: the command, or where the joint is when compliant, clamped to
- * the limits, at most max_speed * period away from the last one sent. */
-static double next_ref(hubo *h, const dcm *d, const dcm_command *cmd, const ht_channel *ch) {
+/* The next reference of joint j toward `target` (rad): clamped to the limits, at most
+ * max_speed * period away from the last one sent. */
+static double next_ref(hubo *h, const dcm *d, double target, const ht_channel *ch) {
   const int j = ch->joint;
-  double target = cmd->position[j];
-  if (!cmd->enable[j] || cmd->hardness[j] < h->set.compliant_below) target = h->st.pos[j];
   if (target < h->t.lo[j]) target = h->t.lo[j];
   if (target > h->t.hi[j]) target = h->t.hi[j];
   if (!isfinite(target)) target = h->ref[j];
@@ -197,23 +195,126 @@ static double next_ref(hubo *h, const dcm *d, const dcm_command *cmd, const ht_c
   return target;
 }
 
-static void send_refs(hubo *h, const dcm *d, const dcm_command *cmd) {
+/* Where joint j's position reference goes: the command, where the joint is when compliant, or the
+ * pose it is held at while in torque mode on a board in position mode. */
+static double target_of(const hubo *h, const dcm_command *cmd, int j) {
+  if (h->split[j]) return h->split_hold[j];
+  if (!cmd->enable[j] || cmd->hardness[j] < h->set.compliant_below) return h->st.pos[j];
+  return cmd->position[j];
+}
+
+static const char *joints_of(const hubo *h, const ht_board *bd, char *out, size_t len) {
+  size_t o = 0;
+  out[0] = 0;
+  for (int c = 0; c < bd->nch && o < len; c++)
+    o += (size_t)snprintf(out + o, len - o, "%s%s", c ? " " : "", h->t.joint[bd->ch[c].joint]);
+  return out;
+}
+
+/* The control mode board k is to be in: current when every joint on it is in torque mode (the guard
+ * lets torque mode through only for joints with a current path), else position. A board whose mode is
+ * unknown (it died in current mode) goes to position mode first. Joints in torque mode on a board
+ * that stays in position mode are held (split). */
+static int board_mode(hubo *h, dcm *d, const dcm_command *cmd, int k) {
+  const ht_board *bd = &h->t.board[k];
+  int ntq = 0;
+  for (int i = 0; i < bd->nch; i++) ntq += cmd->mode[bd->ch[i].joint] == DCM_MODE_TORQUE;
+  const int back = h->mode[k] < 0;   /* answers again after dying in current mode: one cycle in position mode */
+  const int want = ntq == bd->nch && !back ? HCAN_MODE_CURRENT : HCAN_MODE_POSITION;
+  for (int i = 0; i < bd->nch; i++) {
+    const int j = bd->ch[i].joint;
+    const int held = want == HCAN_MODE_POSITION && cmd->mode[j] == DCM_MODE_TORQUE;
+    if (held && !h->split[j]) {
+      char js[128];
+      h->split_hold[j] = h->st.pos[j];
+      if (!back)
+        dcm_log(d, "joint %s in torque mode, but board %s (%s) is one control mode for all its joints: it stays in "
+                   "position mode, %s held at %.4f rad", h->t.joint[j], bd->name, joints_of(h, bd, js, sizeof js),
+                h->t.joint[j], h->split_hold[j]);
+    }
+    if (held && !back) {
+      h->split_refused++;
+      d->robot[0].guard.torque_refused++;   /* a torque-mode command refused: the joint held in position mode */
+    }
+    h->split[j] = held;
+  }
+  return want;
+}
+
+/* The mode frame for board k when its mode changes; back in position mode, its references restart at
+ * the measured position (sent in this same cycle, right after the mode frame). */
+static void switch_mode(hubo *h, dcm *d, int k, int want) {
+  const ht_board *bd = &h->t.board[k];
+  if (want == h->mode[k]) return;
+  hcan_frame f;
+  hcan_ctrl_mode(&f, bd->number, want);
+  hio_queue(bus_of(h, k), &f);
+  h->mode_frames++;
+  char js[128];
+  if (want == HCAN_MODE_POSITION) {
+    for (int i = 0; i < bd->nch; i++) {
+      const int j = bd->ch[i].joint;
+      h->ref[j] = h->st.pos[j];
+      h->amps[j] = 0;
+    }
+    dcm_log(d, "board %s (%s): position mode, holding the measured pose", bd->name, joints_of(h, bd, js, sizeof js));
+  } else {
+    dcm_log(d, "board %s (%s): current mode (torque)", bd->name, joints_of(h, bd, js, sizeof js));
+  }
+  h->mode[k] = want;
+}
+
+/* Board k's current reference: each joint's torque (the guard clamped it to the joint's limit) as a
+ * motor current, no more than max_current; 0 A with torque off. A one-joint board's channel 1 gets 0 A,
+ * not a copy of channel 0 as its position reference does: with no motor there nothing changes, and
+ * were a second motor on the joint, a copy would double the torque. */
+static int current_ref(hubo *h, const dcm_command *cmd, int k, hcan_frame *f) {
+  const ht_board *bd = &h->t.board[k];
+  double a[2] = { 0, 0 };
+  for (int i = 0; i < bd->nch; i++) {
+    const ht_channel *ch = &bd->ch[i];
+    const int j = ch->joint;
+    double amps = cmd->enable[j] ? ht_torque_to_current(ch, cmd->torque[j]) : 0;
+    if (amps > ch->max_current) amps = ch->max_current;
+    if (amps < -ch->max_current) amps = -ch->max_current;
+    a[ch->ch] = amps;
+  }
+  if (hcan_cur_ref(f, bd->number, a[0], a[1]) < 0) return -1;
+  for (int i = 0; i < bd->nch; i++) h->amps[bd->ch[i].joint] = a[bd->ch[i].ch];
+  return 0;
+}
+
+static void send_refs(hubo *h, dcm *d, const dcm_command *cmd) {
   for (int k = 0; k < h->t.nboard; k++) {
     const ht_board *bd = &h->t.board[k];
     const hcan_board *b = hubo_board(h, k);
     if (!is_motor(h, k) || !h->enabled[k] || b->dead || bus_of(h, k)->fd < 0) continue;
+    const int want = board_mode(h, d, cmd, k);
+    int back_to_position = want == HCAN_MODE_POSITION && h->mode[k] != HCAN_MODE_POSITION;
+    switch_mode(h, d, k, want);
+    hcan_frame f;
+    if (want == HCAN_MODE_CURRENT) {
+      if (current_ref(h, cmd, k, &f) < 0) {
+        h->ref_refused++;   /* cannot be: the guard passes finite torques within the limit only */
+        switch_mode(h, d, k, HCAN_MODE_POSITION);
+        back_to_position = 1;
+      } else {
+        hio_queue(bus_of(h, k), &f);
+        continue;
+      }
+    }
     int32_t c[2] = { 0, 0 };
     double r[HT_CH_MAX];
     int ok = 1;
     for (int i = 0; i < bd->nch; i++) {
       const ht_channel *ch = &bd->ch[i];
       if (!h->seeded[ch->joint]) ok = 0;   /* never read: nothing to start from */
-      r[i] = next_ref(h, d, cmd, ch);
+      /* the first reference after current mode is the measured position itself */
+      r[i] = next_ref(h, d, back_to_position ? h->st.pos[ch->joint] : target_of(h, cmd, ch->joint), ch);
       ok = ok && isfinite(r[i]);
       if (ok) c[ch->ch] = ht_rad_to_counts(ch, r[i]);
     }
     if (bd->nch == 1) c[1] = c[0];   /* one-joint boards get channel 0 twice (hubo-ach) */
-    hcan_frame f;
     if (!ok || hcan_ref(&f, bd->number, c[0], c[1]) < 0) {
       h->ref_refused++;
       continue;
@@ -221,6 +322,22 @@ static void send_refs(hubo *h, const dcm *d, const dcm_command *cmd) {
     for (int i = 0; i < bd->nch; i++) h->ref[bd->ch[i].joint] = r[i];
     hio_queue(bus_of(h, k), &f);
   }
+}
+
+void hubo_release(hubo *h, dcm *d) {
+  int any = 0;
+  for (int k = 0; k < h->t.nboard; k++) {
+    const ht_board *bd = &h->t.board[k];
+    if (!is_motor(h, k) || h->mode[k] == HCAN_MODE_POSITION || bus_of(h, k)->fd < 0) continue;
+    switch_mode(h, d, k, HCAN_MODE_POSITION);
+    int32_t c[2] = { 0, 0 };
+    for (int i = 0; i < bd->nch; i++) c[bd->ch[i].ch] = ht_rad_to_counts(&bd->ch[i], h->ref[bd->ch[i].joint]);
+    if (bd->nch == 1) c[1] = c[0];
+    hcan_frame f;
+    if (hcan_ref(&f, bd->number, c[0], c[1]) == 0) hio_queue(bus_of(h, k), &f);
+    any = 1;
+  }
+  if (any) exchange(h, 0.01);
 }
 
 static void send_requests(hubo *h, double now) {
@@ -314,7 +431,12 @@ static void report_boards(hubo *h, dcm *d) {
     size_t o = 0;
     for (int c = 0; c < bd->nch && o < sizeof joints; c++)
       o += (size_t)snprintf(joints + o, sizeof joints - o, "%s%s", c ? " " : "", h->t.joint[bd->ch[c].joint]);
-    if (b->dead && bd->nch) {
+    if (b->dead && bd->nch && h->mode[k] == HCAN_MODE_CURRENT) {
+      dcm_log(d, "board %s (0x%02X, bus %d) stopped answering in current mode: joints %s keep its last current "
+                 "(%.2f A) until it answers, then go to position mode", bd->name, bd->number, bd->bus + 1, joints,
+              h->amps[bd->ch[0].joint]);
+      h->mode[k] = -1;
+    } else if (b->dead && bd->nch) {
       dcm_log(d, "board %s (0x%02X, bus %d) stopped answering: joints %s held (no references), the rest go on",
               bd->name, bd->number, bd->bus + 1, joints);
     } else if (b->dead) {

@@ -11,6 +11,15 @@
  *              retry_period and, when it answers, resumes from its measured position (a board that
  *              was not there at bring-up is switched on then, if its status says it is homed)
  *   a bus whose interface goes away is reported and reopened every reopen_period.
+ * Torque mode (dcm.actuator.mode 1, checked and clamped by the DCM's guard): a board goes into current
+ * mode (H_SET_CTRL_MODE 1) when every joint on it is in torque mode -- the mode is the board's, not a
+ * channel's, so a two-joint board with one joint in torque mode stays in position mode, that joint
+ * held where it was (counted as refused, logged) --, then takes a current reference every cycle
+ * (torque / (torque_constant * ratio)). When any of its joints leaves torque mode (Body, a guard
+ * refusal of a NaN torque, a watchdog trip: a stale or dead writer), it gets H_SET_CTRL_MODE 0 and a
+ * position reference at its measured position in the same cycle. A board that dies in current mode
+ * keeps its last current (it cannot be reached); when it answers again it is put in position mode
+ * first. On close every board in current mode is put back in position mode at its measured pose.
  */
 #ifndef HRP_HUBO_BUS_H
 #define HRP_HUBO_BUS_H
@@ -47,6 +56,10 @@ typedef struct hubo {
   int enabled[HT_BOARD_MAX];          /* controller switched on by this DCM */
   int to_enable[HT_BOARD_MAX];        /* answered late: enabled once its status says homed */
   int dead[HT_BOARD_MAX];             /* as reported last cycle */
+  int mode[HT_BOARD_MAX];             /* control mode as last sent: HCAN_MODE_*, -1 unknown (died in current mode) */
+  int split[DCM_NJ_MAX];              /* in torque mode on a board that is not: held at split_hold */
+  double split_hold[DCM_NJ_MAX];      /* rad */
+  double amps[DCM_NJ_MAX];            /* A, the last current reference sent (current mode) */
   double last_try[HT_BOARD_MAX];      /* s, last request to a dead board */
   double ref[DCM_NJ_MAX];             /* rad, the last reference sent */
   int seeded[DCM_NJ_MAX];             /* ref holds a measured position or a sent reference */
@@ -55,6 +68,8 @@ typedef struct hubo {
   uint32_t cycle;
   uint32_t ref_limited;               /* joint-cycles whose reference the speed limit held back */
   uint32_t ref_refused;               /* references not sent: beyond 24 bits or not finite */
+  uint32_t mode_frames;               /* H_SET_CTRL_MODE frames sent */
+  uint32_t split_refused;             /* joint-cycles in torque mode held because their board is not */
   hubo_state st;
 } hubo;
 
@@ -66,6 +81,8 @@ int hubo_open(hubo *h, char *err, size_t errlen);
 int hubo_bringup(hubo *h, dcm *d, char *err, size_t errlen);
 /* One cycle: references from cmd (checked by the DCM's guard), then the requests. */
 void hubo_write(hubo *h, dcm *d, const dcm_command *cmd);
+/* Every board in current mode back to position mode at its measured pose (the DCM's end). */
+void hubo_release(hubo *h, dcm *d);
 /* One cycle: the replies until `deadline` (monotonic s), decoded into h->st; dead boards and
  * vanished buses reported through d, closed buses reopened. */
 void hubo_read(hubo *h, dcm *d, double deadline);

@@ -13,19 +13,36 @@
 --   zero      counts at the joint's zero (0: the homed position is the encoder's zero)
 --   max_speed rad/s: no reference step larger than max_speed * period is ever sent (HuboCan's
 --             software limit v_max, devices/Hubo2Plus/*.dd, hubo_reference.txt LIMITS)
+--   torque_constant, max_current   current mode (H_SET_CTRL_MODE 1, the joint's torque mode): the
+--             motor's torque constant (N*m/A) and the largest current reference sent (A); a channel
+--             without them has no torque mode. Joint torque = current * torque_constant * the gears'
+--             ratio (driven * harmonic / drive); the torque limit is the joint's drive's (robot.lua
+--             `actuator`, Config/common/actuators.lua), never more than max_current gives.
 -- Sensor boards give `sensor` (their number $; command frames address 0x2F + $) and `mount` (the
 -- slot of dcm.sensor.ft: left_foot, right_foot, left_hand, right_hand), `signs` for Mx, My, Fz.
 -- `active = false`: on the bus but not driven (the DCM leaves it alone and reports its joints dead).
 --
 -- Left out: EJMC2's channel 0 is the neck yaw NKY, which the public model (and so the body) lacks;
 -- the finger boards EJMC4/EJMC5 (5 fingers each, open-loop PWM; not in the body).
+--
+-- The motors' torque constant is in no public source (hubo_reference.txt, ACTUATORS: motor type,
+-- power and torque constant not found). Chosen, and why: brushed DC motors of the 10-200 W class
+-- wound for 24-48 V have torque constants of roughly 0.01 to 0.06 N*m/A (catalogue figures of that
+-- class, not of the Hubo's motors). The highest, 0.06, is taken: the current sent for a torque is
+-- torque / (0.06 * ratio), so if the real motor's constant is lower the joint gets less torque than
+-- asked, never more (a weak arm sags; a strong one would be flung); the gears' efficiency (a harmonic
+-- drive's 70-85 %) is left out for the same reason. max_current 10 A: the boards' current reply
+-- reads at most 10.23 A (hubo_can.md 5.3), so nothing is commanded that the board cannot report back;
+-- with the drives' torques (actuators.lua) the largest current asked is 95 / (0.06 * 160) = 9.9 A
+-- at a knee, 4.2 A at an elbow, 1.5 A at a wrist.
+local KT, IMAX = 0.06, 10
 local function leg(joint, drive, driven, harmonic, max_speed)
   return { joint = joint, drive = drive, driven = driven, harmonic = harmonic, encoder = 4000, direction = 1,
-           zero = 0, max_speed = max_speed or 7 }
+           zero = 0, max_speed = max_speed or 7, torque_constant = KT, max_current = IMAX }
 end
 local function arm(joint, drive, driven)
   return { joint = joint, drive = drive or 1, driven = driven or 1, harmonic = 100, encoder = 4000, direction = 1,
-           zero = 0, max_speed = 6 }
+           zero = 0, max_speed = 6, torque_constant = KT, max_current = IMAX }
 end
 local function ch(n, t) t.channel = n return t end
 

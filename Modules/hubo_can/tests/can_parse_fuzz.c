@@ -37,6 +37,15 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     hcan_status st[2];
     double d4[4], t;
     hcan_dec_ref(&f, c);
+    if (hcan_dec_cur_ref(&f, d4) == 0) {   /* a decoded current reference re-encodes to the same bytes */
+      hcan_frame g;
+      if (hcan_cur_ref(&g, 0, d4[0], d4[1]) != 0 || memcmp(g.data, f.data, 6) != 0) {
+        /* -0 (bit 23 with a zero magnitude) decodes to 0, which encodes without the sign bit */
+        if (!((f.data[2] & 0x80) && !(f.data[0] | f.data[1] | (f.data[2] & 0x7F))) &&
+            !((f.data[5] & 0x80) && !(f.data[3] | f.data[4] | (f.data[5] & 0x7F))))
+          abort();
+      }
+    }
     hcan_dec_status(&f, st);
     hcan_dec_current(&f, d4, &t);
     hcan_dec_ft(&f, d4);

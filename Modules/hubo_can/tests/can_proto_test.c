@@ -79,6 +79,41 @@ static void host_frames(void) {
   hcan_enc_zero(&f, 0x02, HCAN_ALL_CHANNELS);
   w = F(0x001, 3, 0x02, 0x06, 0x0F);
   check(same(&f, &w), "4.2 encoder zero [#, 0x06, 0x0F]");
+  /* 4.2: H_SET_CTRL_MODE [#, 0x10, mode], DLC 3: 0 position, 1 current */
+  hcan_ctrl_mode(&f, 0x09, 1);
+  w = F(0x001, 3, 0x09, 0x10, 0x01);
+  check(same(&f, &w), "4.2 control mode current [#, 0x10, 1]");
+  hcan_ctrl_mode(&f, 0x20, 0);
+  w = F(0x001, 3, 0x20, 0x10, 0x00);
+  check(same(&f, &w), "4.2 control mode position [#, 0x10, 0] (EJMC0)");
+  /* current reference: 0x10 + #, DLC 6, the 4.1 layout, each slot a current in 0.01 A (the DRC finger
+   * currents' unit, 4.1, and the current replies', 5.3) as 24-bit sign-magnitude LE:
+   * 4.16 A = 416 = 0x0001A0; -0.28 A = -28 = 0x00001C with bit 23 */
+  check(hcan_cur_ref(&f, 0x09, 4.16, -0.28) == 0, "current reference encodes");
+  w = F(0x019, 6, 0xA0, 0x01, 0x00, 0x1C, 0x00, 0x80);
+  check(same(&f, &w), "current reference 0x19: [A0 01 00 1C 00 80] (4.16 A, -0.28 A)");
+  /* a one-joint board: 9.89 A = 989 = 0x0003DD on channel 0, 0 A on channel 1 */
+  hcan_cur_ref(&f, 0x02, 9.89, 0);
+  w = F(0x012, 6, 0xDD, 0x03, 0x00, 0x00, 0x00, 0x00);
+  check(same(&f, &w), "current reference of a one-joint board: [DD 03 00 00 00 00]");
+  hcan_cur_ref(&f, 0x0B, 0.299, -0.299);
+  w = F(0x01B, 6, 0x1D, 0x00, 0x00, 0x1D, 0x00, 0x80);
+  check(same(&f, &w), "a current is truncated toward zero: +-0.299 A -> +-29 (0.29 A), never more than asked");
+  hcan_cur_ref(&f, 0x0B, 0.29, -0.57);
+  w = F(0x01B, 6, 0x1D, 0x00, 0x00, 0x39, 0x00, 0x80);
+  check(same(&f, &w), "0.29 A is 29 and -0.57 A is -57, not one count less (binary fractions)");
+  check(hcan_cur_ref(&f, 0x0B, NAN, 0) < 0 && hcan_cur_ref(&f, 0x0B, 0, INFINITY) < 0,
+        "a NaN or infinite current is refused");
+  check(hcan_cur_ref(&f, 0x0B, 83886.08, 0) < 0 && hcan_cur_ref(&f, 0x0B, 0, -83886.08) < 0 &&
+            hcan_cur_ref(&f, 0x0B, 83886.07, 0) == 0 && f.data[0] == 0xFF && f.data[1] == 0xFF && f.data[2] == 0x7F,
+        "a current beyond 24 bits of 0.01 A is refused, not wrapped");
+  double amps[2];
+  w = F(0x019, 6, 0xA0, 0x01, 0x00, 0x1C, 0x00, 0x80);
+  check(hcan_dec_cur_ref(&w, amps) == 0 && near(amps[0], 4.16, 1e-12) && near(amps[1], -0.28, 1e-12),
+        "current reference decodes (emulator side)");
+  w.dlc = 5;
+  check(hcan_dec_cur_ref(&w, amps) == HCAN_E_SHORT, "a 5-byte current reference is refused");
+
   hcan_req_ft(&f, 1);
   w = F(0x002, 2, 0x01, 0x12);
   check(same(&f, &w), "4.3 F/T request [$, 0x12] on 0x002");

@@ -62,6 +62,9 @@ int main(void) {
   snprintf(a, sizeof a, "%s/Lib", top);
   snprintf(b, sizeof b, "%s/Lib", root);
   if (symlink(a, b) != 0) { perror("symlink"); return 1; }
+  snprintf(a, sizeof a, "%s/Config/common", top);
+  snprintf(b, sizeof b, "%s/Config/common", root);
+  if (symlink(a, b) != 0) { perror("symlink"); return 1; }
   snprintf(a, sizeof a, "%s/Config/platforms/Hubo", top);
   snprintf(b, sizeof b, "%s/Config/platforms/Hubo", root);
   if (symlink(a, b) != 0) { perror("symlink"); return 1; }
@@ -105,6 +108,29 @@ int main(void) {
     check(imu == 1 && ft == 4 && power == 1, "IMU $3 and foot F/T $1 $2 on bus 1, hand F/T $6 $7 and power 0x0E on bus 2");
     const ht_channel *c = &kb->ch[0];
     check(ht_rad_to_counts(c, 1.0) == 101859 && fabs(ht_counts_to_rad(c, 101859) - 1.0) < 1e-5, "rad <-> counts");
+
+    /* current mode: the drives' torques (actuators.lua) and what 10 A at 0.06 N*m/A gives through the gears */
+    dcm_config *rc = NULL, *ac = NULL;
+    r = dcm_config_load("robot", "hubo2plus", "Hubo", &rc, err, sizeof err);
+    if (r == 0) r = dcm_config_load("actuators", "hubo2plus", "Hubo", &ac, err, sizeof err);
+    if (r == 0) r = ht_load_actuators(rc, ac, &t, err, sizeof err);
+    dcm_config_free(rc);
+    dcm_config_free(ac);
+    tap_ok(r == 0, "the current-mode joints' drives load", err);
+    const ht_channel *hr = &hb->ch[t.joint_ch[rhr]];
+    check(fabs(c->ratio - 160) < 1e-9 && c->kt == 0.06 && c->max_current == 10 && c->torque == 95,
+          "RKN: ratio 160, 0.06 N*m/A, 10 A, drive 95 N*m");
+    check(fabs(ht_torque_limit(c) - 95) < 1e-9 && fabs(ht_torque_to_current(c, 95) - 95 / 9.6) < 1e-9,
+          "RKN: torque limit 95 N*m (10 A would give 96), 95 N*m is 9.90 A");
+    check(fabs(hr->ratio - 1024.0 * 160 / 324) < 1e-9 && fabs(ht_torque_limit(hr) - 95) < 1e-9,
+          "RHR: ratio 505.68, limit 95 N*m");
+    check(ht_torque_limit(&nb->ch[0]) == 0 && nb->ch[0].kt == 0, "NK1: no current mode (no torque_constant)");
+    ht_channel neg = *c;
+    neg.dir = -1;
+    check(fabs(ht_torque_to_current(&neg, 9.6) + 1) < 1e-12, "direction -1: 9.6 N*m at the knee is -1 A");
+    ht_channel small = *c;
+    small.max_current = 5;
+    check(fabs(ht_torque_limit(&small) - 48) < 1e-9, "max_current 5 A caps the limit at 5 x 0.06 x 160 = 48 N*m");
   }
   refused("t.boards[3].channels[1].joint = 'RKX'", "boards[3] (JMC2) channels[1]", "joint 'RKX' is not one of",
           "an unknown joint is named with its board and channel");
@@ -127,6 +153,12 @@ int main(void) {
   refused("t.boards[10].mount = 'right_knee'", "boards[10] (RFFT): mount 'right_knee'", NULL, "an unknown F/T mount");
   refused("t.boards[1].channels[1].max_speed = nil", "boards[1].channels[1].max_speed", NULL,
           "a missing speed limit is named by its key");
+  refused("t.boards[2].channels[1].max_current = nil", "boards[2] (JMC1) channels[1]",
+          "torque_constant and max_current go together", "a torque constant without a current limit");
+  refused("t.boards[2].channels[1].torque_constant = 0", "boards[2] (JMC1) channels[1]: torque_constant must be > 0",
+          NULL, "a torque constant of 0");
+  refused("t.boards[2].channels[1].max_current = -1", "boards[2] (JMC1) channels[1]: max_current must be > 0", NULL,
+          "a negative current limit");
   printf("1..%d\n", tap_count);
   char cmd[600];
   snprintf(cmd, sizeof cmd, "rm -rf '%s'", root);

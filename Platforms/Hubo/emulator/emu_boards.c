@@ -19,7 +19,13 @@ void emu_init(emu_world *w, const ht_table *t, int homed, double tau) {
     emu_board *b = &w->b[k];
     b->def = &t->board[k];
     b->home_state = homed ? HCAN_HOME_OK : 0;
-    for (int c = 0; c < b->def->nch; c++) b->vmax[c] = b->def->ch[c].max_speed * b->def->ch[c].cpr;
+    for (int c = 0; c < b->def->nch; c++) {
+      const ht_channel *ch = &b->def->ch[c];
+      b->vmax[c] = ch->max_speed * ch->cpr;
+      const double e0 = ht_rad_to_counts(ch, t->lo[ch->joint]), e1 = ht_rad_to_counts(ch, t->hi[ch->joint]);
+      b->stop_lo[c] = e0 < e1 ? e0 : e1;
+      b->stop_hi[c] = e0 < e1 ? e1 : e0;
+    }
     if (b->def->kind == HT_FT_TILT) b->ft[2] = 38.5 * 9.81 / 2;   /* standing on both feet */
   }
 }
@@ -48,6 +54,19 @@ void emu_step(emu_world *w, double now, double dt) {
       continue;
     }
     if (!b->fet || !b->ctrl) continue;
+    if (b->mode == HCAN_MODE_CURRENT) {
+      for (int c = 0; c < b->def->nch; c++) {
+        const ht_channel *ch = &b->def->ch[c];
+        if (!(ch->kt > 0) || !(ch->torque > 0)) continue;   /* no data for a drive: it does not move */
+        const double nm = b->amps[c] * ch->kt * ch->ratio;   /* motor-side sign: counts follow the current */
+        double v = nm * ch->speed / ch->torque * ch->cpr;    /* counts/s */
+        v = v > b->vmax[c] ? b->vmax[c] : v < -b->vmax[c] ? -b->vmax[c] : v;
+        b->pos[c] += v * dt;
+        if (b->stop_hi[c] > b->stop_lo[c]) b->pos[c] = fmin(fmax(b->pos[c], b->stop_lo[c]), b->stop_hi[c]);
+        b->ref[c] = b->pos[c];
+      }
+      continue;
+    }
     for (int c = 0; c < b->def->nch; c++) {
       double step = (b->ref[c] - b->pos[c]) * a;
       const double cap = b->vmax[c] * dt;
@@ -71,7 +90,8 @@ static void status(const emu_board *b, hcan_frame *f) {
   hcan_status st[2];
   memset(st, 0, sizeof st);
   for (int c = 0; c < b->def->nch && c < 2; c++) {
-    st[c].flags = (uint8_t)((b->fet ? HCAN_ST_DRIVER : 0) | (b->ctrl ? HCAN_ST_CTRL : 0) | (b->home_state << 4));
+    st[c].flags = (uint8_t)((b->fet ? HCAN_ST_DRIVER : 0) | (b->ctrl ? HCAN_ST_CTRL : 0) |
+                            (b->mode == HCAN_MODE_CURRENT ? HCAN_ST_MODE : 0) | (b->home_state << 4));
     st[c].faults = b->faults;
     st[c].limits = b->limits;
   }
@@ -84,15 +104,19 @@ static int motor_cmd(emu_world *w, emu_board *b, const hcan_frame *f, double now
   const int arg = f->dlc > 2 ? f->data[2] : 0;
   switch (f->data[1]) {
   case HCAN_C_ENCODER:
+    b->enc_reqs++;
     hcan_rep_encoder(out, b->def->number, (int32_t)lround(b->pos[0]), nch > 1 ? (int32_t)lround(b->pos[1]) : 0);
     return 1;
   case HCAN_C_STATUS:
     status(b, out);
     return 1;
   case HCAN_C_CURRENT: {
-    /* the emulator's model: 20 A per rad of error, at most 10 A */
+    /* the emulator's model: 20 A per rad of error, at most 10 A; in current mode the reference's
+     * magnitude (the reply has no sign) */
     double amps[2] = { 0, 0 };
-    for (int c = 0; c < nch && c < 2; c++) amps[c] = fmin(10.0, fabs(b->ref[c] - b->pos[c]) / b->def->ch[c].cpr * 20);
+    for (int c = 0; c < nch && c < 2; c++)
+      amps[c] = b->mode == HCAN_MODE_CURRENT ? fabs(b->amps[c])
+                                             : fmin(10.0, fabs(b->ref[c] - b->pos[c]) / b->def->ch[c].cpr * 20);
     hcan_rep_current(out, b->def->number, amps, 35);
     return 1;
   }
@@ -110,6 +134,20 @@ static int motor_cmd(emu_world *w, emu_board *b, const hcan_frame *f, double now
     return 0;
   case HCAN_C_CTRL_OFF:
     b->ctrl = 0;
+    return 0;
+  case HCAN_C_CTRL_MODE:
+    /* 0 position, 1 current; 2 (hybrid) is the DRC finger boards' only */
+    if (f->dlc < 3 || (arg != HCAN_MODE_POSITION && arg != HCAN_MODE_CURRENT)) {
+      w->unparsed++;
+      return 0;
+    }
+    b->mode_frames++;
+    if (arg == b->mode) return 0;
+    b->mode = arg;
+    for (int c = 0; c < nch; c++) {
+      b->amps[c] = 0;          /* a new mode starts from rest: no current, */
+      b->ref[c] = b->pos[c];   /* holding where it is */
+    }
     return 0;
   case HCAN_C_HOME:
     b->home_state = 0;
@@ -148,14 +186,32 @@ int emu_handle(emu_world *w, int bus, const hcan_frame *f, double now, hcan_fram
   const hcan_kind k = hcan_classify(f, &num);
   if (k == HCAN_K_REF) {
     emu_board *b = on_bus(w, bus, num, 0);
+    if (!b || b->dead || b->def->kind != HT_JMC) return 0;
     int32_t c[2];
-    if (!b || b->dead || b->def->kind != HT_JMC || hcan_dec_ref(f, c) < 0) return 0;
+    double a[2];
+    if (hcan_dec_ref(f, c) < 0 || hcan_dec_cur_ref(f, a) < 0) {
+      w->unparsed++;
+      return 0;
+    }
     if (!(b->fet && b->ctrl) || b->homing_until > 0) {
       b->refs_ignored++;   /* ignored while the controller is off */
       return 0;
     }
-    for (int ch = 0; ch < b->def->nch; ch++) b->ref[ch] = c[ch];
-    b->refs++;
+    /* the board reads the frame by its mode: counts, or currents in 0.01 A */
+    for (int ch = 0; ch < b->def->nch; ch++) {
+      if (b->mode == HCAN_MODE_CURRENT) b->amps[ch] = a[ch];
+      else b->ref[ch] = c[ch];
+    }
+    if (b->mode == HCAN_MODE_CURRENT) b->cur_refs++;
+    else b->refs++;
+    return 0;
+  }
+  if ((k == HCAN_K_CMD || k == HCAN_K_SENSOR_REQ) && f->dlc < 2) {
+    w->unparsed++;
+    return 0;
+  }
+  if (k != HCAN_K_CMD && k != HCAN_K_SENSOR_REQ) {
+    w->unparsed++;   /* a board's reply or an id no frame has: nothing a board takes */
     return 0;
   }
   if (k == HCAN_K_CMD && f->dlc >= 2) {

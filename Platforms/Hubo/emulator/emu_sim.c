@@ -23,6 +23,11 @@ static void command(emu_sim *s, const emu_world *w) {
       s->actuator.command[ch->joint] = on ? ht_counts_to_rad(ch, (int32_t)b->ref[c]) : s->sensor.position[ch->joint];
       s->actuator.hardness[ch->joint] = on ? 1 : 0;
       s->actuator.torque_enable[ch->joint] = on;
+      /* current mode: the torque the current gives (current x constant x ratio, joint-side sign), applied by
+       * the sim's drive model */
+      const int cur = on && b->mode == HCAN_MODE_CURRENT;
+      s->actuator.mode[ch->joint] = cur ? 1 : 0;
+      s->actuator.torque[ch->joint] = cur ? ch->dir * b->amps[c] * ch->kt * ch->ratio : 0;
     }
   }
   /* the sim DCM's watchdog sees the emulator as its motion process */

@@ -3,8 +3,10 @@
  * The motor boards' encoders read the sim DCM's robot N (its dcm.sensor positions through each
  * channel's counts per radian, direction and zero), and their references drive it: a channel whose
  * board has FETs and position controller on and is homed commands its joint at full hardness; a
- * board switched off leaves its joints unpowered (torque off). Joints on no board (the Hubo2+ neck:
- * its board's formats are unknown) keep what the sim DCM commanded them at its start. The F/T boards
+ * board switched off leaves its joints unpowered (torque off); a board in current mode puts its
+ * joints in torque mode with the torque its current gives (current x torque constant x ratio). Joints
+ * on no board (the Hubo2+ neck: its board's formats are unknown) keep what the sim DCM commanded them
+ * at its start. The F/T boards
  * read the robot's dcm.sensor.ft slot of their mount (Mx, My, Fz, the table's signs applied as the
  * DCM undoes them), the IMU its roll, pitch and their rates.
  */

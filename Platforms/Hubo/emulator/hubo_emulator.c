@@ -8,7 +8,9 @@
  * real kernel's vcan works; with HUBO_FAKE_CAN=1 in the environment, the fake SocketCAN of
  * Platforms/Hubo/tests/fake_socketcan.c, linked in, for a kernel without AF_CAN). Motor boards start at encoder zero with FETs and controllers off, homed
  * (--unhomed: home state 0 until a homing command), and move first-order towards their reference
- * (time constant --tau, capped at the channel's max_speed) while FETs and controller are on.
+ * (time constant --tau, capped at the channel's max_speed) while FETs and controller are on; after
+ * H_SET_CTRL_MODE 1 a board reads its reference frame as currents and its joints turn as emu.h says
+ * (emu_step), H_SET_CTRL_MODE 0 puts it back in position mode holding where it is.
  *
  * Timing model of a 1 Mbit/s bus (the table's bitrate): every frame occupies its bus for its exact
  * bit count (hcan_frame_bits: stuff bits included) at the bit rate, one frame at a time; a board
@@ -22,9 +24,12 @@
  * --stdin reads commands, one per line: dead BOARD | alive BOARD | error BOARD FAULTS LIMITS |
  *   ft BOARD MX MY FZ | imu ROLL PITCH ROLL_RATE PITCH_RATE | power V A W | move BOARD CH COUNTS (a
  *   hand moves the joint: its encoder jumps there) | stats | quit.
- * stats prints per board "board NAME bus B number N ref R0 R1 enc E0 E1 fet F ctrl C home H dead D",
+ * stats prints per board "board NAME bus B number N ref R0 R1 enc E0 E1 fet F ctrl C home H dead D refs N
+ *   mode M amps A0 A1 mode_frames N cur_refs N enc_reqs N" (mode 0 position, 1 current: H_SET_CTRL_MODE; amps the
+ *   current reference in current mode, emu.h says what a current does),
  * "sensor NAME ..." for sensor and power boards, "silent NAME ..." for boards it does not emulate (the
- * Hubo2+ neck: formats unknown), per bus "bus B frames_in N frames_out M bits BITS load_pct L", totals, then "end".
+ * Hubo2+ neck: formats unknown), per bus "bus B frames_in N frames_out M bits BITS load_pct L", totals
+ * (with `unparsed`: host frames it could not parse), then "end".
  * --sim-id N: hardware in the loop: the sim DCM's robot N moves the joints and gives the F/T and
  *   IMU boards' readings instead of the first-order model (emu_sim.h); the boards start homed.
  * Prints "hubo_emulator: ready" on stderr when its sockets are bound.
@@ -236,9 +241,10 @@ static void stats(void) {
     const emu_board *b = &E.w.b[k];
     const ht_board *d = b->def;
     if (d->kind == HT_JMC)
-      printf("board %s bus %d number 0x%02X ref %ld %ld enc %ld %ld fet %d ctrl %d home %d dead %d refs %u\n", d->name,
-             d->bus + 1, d->number, lround(b->ref[0]), lround(b->ref[1]), lround(b->pos[0]), lround(b->pos[1]), b->fet,
-             b->ctrl, b->home_state, b->dead, b->refs);
+      printf("board %s bus %d number 0x%02X ref %ld %ld enc %ld %ld fet %d ctrl %d home %d dead %d refs %u mode %d "
+             "amps %.2f %.2f mode_frames %u cur_refs %u enc_reqs %u\n", d->name, d->bus + 1, d->number,
+             lround(b->ref[0]), lround(b->ref[1]), lround(b->pos[0]), lround(b->pos[1]), b->fet, b->ctrl, b->home_state,
+             b->dead, b->refs, b->mode, b->amps[0], b->amps[1], b->mode_frames, b->cur_refs, b->enc_reqs);
     else
       printf("%s %s bus %d number %d dead %d\n", d->kind == HT_JMC3 ? "silent" : "sensor", d->name, d->bus + 1,
              d->number, b->dead);
@@ -248,8 +254,8 @@ static void stats(void) {
     printf("bus %d frames_in %llu frames_out %llu bits %llu load_pct %.1f\n", b + 1, (unsigned long long)E.frames_in[b],
            (unsigned long long)E.frames_out[b], (unsigned long long)E.bits[b],
            span > 0 ? 100.0 * E.bits[b] / (E.table.bitrate * span) : 0);
-  printf("totals rx %lu tx %lu dropped %lu corrupted %lu overflow %lu\n", E.n_rx, E.n_tx, E.n_dropped, E.n_corrupted,
-         E.n_overflow);
+  printf("totals rx %lu tx %lu dropped %lu corrupted %lu overflow %lu unparsed %u\n", E.n_rx, E.n_tx, E.n_dropped,
+         E.n_corrupted, E.n_overflow, E.w.unparsed);
   printf("end\n");
   fflush(stdout);
 }
@@ -346,12 +352,15 @@ int main(int argc, char **argv) {
   const char *fake = getenv("HUBO_FAKE_CAN");
   if (fake && !strcmp(fake, "1")) io = fakecan_sys;
   char err[1024];
-  dcm_config *rc = NULL, *cc = NULL;
+  dcm_config *rc = NULL, *cc = NULL, *ac = NULL;
   int r = dcm_config_load("robot", NULL, "Hubo", &rc, err, sizeof err);
   if (r == 0) r = dcm_config_load("can", dcm_config_robot(rc), "Hubo", &cc, err, sizeof err);
   if (r == 0) r = ht_load(rc, cc, &E.table, err, sizeof err);
+  if (r == 0) r = dcm_config_load("actuators", dcm_config_robot(rc), "Hubo", &ac, err, sizeof err);
+  if (r == 0) r = ht_load_actuators(rc, ac, &E.table, err, sizeof err);
   dcm_config_free(rc);
   dcm_config_free(cc);
+  dcm_config_free(ac);
   if (r < 0) {
     fprintf(stderr, "hubo_emulator: %s\n", err);
     return 2;
