@@ -56,6 +56,9 @@ function env.wait(seconds)
     local t = Body.wait_tick(tick, 5.0)
     if t then
       tick, stalled = t, 0
+      -- a DCM that started after our done() (we joined before it ran in lockstep) consults us from
+      -- its first tick on, whatever wake we asked for: answer it, or it waits for us for ever
+      if participant and tick < target and participant:due(tick) then participant:done(tick, target) end
     else
       stalled = stalled + 5.0
       local pid = tonumber(shm.open('dcm.sensor').dcm_pid[0])
