@@ -101,7 +101,7 @@ function Ctl:reset(q)
   check(self, C.wbc_reset(self.cw, self.q_in))
 end
 
--- A task: kind (M.KINDS' names), opts { frame, level, gain (1/s), max_rate }.
+-- A task: kind (M.KINDS' names), opts { frame, level, gain (1/s), max_rate, max_accel (optional) }.
 function Ctl:add(name, kind, opts)
   local k = M.KINDS[kind]
   if not k then
@@ -115,6 +115,8 @@ function Ctl:add(name, kind, opts)
   end
   local id = check(self, C.wbc_task_add(self.cw, name, k, opt('frame', name), opt('level', 1), opt('gain', 1),
     opt('max_rate', 0)))
+  local accel = opt('max_accel', 0)
+  if accel > 0 then check(self, C.wbc_task_accel(self.cw, id, accel)) end
   self.ids[name], self.frames[name] = id, opt('frame', name)
   self.names[#self.names + 1] = name
   return id
@@ -148,6 +150,7 @@ function Ctl:target(name, t)
 end
 
 function Ctl:gain(name, g) check(self, C.wbc_task_gain(self.cw, id_of(self, name), g)) end
+function Ctl:accel(name, a) check(self, C.wbc_task_accel(self.cw, id_of(self, name), a)) end
 function Ctl:level(name, l) check(self, C.wbc_task_level(self.cw, id_of(self, name), l)) end
 
 function Ctl:status(name, out)

@@ -1,6 +1,6 @@
 -- Whole-body skills (docs/whole-body.md, "Skills"): what the motion state wbc runs over the body's
 -- base tasks (the wbc config's `tasks`: the balance, the posture). A skill is a set of states; each
--- state is a list of tasks (kind, frame, level, gain, max_rate, target, as the base tasks) and
+-- state is a list of tasks (kind, frame, level, gain, max_rate, max_accel, target, as the base tasks) and
 -- rules that move it on: to state `go` when the named tasks' errors are all under their bounds
 -- (`reached`) or after `after` s in the state, a rule with `times` at most that often per run. The
 -- default skill ('default') is the base tasks alone, in one state 'hold'.
@@ -96,7 +96,7 @@ function M.load(name, opts)
       end
       declared[tname] = d or { kind = t.kind, frame = frame, max_rate = t.max_rate, key = key }
       out.tasks[tname] = { kind = t.kind, frame = frame, level = t.level, gain = t.gain, max_rate = t.max_rate,
-        target = target }
+        max_accel = rawget(t, 'max_accel'), target = target }
     end
     local nexts = Config.optional(st, 'next', {})
     if rawget(nexts, 'go') then nexts = { nexts } end
@@ -130,7 +130,8 @@ function M.run(s, ctl, base, resolve)
     for _, tname in ipairs(s.states[sname].names) do
       local t = s.states[sname].tasks[tname]
       if not ctl:has(tname) then
-        ctl:add(tname, t.kind, { frame = t.frame, level = t.level, gain = t.gain, max_rate = t.max_rate })
+        ctl:add(tname, t.kind, { frame = t.frame, level = t.level, gain = t.gain, max_rate = t.max_rate,
+          max_accel = t.max_accel })
       end
     end
   end

@@ -2,15 +2,19 @@
 -- Modules/wbc; docs/whole-body.md): the skill the state runs. Each task: a kind (position,
 -- orientation, pose, com, com_xy, posture), a frame for the frame kinds, a level (1 is the highest,
 -- under the contacts), a gain (1/s: the task closes its error at gain x error), a max_rate (m/s or
--- rad/s: the fastest the task asks for) and a target: a list of numbers (stance frame), 'stance'
--- (com_xy: over the stance frame's origin, midway between the feet) or 'entry' (posture: the pose the
--- state started from), or none (the task rests until WBC.set_target gives one).
+-- rad/s: the fastest the task asks for), optionally a max_accel (m/s^2 or rad/s^2: how fast what it
+-- asks for may change; a new target then sets it going smoothly) and a target: a list of numbers
+-- (stance frame), 'stance' (com_xy: over the stance frame's origin, midway between the feet) or
+-- 'entry' (posture: the pose the state started from), or none (the task rests until WBC.set_target
+-- gives one).
 return {
   -- the frames held on the ground (the level above every task)
   contacts = { 'l_sole', 'r_sole' },
   tasks = {
     -- balance first: the centre of mass over the middle of the feet
-    com = { kind = 'com_xy', level = 1, gain = 4, max_rate = 0.05, target = 'stance' },
+    -- (max_accel: a jump in the COM's speed throws the ZMP towards a sole's edge by COM height / g
+    -- times the acceleration: 0.2 m/s^2 is 5 mm on the HOAP-3, 16 mm on the Hubo2+)
+    com = { kind = 'com_xy', level = 1, gain = 4, max_rate = 0.05, max_accel = 0.2, target = 'stance' },
     -- the rest of the body keeps the pose it started from, in whatever freedom the tasks above leave
     posture = { kind = 'posture', level = 4, gain = 1, max_rate = 0.5, target = 'entry' },
   },

@@ -14,6 +14,9 @@ local function task(t)
   if type(t.level) ~= 'number' or t.level < 1 or t.level % 1 ~= 0 then return 'must be an integer >= 1', 'level' end
   if not finite(t.gain) or t.gain < 0 then return 'must be a number >= 0 (1/s)', 'gain' end
   if not finite(t.max_rate) or t.max_rate < 0 then return 'must be a number >= 0', 'max_rate' end
+  if t.max_accel ~= nil and (not finite(t.max_accel) or t.max_accel < 0) then
+    return 'must be a number >= 0 (m/s^2 or rad/s^2; 0: no bound)', 'max_accel'
+  end
   local target = t.target
   if target == nil or (target == 'stance' and t.kind == 'com_xy') or (target == 'entry' and t.kind == 'posture') then
     return true

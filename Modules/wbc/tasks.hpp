@@ -27,6 +27,8 @@ struct Task {
   std::string name, frame;
   int kind = 0, level = 0, fid = -1;
   double gain = 0, max_rate = 0;
+  double max_accel = 0;               // the reference's largest change per second (<= 0: none)
+  Eigen::VectorXd last_ref, next_ref; // the reference of the last step (empty: at rest), of this one
   bool has = false;                   // a target is set
   Eigen::Vector3d pos = Eigen::Vector3d::Zero();      // POSITION, POSE, COM, COM_XY targets
   Eigen::Matrix3d rot = Eigen::Matrix3d::Identity();  // ORIENTATION, POSE

@@ -66,6 +66,20 @@ int bad_id(wbc *w, int id) {
   return fail(w, "no task with id " + std::to_string(id));
 }
 
+// A task's reference moves by at most max_accel * dt from the last step's (a task at rest starts
+// from zero): a new target sets the task going smoothly instead of at its full rate within one step
+// (a centre of mass whose speed jumps throws the ZMP to a sole's edge: z / g times the acceleration).
+// The reference is kept in next_ref and becomes last_ref once the step is taken.
+void limit_accel(wholebody::Task *t, VectorXd *ref, double dt) {
+  if (t->max_accel > 0) {
+    const VectorXd from = t->last_ref.size() == ref->size() ? t->last_ref : VectorXd::Zero(ref->size());
+    const VectorXd d = *ref - from;
+    const double n = d.norm(), lim = t->max_accel * dt;
+    if (n > lim) *ref = from + d * (lim / n);
+  }
+  t->next_ref = *ref;
+}
+
 // The stack for one solve: the contacts and the locked joints on top, then the tasks by level.
 // Fills `owner`: for each level, the task indices in it (-1: the top).
 std::vector<Level> stack(wbc *w, const std::vector<int> &locked, const std::vector<double> &lock_rate, bool lean_locked,
@@ -112,6 +126,7 @@ std::vector<Level> stack(wbc *w, const std::vector<int> &locked, const std::vect
       MatrixXd J;
       VectorXd ref;
       w->tasks[i].error = wholebody::task_rows(b, w->tasks[i], &J, &ref);
+      limit_accel(&w->tasks[i], &ref, w->dt);
       Js.push_back(J);
       refs.push_back(ref);
     }
@@ -255,6 +270,14 @@ int wbc_task_clear(wbc *w, int id) {
   return 0;
 }
 
+int wbc_task_accel(wbc *w, int id, double max_accel) {
+  if (bad_id(w, id)) return -1;
+  if (!std::isfinite(max_accel) || max_accel < 0)
+    return fail(w, "task '" + w->tasks[id].name + "': max_accel must be >= 0");
+  w->tasks[id].max_accel = max_accel;
+  return 0;
+}
+
 int wbc_task_gain(wbc *w, int id, double gain) {
   if (bad_id(w, id)) return -1;
   if (!std::isfinite(gain) || gain < 0) return fail(w, "task '" + w->tasks[id].name + "': gain must be >= 0");
@@ -339,6 +362,10 @@ int wbc_step(wbc *w, double *q_out) {
     if (r > w->speed(j)) scale = std::min(scale, w->speed(j) / r);
   }
   qd *= scale;
+  for (auto &t : w->tasks) {
+    if (t.has) t.last_ref = t.next_ref * scale;   // what the step asked of the task, scaled as it was
+    else t.last_ref.resize(0);
+  }
   for (size_t k = 0; k < owner.size(); k++)
     for (int i : owner[k])
       if (i >= 0) w->tasks[i].report = reports[k];

@@ -65,6 +65,9 @@ int wbc_task_id(const wbc *w, const char *name);
 int wbc_task_target(wbc *w, int id, const double *target, int n);   /* n: the kind's count */
 int wbc_task_clear(wbc *w, int id);                                    /* no target: the task rests */
 int wbc_task_gain(wbc *w, int id, double gain);
+/* The task's reference changes by at most max_accel per second (m/s^2 or rad/s^2; 0: no bound): a
+ * new target starts it moving smoothly. */
+int wbc_task_accel(wbc *w, int id, double max_accel);
 int wbc_task_level(wbc *w, int id, int level);
 int wbc_task_status_of(wbc *w, int id, wbc_task_status *out);
 int wbc_ntask(const wbc *w);
