@@ -4,8 +4,8 @@
 -- leg above it, at the ankle joint, in the link's axes; a foot under `min_force` N does not count),
 -- put in the field frame by the foot links' true poses and onto the ground plane (the soles' height):
 -- the same sensor model as Player/Motion/balance.lua, with the feet's poses from the sim's truth. The
--- support polygon: the convex hull of the soles, the bottom faces of the URDF's collision boxes named
--- sole* on each foot link.
+-- support polygon: the convex hull of the soles of the feet that carry weight, the bottom faces of the
+-- URDF's collision boxes named sole* on each foot link.
 --   local zm = require('zmp_margin').new(Sim, shm)
 --   zm:feet()                  -- the feet's true poses (again after the feet moved)
 --   local m, zx, zy = zm:margin()   -- m: metres inside the polygon (< 0: outside); nil: no foot loaded
@@ -81,20 +81,19 @@ function M.new(Sim, shm)
   return self
 end
 
--- The feet's true poses and the support polygon from them.
+-- The feet's true poses and their soles' corners on the ground.
 function Z:feet()
-  local pts, zg = {}, 0
+  local n, zg = 0, 0
   for _, foot in ipairs(self.feet_) do
     local p = self.Sim.link_truth(foot.link)
-    foot.pos, foot.rpy = { p.x, p.y, p.z }, { p.roll, p.pitch, p.yaw }
-    for _, c in ipairs(foot.corners) do
+    foot.pos, foot.rpy, foot.ground = { p.x, p.y, p.z }, { p.roll, p.pitch, p.yaw }, {}
+    for k, c in ipairs(foot.corners) do
       local w = rotate(foot.rpy, c)
-      pts[#pts + 1] = { foot.pos[1] + w[1], foot.pos[2] + w[2] }
-      zg = zg + foot.pos[3] + w[3]
+      foot.ground[k] = { foot.pos[1] + w[1], foot.pos[2] + w[2] }
+      zg, n = zg + foot.pos[3] + w[3], n + 1
     end
   end
-  self.ground = zg / #pts
-  self.polygon = hull(pts)
+  self.ground = zg / n
 end
 
 -- The measured ZMP {x, y} on the ground plane, field frame (nil: no foot carries weight).
@@ -103,7 +102,8 @@ function Z:zmp()
   local sfz, sx, sy = 0, 0, 0
   for k, foot in ipairs(self.feet_) do
     local o = 6 * (k - 1)
-    if ft[o + 3] > self.min_force then
+    foot.loaded = ft[o + 3] > self.min_force
+    if foot.loaded then
       local F = rotate(foot.rpy, { ft[o + 1], ft[o + 2], ft[o + 3] })
       local Mo = rotate(foot.rpy, { ft[o + 4], ft[o + 5], ft[o + 6] })
       local a, h = foot.pos, foot.pos[3] - self.ground
@@ -116,11 +116,17 @@ function Z:zmp()
   return sx / sfz, sy / sfz
 end
 
--- The measured ZMP's distance inside the support polygon (m; negative outside), and the ZMP.
+-- The measured ZMP's distance inside the support polygon (m; negative outside), and the ZMP. The
+-- polygon: the convex hull of the soles of the feet that carry weight (one foot while the other
+-- swings).
 function Z:margin()
   local zx, zy = self:zmp()
   if not zx then return nil end
-  local poly, m = self.polygon, math.huge
+  local pts = {}
+  for _, foot in ipairs(self.feet_) do
+    if foot.loaded then for _, p in ipairs(foot.ground) do pts[#pts + 1] = { p[1], p[2] } end end
+  end
+  local poly, m = hull(pts), math.huge
   for i = 1, #poly do
     local a, b = poly[i], poly[i % #poly + 1]
     local ex, ey = b[1] - a[1], b[2] - a[2]
