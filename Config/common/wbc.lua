@@ -25,4 +25,39 @@ return {
   max_lean = 0.25,
   -- the hardness the state drives the joints at
   hardness = 1.0,
+  -- Torque mode (Player/Motion/wbc_torque.lua, docs/whole-body.md): with `enabled`, the joints of
+  -- `group` are torque driven by operational-space control of `frame` (its target: WBC.set_target of
+  -- that frame, stance frame; nil: no task), the rest of the body stays in position mode. Off by
+  -- default: on the bodies without a torque path the DCM refuses torque mode. Live through param()
+  -- (param('wbc.torque.enabled', true), param('wbc.torque.kp', 0)).
+  torque = {
+    enabled = false,
+    group = 'rarm',
+    frame = 'r_palm',
+    -- the frame's task: 1/s^2 and 1/s, its error's natural frequency 20 rad/s (3.2 Hz) critically
+    -- damped: fast beside the 0.5 Hz motions it is for, slow beside the 200 Hz control rate and
+    -- its one-period delay
+    kp = 400,
+    kd = 40,
+    -- the posture in the task's null space (the arm's angles at the switch to torque mode): the
+    -- redundant directions held, softer than the task
+    posture_kp = 100,
+    posture_kd = 20,
+    -- 1/s: joint damping (weighted by the arm's mass matrix) in the task's null space, with no task
+    -- everywhere; it stays when the posture's gains are zero. Against the joints' slow creep under a
+    -- gravity compensation that is exact in the model (docs/whole-body.md, Torque mode); a fifth of
+    -- the posture's damping, so it leaves the posture and the task their own.
+    damping = 4,
+    -- s: the joint damping's rate is the angle's change over this window, not the encoder's
+    -- one-period difference (one count per 5 ms is 3 mrad/s on the Hubo2+'s arms)
+    rate_window = 0.05,
+    -- the gears' friction (the actuators' `friction`, Config/common/actuators.lua: 1 N m on the
+    -- Hubo2+'s arms), this fraction of it compensated in the direction the joint moves (the task's
+    -- joint rates while its target moves, else the measured rate; with no target none), smoothly
+    -- within friction_band rad/s of zero. Under 1: a friction a little less than the data says is not over-compensated
+    -- into a push; without it the arm lags a 0.5 Hz circle by 20 mm RMS in a model with the data's
+    -- friction.
+    friction = 0.9,
+    friction_band = 0.02,
+  },
 }

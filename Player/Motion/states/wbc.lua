@@ -9,6 +9,7 @@
 -- leaning the body after it. Leaves through stance when another motion is asked for.
 local Config = require('Config')
 local wbc = require('wbc')
+local wbc_torque = require('Motion.wbc_torque')   -- the skill's torque mode (a limb torque driven)
 
 local M = {}
 
@@ -23,6 +24,7 @@ local function skill(c)
     for name, t in pairs(cfg.tasks) do ctl:add(name, t.kind, t) end
     ctl:max_lean(cfg.max_lean)
     d.cfg, d.ctl, d.out, d.report = cfg, ctl, {}, { tasks = {} }
+    d.torque = wbc_torque.new(c, cfg)
   end
   return d
 end
@@ -86,13 +88,19 @@ function M.entry(c)
     ctl:target(name, target)
   end
   d.report.tasks = {}
+  d.torque:entry()
 end
 
 local function apply_inbox(c, d)
   local inbox = c.wbc_inbox
   if not inbox then return end
   c.wbc_inbox = nil
-  local ok, err = pcall(set_target, d, inbox.task, inbox.target)
+  local ok, err
+  if d.torque:owns(inbox.task) then
+    ok, err = pcall(d.torque.set_target, d.torque, inbox.task, inbox.target)
+  else
+    ok, err = pcall(set_target, d, inbox.task, inbox.target)
+  end
   c.wbc_done = { seq = inbox.seq, ok = ok, error = not ok and tostring(err) or nil }
 end
 
@@ -140,7 +148,9 @@ function M.update(c)
   local q = d.ctl:step(d.out)
   local h = d.cfg.hardness
   for _, i in ipairs(c.own) do c.q[i], c.h[i] = q[i], h end
+  d.torque:update(c, d.ctl)
   c.wbc_report = report(c, d)
+  d.torque:report(c.wbc_report, #d.ctl:tasks())
   if c.want ~= 'wbc' then return 'done' end
 end
 
