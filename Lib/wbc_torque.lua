@@ -96,7 +96,7 @@ function Ctl:position() return self.model:pose(self.frame, self.pose) end
 function Ctl:status() return self.st end
 
 -- The joint rates friction compensation goes by: J^+ v_des (J's damped right inverse) where the
--- target moves, else the measured qd.
+-- target moves, else the measured qd; and whether the target moves.
 function Ctl:friction_rates(qd)
   local n, J, out = self.n, self.b_J, self.fw or {}
   self.fw = out
@@ -104,7 +104,7 @@ function Ctl:friction_rates(qd)
   local moving = v and (v[1] * v[1] + v[2] * v[2] + v[3] * v[3]) > 1e-8
   if not moving then
     for k = 1, n do out[k] = qd[k] end
-    return out
+    return out, false
   end
   -- y = (J J^T + 1e-4 I)^-1 v, out = J^T y
   local G = {}
@@ -125,7 +125,7 @@ function Ctl:friction_rates(qd)
   for k = 1, n do
     out[k] = J[k - 1] * y[1] + J[n + k - 1] * y[2] + J[2 * n + k - 1] * y[3]
   end
-  return out
+  return out, true
 end
 
 -- The task's inverse inertia J A^-1 J^T (3 x 3 rows, m/s^2 per N) at the state last given to
@@ -241,12 +241,13 @@ function Ctl:torques(q, qdot, base, gains, posture, qdot_damp)
     st.feasible, st.sigma_min = true, 0
     for k = 1, n do tau[k] = tau0[k - 1] end
   end
-  -- the gears' friction (the actuators' data), a fraction gains.friction of it compensated in the
-  -- direction the joint moves: the task's joint rates J^+ v_des while the target moves, else the
-  -- measured rate, within a band of gains.friction_band rad/s (smooth through zero). Without a
-  -- target nothing is compensated: the friction helps hold the arm.
-  local fw = self:friction_rates(qd)
-  local fc, band = self.p_des and gains.friction or 0, gains.friction_band or 0.02
+  -- the gears' friction (the actuators' data) compensated in the direction the joint moves: a
+  -- fraction gains.friction of it along the task's joint rates J^+ v_des while the target moves,
+  -- else gains.friction_measured along the measured rate, within a band of gains.friction_band
+  -- rad/s (smooth through zero). Without a target nothing is compensated: the friction helps hold.
+  local fw, moving = self:friction_rates(qd)
+  local fc = self.p_des and (moving and gains.friction or gains.friction_measured) or 0
+  local band = gains.friction_band or 0.02
   for k = 1, n do
     local t = tau[k] + h[cols[k]] + fc * self.friction[k] * min(max(fw[k] / band, -1), 1)
     if not finite(t) then error(format("wbc_torque: joint '%s': the torque is not finite", self.joints[k]), 2) end
