@@ -184,20 +184,24 @@ local function push(F)
   for r = 1, 3 do expect[r] = (Cm[r][1] * F[1] + Cm[r][2] * F[2] + Cm[r][3] * F[3]) / kp end
   local along_expect = expect[1] * unit[1] + expect[2] * unit[2] + expect[3] * unit[3]
   local before = xyz(Sim.link_truth('r_palm'))
+  local err0 = WBC.status().tasks.r_palm.error
   assert(Sim.push_link('r_palm', F[1], F[2], F[3], 2.0))
   step(1.5)
-  local moved = { 0, 0, 0 }
+  local moved, err = { 0, 0, 0 }, 0
   for _ = 1, 10 do
     step(0.05)
     local p = xyz(Sim.link_truth('r_palm'))
     for r = 1, 3 do moved[r] = moved[r] + (p[r] - before[r]) / 10 end
+    err = err + WBC.status().tasks.r_palm.error / 10
   end
   local along = moved[1] * unit[1] + moved[2] * unit[2] + moved[3] * unit[3]
   step(0.5 + 2)   -- the push ends; 2 s after the release
   local back = dist(xyz(Sim.link_truth('r_palm')), before)
   note('push (%.0f, %.0f, %.0f) N: K = kp Lambda along it %.0f N/m (kp %.0f 1/s^2): F/K %.1f mm, measured %.1f mm ' ..
-    '(%.1f mm across it); back to %.1f mm 2 s after', F[1], F[2], F[3], f / along_expect, kp, along_expect * 1e3,
-    along * 1e3, math.sqrt(math.max(0, dist(moved, { 0, 0, 0 }) ^ 2 - along ^ 2)) * 1e3, back * 1e3)
+    '(%.1f mm across it); back to %.1f mm 2 s after; the task\'s error from the encoders %.1f mm (%.1f before), ' ..
+    '(1/kp) J A^-1 J^T f %.1f mm', F[1], F[2], F[3], f / along_expect, kp, along_expect * 1e3, along * 1e3,
+    math.sqrt(math.max(0, dist(moved, { 0, 0, 0 }) ^ 2 - along ^ 2)) * 1e3, back * 1e3, err * 1e3, err0 * 1e3,
+    dist(expect, { 0, 0, 0 }) * 1e3)
   return along, along_expect, back
 end
 local a1, e1, b1 = push({ -20, 0, 0 })
