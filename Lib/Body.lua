@@ -199,6 +199,26 @@ function M.set_torque(joint, nm)
   return true
 end
 function M.get_torque(joint) return joint_torque[joint_index(joint) - 1] end
+-- The motion process's own torque (does not take the joint, as drive): nm N*m in torque mode, or nil:
+-- back to position mode holding where the joint is. A NaN or infinite torque is refused as set_torque's.
+function M.drive_torque(joint, nm)
+  local i = joint_index(joint)
+  if nm == nil then
+    if mode[i - 1] ~= 0 then
+      put_command(i, position[i - 1], false)
+      actuator:write(function(a) a.mode[i - 1], a.torque[i - 1] = 0, 0 end)
+    end
+    return true
+  end
+  if not finite(nm) then
+    stats.refused[0] = stats.refused[0] + 1
+    return false, string.format("Body.drive_torque: the torque for joint '%s' must be a finite number of N*m, not %s",
+      names[i], tostring(nm))
+  end
+  if mode[i - 1] == 0 then put_command(i, position[i - 1], false) end   -- held here on a return
+  actuator:write(function(a) a.torque[i - 1], a.mode[i - 1] = nm, 1 end)
+  return true
+end
 
 -- set_mode(joint, 'position' | 'torque'): 'position' holds the joint where it is now; 'torque' applies
 -- the torque the block holds (0 unless set_torque gave one). get_mode(joint) says which.

@@ -7,6 +7,9 @@
 --   Sim.teleport_robot(x, y, yaw)    this robot, joints at their commands, on its lower sole laid flat, at rest
 --   Sim.teleport_ball(x, y [, vx, vy])
 --   Sim.push(fx, fy, duration)       N on the torso, field frame, for duration s of robot time
+--   Sim.push_link(name, fx, fy, fz, duration)  N at the origin of a link or frame of the body's URDF
+--                                    ('r_palm'), field frame, for duration s; a name the body lacks
+--                                    is an error naming it
 --   Sim.press_button(i [, duration]) button i (1 or 2) held for duration s (default 0.1)
 --   Sim.score()  --> goals into the goal at +x, goals into the goal at -x
 --   Sim.link_truth(name)  --> { x, y, z, roll, pitch, yaw } of a link or frame of the body's URDF
@@ -26,7 +29,8 @@ local shm = require('shm')
 local M = {}
 local C = shm.C
 
-local REQUEST = { reset = 1, teleport_robot = 2, teleport_ball = 3, push = 4, button = 5, link_truth = 6 }
+local REQUEST = { reset = 1, teleport_robot = 2, teleport_ball = 3, push = 4, button = 5, link_truth = 6,
+  push_link = 7 }
 local TIMEOUT = 2.0   -- s of wall time to wait for the DCM
 
 -- The blocks of robot `id` (nil: this process's robot). Requests wake this process's own sync
@@ -152,19 +156,41 @@ local function bind(S, R)
     return names
   end
 
-  function S.link_truth(name)
+  -- A request about link or frame `name` (into link_name): link_truth or push_link.
+  local function link_request(fname, name, kind, a1, a2, a3, a4)
     if type(name) ~= 'string' or name == '' or name:find('\0', 1, true) then
-      error(string.format('Sim.link_truth: the name of a link or frame expected, got %q', tostring(name)), 2)
+      error(string.format('Sim.%s: the name of a link or frame expected, got %q', fname, tostring(name)), 3)
     end
     local s = blocks()
     local cap = s:count('link_name')
     if #name >= cap then
-      error(string.format("Sim.link_truth: '%s' is longer than the %d bytes a name may have", name, cap - 1), 2)
+      error(string.format("Sim.%s: '%s' is longer than the %d bytes a name may have", fname, name, cap - 1), 3)
     end
-    local ok, err = request(REQUEST.link_truth, 0, 0, 0, 0, function(x)
+    return request(kind, a1, a2, a3, a4, function(x)
       ffi.fill(x.link_name, cap)
       ffi.copy(x.link_name, name, #name)
     end)
+  end
+  local function no_such_link(fname, name)
+    local names = S.link_names()
+    local some = {}
+    for k = 1, math.min(#names, 8) do some[k] = names[k] end
+    error(string.format("Sim.%s: the body has no link or frame '%s' (it has %d: %s%s)", fname, name, #names,
+      table.concat(some, ', '), #names > #some and ', ...' or ''), 3)
+  end
+
+  function S.push_link(name, fx, fy, fz, duration)
+    check_numbers('push_link', fx, fy, fz, duration)
+    if duration < 0 then error('Sim.push_link: duration must be >= 0', 2) end
+    local ok, err = link_request('push_link', name, REQUEST.push_link, fx, fy, fz, duration)
+    if not ok then return nil, err end
+    if blocks().link_status[0] ~= 0 then no_such_link('push_link', name) end
+    return true
+  end
+
+  function S.link_truth(name)
+    local s = blocks()
+    local ok, err = link_request('link_truth', name, REQUEST.link_truth, 0, 0, 0, 0)
     if not ok then return nil, err end
     local status, pose = s:read(function(x)
       local p = x.link_pose
@@ -173,11 +199,7 @@ local function bind(S, R)
     if status == 2 then
       error(string.format("Sim.link_truth: the simulator's pose of '%s' is not finite", name), 2)
     elseif status ~= 0 then
-      local names = S.link_names()
-      local some = {}
-      for k = 1, math.min(#names, 8) do some[k] = names[k] end
-      error(string.format("Sim.link_truth: the body has no link or frame '%s' (it has %d: %s%s)", name, #names,
-        table.concat(some, ', '), #names > #some and ', ...' or ''), 2)
+      no_such_link('link_truth', name)
     end
     return pose
   end

@@ -191,6 +191,15 @@ function Ctl:has_frame(name)
 end
 
 function Ctl:step_us() return C.wbc_step_us(self.cw) end
+-- The floating base's pose in the stance frame: { x, y, z, qx, qy, qz, qw } (the model's).
+function Ctl:base(out)
+  local b = self.base7 or ffi.new('double[7]')
+  self.base7 = b
+  C.wbc_base(self.cw, b)
+  out = out or {}
+  for k = 1, 7 do out[k] = b[k - 1] end
+  return out
+end
 
 -- The torso's lean bound (rad from upright; 0: none), and whether the last step held it there.
 function Ctl:max_lean(rad) check(self, C.wbc_set_max_lean(self.cw, rad)) end

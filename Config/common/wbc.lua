@@ -29,4 +29,43 @@ return {
   max_lean = 0.25,
   -- the hardness the state drives the joints at
   hardness = 1.0,
+  -- Torque mode (Player/Motion/wbc_torque.lua, docs/whole-body.md): with `enabled`, the joints of
+  -- `group` are torque driven by operational-space control of `frame` (its target: WBC.set_target of
+  -- that frame, stance frame; nil: no task), the rest of the body stays in position mode. Off by
+  -- default: on the bodies without a torque path the DCM refuses torque mode. Live through param()
+  -- (param('wbc.torque.enabled', true), param('wbc.torque.kp', 0)).
+  torque = {
+    enabled = false,
+    group = 'rarm',
+    frame = 'r_palm',
+    -- the frame's task: 1/s^2 and 1/s, its error's natural frequency 20 rad/s (3.2 Hz) critically
+    -- damped: fast beside the 0.5 Hz motions it is for, slow beside the 200 Hz control rate and
+    -- its one-period delay
+    kp = 900,
+    kd = 60,
+    -- the posture in the task's null space (the arm's angles at the switch to torque mode): the
+    -- redundant directions held, softer than the task
+    posture_kp = 100,
+    posture_kd = 20,
+    -- 1/s: joint damping (weighted by the arm's mass matrix) in the task's null space, with no task
+    -- everywhere; it stays when the posture's gains are zero, so the redundant directions do not
+    -- swing freely. Not a cure for the sim's creep at 40 solver iterations (docs/whole-body.md,
+    -- Torque mode: 23 mm in 10 s without it, 18-21 with 10-100/s, 11 with 200/s, a plateau), and a
+    -- strong one costs tracking (a 0.5 Hz circle 6 mm RMS at 4-10/s, 8 mm at 100/s).
+    damping = 10,
+    -- s: the joint damping's rate is the angle's change over this window, not the encoder's
+    -- one-period difference (one count per 5 ms is 3 mrad/s on the Hubo2+'s arms)
+    rate_window = 0.05,
+    -- the gears' friction (the actuators' `friction`, Config/common/actuators.lua: 1 N m on the
+    -- Hubo2+'s arms) compensated in the direction the joint moves, smoothly within friction_band
+    -- rad/s of zero: `friction` of it along the task's joint rates while its target moves (without
+    -- it the arm lags a 0.5 Hz circle by 20 mm RMS in a model with the data's friction), and
+    -- `friction_measured` along the measured rates while the target stands (the encoders' rate is
+    -- quantised and late: at 0.9 a 20 N push on the Hubo2+'s palm overshoots F/K by 59 % and the
+    -- friction holds it there; at 0.5 it lands within 2 %, at 0 15 % short). No target: none, the
+    -- friction helps hold the arm.
+    friction = 0.9,
+    friction_measured = 0.5,
+    friction_band = 0.02,
+  },
 }

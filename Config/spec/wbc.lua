@@ -76,4 +76,20 @@ local function lean(v)
   return 'must be a number in 0..pi/2 (rad; 0: no bound)'
 end
 
-return { contacts = frames, tasks = tasks, reach = reach, hardness = hardness, hold_after = seconds, max_lean = lean }
+local function torque(v)
+  if type(v) ~= 'table' then
+    return 'must be a table { enabled, group, frame, kp, kd, posture_kp, posture_kd, damping, rate_window, ' ..
+      'friction, friction_measured, friction_band }'
+  end
+  if type(v.enabled) ~= 'boolean' then return 'must be true or false', 'enabled' end
+  if type(v.group) ~= 'string' then return "must name a joint group of the body ('rarm')", 'group' end
+  if type(v.frame) ~= 'string' then return 'must name a frame of the body', 'frame' end
+  for _, k in ipairs({ 'kp', 'kd', 'posture_kp', 'posture_kd', 'damping', 'rate_window', 'friction',
+    'friction_measured', 'friction_band' }) do
+    if not finite(v[k]) or v[k] < 0 then return 'must be a number >= 0', k end
+  end
+  return true
+end
+
+return { contacts = frames, tasks = tasks, reach = reach, hardness = hardness, hold_after = seconds, max_lean = lean,
+  torque = torque }

@@ -180,6 +180,19 @@ void answer_link_truth(Sim &s, int r) {
   shm_write_end(b.blk);
 }
 
+// Request 7: a force (args fx, fy, fz N, field frame; duration s) at the link or frame link_name;
+// link_status says whether the body has it (0) or not (1).
+void push_link(Sim &s, int r, const double *a) {
+  const dcm_blk_sim &b = s.rob[r].sim;
+  const size_t cap = (size_t)b.n.link_name;
+  std::string name;
+  for (size_t k = 0; k < cap && b.link_name[k]; k++) name += (char)b.link_name[k];
+  const bool found = a[3] >= 0 && s.world->push_link(r, name, a[0], a[1], a[2], a[3]);
+  shm_write_begin(b.blk);
+  *b.link_status = found ? 0 : 1;
+  shm_write_end(b.blk);
+}
+
 // The body's links (its root first) and frames, space-separated, into link_names; as many whole
 // names as the field holds.
 void publish_link_names(const SimRobot &x, const sim::Model &m) {
@@ -215,6 +228,7 @@ bool apply_request(Sim &s, int r) {
         if (a[0] == 0 || a[0] == 1) x.button_until[(int)a[0]] = w.time() + a[1];
         break;
       case 6: answer_link_truth(s, r); break;
+      case 7: push_link(s, r, a); break;
       default: break;
     }
   } else {

@@ -163,6 +163,9 @@ class World {
   void reset();
   // A force (N, field frame, horizontal) on robot r's torso for `duration` s.
   void push(int r, double fx, double fy, double duration);
+  // A force (N, field frame) at the origin of a link or frame of robot r (its URDF's name: 'r_palm')
+  // for `duration` s; false if the body has no such link or frame.
+  bool push_link(int r, const std::string &name, double fx, double fy, double fz, double duration);
   int score(int goal) const { return score_[goal]; }   // 0: goals into +x, 1: into -x
   // The robot whose body touched the ball last (a contact in the physics), -1: none since the ball
   // was placed; and the sim time of that touch. The referee's "last touched" (own goals, throw-ins).
@@ -214,6 +217,10 @@ class World {
     Vec3 vel_start = Vec3::Zero();
     Vec3 push_force = Vec3::Zero();
     double push_left = 0;
+    int push_at = -1;                      // push_link's link (model index), -1: none
+    Vec3 push_at_offset = Vec3::Zero();    // the point in that link's frame
+    Vec3 push_at_force = Vec3::Zero();
+    double push_at_left = 0;
     double accel[3] = {0, 0, 9.81};
     int ft_link[4] = {-1, -1, -1, -1};     // per ft slot: the sensor's (child) link, -1 none
   };

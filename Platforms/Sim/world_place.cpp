@@ -78,6 +78,7 @@ void World::place_robot(int r, double x, double y, double yaw, const double *q) 
   }
   rb.vel_start = Vec3::Zero();
   rb.push_left = 0;
+  rb.push_at_left = 0;
 }
 
 void World::hang_robot(int r, double height) {
@@ -127,6 +128,24 @@ void World::push(int r, double fx, double fy, double duration) {
   Robot &rb = robots_[r];
   rb.push_force = Vec3(fx, fy, 0);
   rb.push_left = duration;
+}
+
+bool World::push_link(int r, const std::string &name, double fx, double fy, double fz, double duration) {
+  Robot &rb = robots_[r];
+  const Model &m = *rb.m;
+  int li = m.link_index(name);
+  Vec3 off = Vec3::Zero();
+  if (li < 0) {
+    const int fi = m.frame_index(name);
+    if (fi < 0) return false;
+    li = m.frames[fi].link;
+    off = m.frames[fi].pos;
+  }
+  rb.push_at = li;
+  rb.push_at_offset = off;
+  rb.push_at_force = Vec3(fx, fy, fz);
+  rb.push_at_left = duration;
+  return true;
 }
 
 }  // namespace sim

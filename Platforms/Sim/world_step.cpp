@@ -142,11 +142,21 @@ void World::collide(dGeomID o1, dGeomID o2) {
 }
 
 void World::physics_step() {
-  for (Robot &rb : robots_) {
+  for (size_t r = 0; r < robots_.size(); r++) {
+    Robot &rb = robots_[r];
     servo_update(rb);
     if (rb.push_left > 0) {
       dBodyAddForce(rb.body[0], rb.push_force.x(), rb.push_force.y(), rb.push_force.z());
       rb.push_left -= p_.timestep;
+    }
+    if (rb.push_at_left > 0) {
+      Vec3 lp;
+      Mat3 lR;
+      link_pose((int)r, rb.push_at, &lp, &lR);
+      const Vec3 at = lp + lR * rb.push_at_offset;
+      dBodyAddForceAtPos(rb.body[rb.push_at], rb.push_at_force.x(), rb.push_at_force.y(), rb.push_at_force.z(),
+                         at.x(), at.y(), at.z());
+      rb.push_at_left -= p_.timestep;
     }
   }
   // air drag on the ball: 0.5 * rho * Cd * A * v^2

@@ -12,7 +12,9 @@
 -- zmp_contact (balance), owner (per joint: 0 held, 1 motion, 2 a caller), tick.
 -- Only the joints the current state owns (or a caller took) are written: the others hold whatever
 -- the actuator block has (Player/Motion/control.lua). A joint in torque mode (Body.set_torque) is
--- not written at all: its caller's torque drives it.
+-- not written at all: its caller's torque drives it. A state drives a joint in torque mode by
+-- setting ctl.tau[i] (N m) each tick (Body.drive_torque); one it stops setting goes back to
+-- position mode holding where it is.
 local ffi = require('ffi')
 local shm = require('shm')
 local Config = require('Config')
@@ -42,6 +44,8 @@ local ctl = control.new({ robot = robot, params = params, model = kin.load(), in
   walk_files = table.concat(Config.files('walk'), ' + ') })
 if initial == 'relax' or initial == 'sit' then ctl.want = initial end
 local n = ctl.n
+ctl.tau = {}            -- a state's torques this tick (joint index -> N m), consumed below
+local torque_driven = {}   -- the joints motion put in torque mode
 
 local sensor, actuator = Body.sensor, Body.actuator
 local motion = shm.open('motion')
@@ -193,6 +197,19 @@ while true do
         Body.drive(i, q[i])
         local h = ctl.h[i]
         if hardness[i - 1] ~= h then Body.set_hardness(i, h) end
+      end
+    end
+    -- the state's torques: a refused one (NaN) puts the joint back in position mode, holding
+    local tau = ctl.tau
+    for i = 1, n do
+      local nm = tau[i]
+      if nm ~= nil then
+        tau[i] = nil
+        torque_driven[i] = Body.drive_torque(i, nm) or nil
+        if not torque_driven[i] then Body.drive_torque(i, nil) end
+      elseif torque_driven[i] then
+        torque_driven[i] = nil
+        Body.drive_torque(i, nil)
       end
     end
     -- the DCM's watchdog: a new tick_ack each tick, and the writer's pid so that its death is seen

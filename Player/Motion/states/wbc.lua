@@ -13,6 +13,7 @@
 local Config = require('Config')
 local wbc = require('wbc')
 local wbc_skill = require('wbc_skill')
+local wbc_torque = require('Motion.wbc_torque')   -- the skill's torque mode (a limb torque driven)
 
 local M = {}
 
@@ -30,6 +31,7 @@ local function skill(c)
     for i, j in ipairs(c.robot.joints) do joint[j] = i end
     d.cfg, d.ctl, d.out, d.joint, d.entry_q = cfg, ctl, {}, joint, {}
     d.report = { tasks = {}, by_name = {}, skill = wbc_skill.DEFAULT, skill_state = '', skill_time = 0 }
+    d.torque = wbc_torque.new(c, cfg)
   end
   return d
 end
@@ -134,13 +136,19 @@ function M.entry(c)
   d.skill_seq, d.run = c.wbc_skill_seq, nil
   local ok, err = start_skill(c, d, c.wbc_skill)
   c.wbc_skill_done = { seq = c.wbc_skill_seq or 0, ok = ok, error = err }
+  d.torque:entry()
 end
 
 local function apply_inbox(c, d)
   local inbox = c.wbc_inbox
   if not inbox then return end
   c.wbc_inbox = nil
-  local ok, err = pcall(set_target, d, inbox.task, inbox.target)
+  local ok, err
+  if d.torque:owns(inbox.task) then
+    ok, err = pcall(d.torque.set_target, d.torque, inbox.task, inbox.target)
+  else
+    ok, err = pcall(set_target, d, inbox.task, inbox.target)
+  end
   c.wbc_done = { seq = inbox.seq, ok = ok, error = not ok and tostring(err) or nil }
 end
 
@@ -193,12 +201,14 @@ function M.update(c)
   local q = d.ctl:step(d.out)
   local h = d.cfg.hardness
   for _, i in ipairs(c.own) do c.q[i], c.h[i] = q[i], h end
+  d.torque:update(c, d.ctl)
   local r = report(c, d)
   local run = d.run
   if run:update(c.dt, r.by_name) then
     for _, tname in ipairs(run.skill.states[run.state].names) do d.held[tname], d.infeasible[tname] = nil, 0 end
   end
   r.skill_state, r.skill_time = run.state, run.time
+  d.torque:report(r, #d.ctl:tasks())
   c.wbc_report = r
   if c.want ~= 'wbc' then return 'done' end
 end
