@@ -8,6 +8,7 @@ return {
   steps = 12,
   stepLength = 0.04,         -- m
   tStep = false,             -- s, one step (false: walk.tStep)
+  stepHeight = false,        -- m, the swing foot's lift (false: walk.stepHeight)
   zc = false,                -- m, the cart-table model's COM height (false: walk.tZmp^2 g)
   dt = false,                -- s, the preview controller's sample time T (false: robot.period)
   samples = false,           -- N, preview samples (false: walk.preview.window / dt)

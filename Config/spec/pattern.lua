@@ -24,6 +24,7 @@ return {
     return true
   end,
   tStep = positive(false, true),
+  stepHeight = positive(true, true),
   zc = positive(false, true),
   dt = positive(false, true),
   samples = function(v)

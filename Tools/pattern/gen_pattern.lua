@@ -36,7 +36,8 @@ local lead = pick(pat.lead, wp.preview.lead)
 -- the walk's parameters with the pattern's: the cart height as tZmp, the preview window as N
 -- samples of dt (walk_preview rounds window / dt to N)
 local preview = { window = N * dt, Qe = pick(pat.Qe, wp.preview.Qe), R = pick(pat.R, wp.preview.R), lead = lead }
-local over = { tZmp = math.sqrt(zc / G), tStep = tStep, preview = preview }
+local over = { tZmp = math.sqrt(zc / G), tStep = tStep, stepHeight = pick(pat.stepHeight, wp.stepHeight),
+  preview = preview }
 local p = setmetatable(over, { __index = wp })
 if pat.stepLength < wp.stepLimitX[1] or pat.stepLength > wp.stepLimitX[2] then
   error(string.format("%s: key 'stepLength' %.3f m is outside the walk's stepLimitX %.3f..%.3f m", files,
@@ -108,9 +109,21 @@ record(0)
 w:start()
 -- the plan ends with the feet together: the walk stops after its last step (Walk:begin_step())
 w.stopping = true
-local k, steps_at_end = 0, nil
+-- after the last step the engine lets the controller bring the COM to rest over the feet's middle
+-- for `lead` s, then holds it there: with slow weights (R/Q 1e-5) the COM is still a few mm short
+-- then and the hold would jump to it in one tick (3.5 mm on the HOAP-3's plan, 1 deg on the ankles).
+-- The pattern lets the controller run on until the COM is within 0.1 mm of the middle.
+local function settling()
+  if not (w.ctl and w.settle == 1) then return end
+  local L, R = w.uLeft2, w.uRight2
+  local mx, my = 0.5 * (L[1] + R[1]), 0.5 * (L[2] + R[2])
+  if math.abs(w.com[1] - mx) > 1e-4 or math.abs(w.com[2] - my) > 1e-4 then w.settle = 2 end
+end
+local k = 0
+local steps_at_end
 while true do
   k = k + 1
+  settling()
   tick()
   record(k * dt)
   if not w.active and w.settle == 0 and not w.ctl then
@@ -120,20 +133,26 @@ while true do
   if k * dt > 600 then error('gen_pattern: the walk did not stop within 600 s', 0) end
 end
 
--- figures: the planned ZMP against the reference, the distance, the largest joint speed
+-- figures: the planned ZMP against the reference, the distance, each joint's peak speed against
+-- its drive's (Config actuators: a pattern faster than the drives is not played as planned)
+local actuators = Config.load('actuators')
 local e2, emax, m = 0, 0, 0
-local vmax, vname = 0, ''
+local vpeak = {}
+for i = 1, n do vpeak[i] = 0 end
 for r = 1, #rows do
   local row = rows[r]
   local ex, ey = row[n + 2] - row[n + 4], row[n + 3] - row[n + 5]
   local e = math.sqrt(ex * ex + ey * ey)
   e2, emax, m = e2 + e * e, math.max(emax, e), m + 1
   if r > 1 then
-    for i = 1, n do
-      local v = math.abs(row[1 + i] - rows[r - 1][1 + i]) / dt
-      if v > vmax then vmax, vname = v, names[i] end
-    end
+    for i = 1, n do vpeak[i] = math.max(vpeak[i], math.abs(row[1 + i] - rows[r - 1][1 + i]) / dt) end
   end
+end
+local worst, wname, wspeed = -1, '', 0
+for i = 1, n do
+  local act = actuators[robot.actuator[names[i]]]
+  local frac = vpeak[i] / act.speed
+  if frac > worst then worst, wname, wspeed = frac, names[i], act.speed end
 end
 local last = rows[#rows]
 trajectory.write(out, {
@@ -148,4 +167,5 @@ print(string.format('# pattern %s: %d rows over %.2f s, %d steps, %.3f m forward
   w.stats.steps, 0.5 * (last[n + 8] + last[n + 11])))
 print(string.format('# plan: z_c %.3f m, T %.3f s, N %d, R/Q %g; planned ZMP from its reference: RMS %.1f mm, '
   .. 'max %.1f mm', zc, dt, N, preview.R / preview.Qe, 1000 * math.sqrt(e2 / m), 1000 * emax))
-print(string.format('# fastest joint: %s %.2f rad/s', vname, vmax))
+print(string.format('# fastest joint for its drive: %s %.2f rad/s, %.0f%% of its %.2f rad/s', wname,
+  worst * wspeed, 100 * worst, wspeed))
