@@ -27,7 +27,7 @@ local deg = 180 / math.pi
 -- the bounds of the checks below (the figures they bound: docs/results/motion.md): the ZMP's RMS
 -- error within the soles' half-width (0.0365 m on the HOAP-3), less a margin; each leg joint within
 -- 3 deg RMS of its plan (the HOAP-3's 0.4 s steps, its knees asked for 7.5 of their 4 rad/s, are
--- 4.5 deg off)
+-- 4.3 deg off)
 local ZMP_RMS_MAX, JOINT_RMS_MAX = 0.030, 3 / deg
 
 local tr = trajectory.load(file, robot)

@@ -55,7 +55,8 @@ w.dt = dt -- the pattern's sample time, not the motion tick's
 -- for the step that begins (no argument), plan_ahead() for each later step in turn over the
 -- preview window (a table of its own), so the whole plan is known a window ahead.
 local plan = {}
-for i = 1, pat.steps - 1 do plan[i] = pat.stepLength / tStep end
+local T_step = w:step_time({ 0, 0, 0 }) -- tStep in whole samples (Player/Motion/walk_preview.lua)
+for i = 1, pat.steps - 1 do plan[i] = pat.stepLength / T_step end
 plan[pat.steps] = 0
 local ahead = 0
 function w.update_velocity(self, v)

@@ -57,7 +57,8 @@ for a, axis in zip(ax, ['x', 'y']):
             a.fill_between(t, lo, hi, color=color, alpha=0.12, lw=0)
     a.set_ylabel(axis + ' (m)')
     a.grid(True)
-    a.legend(loc='best', fontsize=8)
+# one legend, where the x plot is empty (it starts at the origin and rises)
+ax[0].legend(loc='upper left', fontsize=8)
 ax[1].set_xlabel('time in the pattern (s)')
 e = np.hypot(d['meas_x'][ok] - d['zmp_x'][ok], d['meas_y'][ok] - d['zmp_y'][ok])
 ax[0].set_title('%s: ZMP planned against measured (RMS %.1f mm, max %.1f mm)'
