@@ -9,13 +9,13 @@
 # log and two PNGs (the left leg's joint angles, the ZMP) into build/test-logs/motion/.
 set -u
 cd "$(dirname "$0")/../.."
+# its sim and motion process on robot id ROBOT_ID+230 (default 9430)
+id=$(( ${ROBOT_ID:-9200} + 230 ))
 export ROBOT=hoap3
 source Run/env.sh
 source Tests/tap_lib.sh
 LOGDIR="$HRP_ROOT/build/test-logs/motion"
 mkdir -p "$LOGDIR"
-id=$(( ${ROBOT_ID:-9200} + 95 ))
-[ "${ROBOT_ID:-1}" != 1 ] && id=$ROBOT_ID
 PATTERN="$LOGDIR/hoap3_pattern.csv"
 LOG="$LOGDIR/hoap3_pattern_play.csv"
 k=0; failed=0
