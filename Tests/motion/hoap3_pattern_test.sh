@@ -9,8 +9,8 @@
 # log and two PNGs (the left leg's joint angles, the ZMP) into build/test-logs/motion/.
 set -u
 cd "$(dirname "$0")/../.."
-# its sim and motion process on robot id ROBOT_ID+230 (default 9430)
-id=$(( ${ROBOT_ID:-9200} + 230 ))
+# its sim and motion process on robot id ROBOT_ID+98 (default 9298)
+id=$(( ${ROBOT_ID:-9200} + 98 ))
 export ROBOT=hoap3
 source Run/env.sh
 source Tests/tap_lib.sh
