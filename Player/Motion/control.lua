@@ -3,9 +3,10 @@
 -- driven by tests and benchmarks directly.
 --
 -- States (Lib/Motion.lua's STATES, one small file each in Player/Motion/states/): relax, sit,
--- stance, walk, kick_left, kick_right, falling, standup_front, standup_back, wbc, touch. Requests (relax,
--- sit, stand, walk, kick_left, kick_right, wbc, touch) are wishes: `ctl.want` holds the last one and the
--- states move towards it (relax at once from anywhere; the rest through stance).
+-- stance, walk, kick_left, kick_right, falling, standup_front, standup_back, wbc, pattern, touch.
+-- Requests (relax, sit, stand, walk, kick_left, kick_right, wbc, pattern, touch) are wishes: `ctl.want`
+-- holds the last one and the states move towards it (relax at once from anywhere; the rest through
+-- stance). 'pattern' takes a trajectory file (Lib/trajectory.lua), read when it is asked for: ctl.pattern.
 --
 -- Who drives a joint (as ROBOTIS' motion modules: each owns the joints it drives): every tick
 -- starts from the hold pose (ctl.q, ctl.h: the last commands, or what the actuators held when the
@@ -28,6 +29,7 @@ local WalkKick = require('Motion.walk_kick')
 local balance = require('Motion.balance')
 local capture = require('Motion.capture')
 local step_adjust = require('Motion.step_adjust')
+local trajectory = require('trajectory')
 
 local abs = math.abs
 
@@ -39,7 +41,7 @@ local TRANSITIONS = {
   relax = { sit = 'sit', stand = 'stance', walk = 'stance', kick_left = 'stance', kick_right = 'stance' },
   sit = { stand = 'stance', walk = 'stance', kick_left = 'stance', kick_right = 'stance' },
   stance = { sit = 'sit', walk = 'walk', kick_left = 'kick_left', kick_right = 'kick_right', wbc = 'wbc',
-    touch = 'touch', fall = 'falling' },
+    pattern = 'pattern', touch = 'touch', fall = 'falling' },
   walk = { done = 'stance', fall = 'falling' },
   kick_left = { done = 'stance', fall = 'falling' },
   kick_right = { done = 'stance', fall = 'falling' },
@@ -47,11 +49,13 @@ local TRANSITIONS = {
   standup_front = { done = 'stance', fall = 'falling' },
   standup_back = { done = 'stance', fall = 'falling' },
   wbc = { done = 'stance', fall = 'falling' },
+  pattern = { done = 'stance', fall = 'falling' },
   touch = { done = 'stance', fall = 'falling' },
   ['*'] = { relax = 'relax' },
 }
 -- states in which a fall is watched for (the stand-ups check the result themselves)
-local WATCH_FALL = { stance = true, walk = true, kick_left = true, kick_right = true, wbc = true, touch = true }
+local WATCH_FALL = { stance = true, walk = true, kick_left = true, kick_right = true, wbc = true, pattern = true,
+  touch = true }
 
 local ROLES = { legs = true, arms = true, head = true, all = true }
 
@@ -259,9 +263,18 @@ function Ctl:head_angles(q)
   for k = 1, #hd do q[hd[k]] = self.head[k] end
 end
 
--- A request by name (see Lib/Motion.lua); unknown names are ignored (returns false).
-function Ctl:request(name)
+-- A request by name (see Lib/Motion.lua); unknown names are ignored (returns false). 'pattern'
+-- takes args.file, a trajectory file for this body (Lib/trajectory.lua): read here, a bad one is
+-- refused (returns false and the error naming the file and line) and the wish stays as it was.
+function Ctl:request(name, args)
   if Motion.REQUESTS[name] == nil then return false end
+  if name == 'pattern' then
+    local file = type(args) == 'table' and args.file
+    if type(file) ~= 'string' or file == '' then return false, "request 'pattern': no trajectory file given" end
+    local ok, tr = pcall(trajectory.load, file, self.robot)
+    if not ok then return false, tostring(tr) end
+    self.pattern = tr
+  end
   self.want = name
   if name == 'relax' then self.machine:event('relax', self) end
   return true

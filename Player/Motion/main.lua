@@ -3,13 +3,15 @@
 -- the sim's lockstep (each tick is finished before the DCM steps). `./run_main motion` starts it
 -- alone; `luajit Player/Motion/main.lua [--initial STATE]` with the env of Run/env.sh too.
 --
--- Inputs through the `motion` shm block (Lib/Motion.lua, Lib/Walk.lua): request/request_seq,
--- velocity, head_command, kick_* (a kick out of the walk: Walk.kick; out: kick_ack, kick_phase,
--- kicks), param_* (walk parameter changes and config re-reads), taken and
+-- Inputs through the `motion` shm block (Lib/Motion.lua, Lib/Walk.lua): request/request_seq and
+-- request_arg (a request's argument: the pattern's file), velocity, head_command, kick_* (a kick out
+-- of the walk: Walk.kick; out: kick_ack, kick_phase, kicks), param_* (walk parameter changes and
+-- config re-reads), taken and
 -- taken_command (joints a caller took with Body.set_command & co.: written with the caller's
 -- command until Body.release or a request whose state owns them). Outputs: state, walking, fallen,
 -- falls, fall_time, odometry, walk_velocity, the walk's COM, ZMP, feet and capture error, zmp and
--- zmp_contact (balance), owner (per joint: 0 held, 1 motion, 2 a caller), tick.
+-- zmp_contact (balance), pattern_time (the state pattern's time in its file), owner (per joint: 0
+-- held, 1 motion, 2 a caller), tick.
 -- Only the joints the current state owns (or a caller took) are written: the others hold whatever
 -- the actuator block has (Player/Motion/control.lua). A joint in torque mode (Body.set_torque) is
 -- not written at all: its caller's torque drives it. A state drives a joint in torque mode by
@@ -163,10 +165,15 @@ while true do
     if motion.request_seq[0] ~= last_request then
       last_request = motion.request_seq[0]
       local s = Motion.STATES[motion.request[0] + 1]
+      local arg = ffi.string(motion.request_arg, 256):gsub('%z.*$', '')
       for name, state in pairs(Motion.REQUESTS) do
         if state == s then
-          for _, i in ipairs(ctl:needs(name)) do motion.taken[i - 1], ctl.taken[i] = 0, false end
-          ctl:request(name)
+          local ok, err = ctl:request(name, { file = arg })
+          if ok then
+            for _, i in ipairs(ctl:needs(name)) do motion.taken[i - 1], ctl.taken[i] = 0, false end
+          elseif err then
+            io.stderr:write('motion: ', err, '\n')
+          end
         end
       end
     end
@@ -232,6 +239,7 @@ while true do
       m.capture_error[0], m.capture_error[1] = e and e[1] or 0, e and e[2] or 0
       m.walk_steps[0], m.steps_adjusted[0] = w.stats.steps, w.stats.adjusted or 0
       m.kick_phase[0], m.kicks[0] = ctl.walk_kick:phase(), ctl.walk_kick.count
+      m.pattern_time[0] = ctl.pattern_time or -1
       local b = ctl.balance
       m.zmp[0], m.zmp[1], m.zmp[2], m.zmp[3] = b.zmp[1], b.zmp[2], w.zmp[1], w.zmp[2]
       m.zmp[4], m.zmp[5], m.zmp_contact[0] = b.shift[1], b.shift[2], b.contact and 1 or 0

@@ -53,6 +53,12 @@ end
 
 function Preview:step_time(v) return self:step_samples(v) * self.dt end
 
+-- the ZMP reference from sample k0 to k1 at c (x, y)
+local function fill_const(self, k0, k1, c)
+  local rx, ry, size = self.ring[1], self.ring[2], self.ring_size
+  for k = k0, k1 do local i = k % size rx[i], ry[i] = c[1], c[2] end
+end
+
 -- A walk starts with a lead-in in double support: the first step is planned at once, to begin
 -- `preview.lead` s later, so that the COM can move before the ZMP must (without it, the first
 -- ticks ask for a ZMP far outside the feet).
@@ -67,16 +73,23 @@ function Preview:start()
 end
 
 -- After the last step the COM comes to rest under the controller (the reference holds the feet's
--- middle) for `preview.lead` s before it is simply held there: no jump into stance.
+-- middle) for `preview.lead` s before it is simply held there: no jump into stance. The window
+-- reaches past what the last step planned while it settles: each tick writes the window's last
+-- sample with the middle (the ring's older samples there belong to steps long past).
 function Preview:begin_step()
   local stepping = walk.Walk.begin_step(self)
-  if not stepping and self.ctl then self.settle = max(0, floor(self.p.preview.lead / self.dt + 0.5)) end
+  if not stepping and self.ctl then
+    self.settle = max(0, floor(self.p.preview.lead / self.dt + 0.5))
+    self.rest = { self.uTorso2[1], self.uTorso2[2] }
+  end
   return stepping
 end
 
 function Preview:hold_com(x, y, dt)
   if self.settle > 0 and self.ctl and dt and dt > 0 then
     self.settle = self.settle - 1
+    local last = self.k - 1 + self.K.N
+    fill_const(self, last, last, self.rest)
     local cx, cxd, zx, cy, cyd, zy = self:com_at()
     self.com[1], self.com[2], self.comd[1], self.comd[2] = cx, cy, cxd, cyd
     self.zmp[1], self.zmp[2] = zx, zy
@@ -144,11 +157,6 @@ local function fill_step(self, k0, n, a, s, b, ph1, ph2)
     local i = (k0 + j) % size
     rx[i], ry[i] = x, y
   end
-end
-
-local function fill_const(self, k0, k1, c)
-  local rx, ry, size = self.ring[1], self.ring[2], self.ring_size
-  for k = k0, k1 do local i = k % size rx[i], ry[i] = c[1], c[2] end
 end
 
 local function feet_together(p, l, r)

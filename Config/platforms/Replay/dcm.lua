@@ -13,7 +13,7 @@ return {
   -- velocity, head angles and kicks out of the walk into the motion block; a REPL's parameter requests
   -- and taken joints):
   -- left to them, so that the behavior reads back what it wrote itself, as it did when recorded
-  leave = { 'motion.request', 'motion.request_seq', 'motion.velocity', 'motion.head_command',
+  leave = { 'motion.request', 'motion.request_seq', 'motion.request_arg', 'motion.velocity', 'motion.head_command',
     'motion.param_seq', 'motion.param_name', 'motion.param_count', 'motion.param_value',
     'motion.kick_request', 'motion.kick_ball', 'motion.kick_seq', 'motion.taken', 'motion.taken_command' },
   camera_field = 'yuyv',        -- the raw image field the recorder compresses (recorder.camera_field)
