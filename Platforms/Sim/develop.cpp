@@ -205,8 +205,7 @@ void blur_row(const Develop &d, int n, const uint8_t *src, const int32_t *map, i
 struct Planes {
   int W = 0, H = 0, P = 0, stride = 0;
   std::vector<uint8_t> y, u, v;
-  // the scratch's planes (its own size; with a map), each pixel's U and V those of its pair
-  std::vector<uint8_t> sy, su, sv;
+  std::vector<uint8_t> tmp_y, tmp_u, tmp_v;   // a run's pixels from its pair's first on
   void fill(const uint8_t *src, const LensMap *map, int W_, int H_, int P_) {
     W = W_;
     H = H_;
@@ -224,34 +223,38 @@ struct Planes {
         split(src + (size_t)r * W * 2, W, &y[o], &u[o], &v[o]);
       }
     } else {
-      const int SW = map->width, SH = map->height;
-      if (sy.size() < (size_t)SW * SH) {
-        sy.resize((size_t)SW * SH);
-        su.resize(sy.size());
-        sv.resize(sy.size());
+      // the frame's planes straight from the scratch: a regular run split from its first scratch
+      // pixel on (one that starts on a pair's second pixel from that pair's first, through a row
+      // buffer, one pixel later), the rest pixel by pixel
+      if (tmp_y.size() < (size_t)W + 2) {
+        tmp_y.resize(W + 2);
+        tmp_u.resize(W + 2);
+        tmp_v.resize(W + 2);
       }
-      for (int r = 0; r < SH; r++) {
-        const size_t o = (size_t)r * SW;
-        split(src + o * 2, SW, &sy[o], &su[o], &sv[o]);
-      }
-      // the frame's planes: the runs copied, the rest pixel by pixel
       for (int r = 0; r < H; r++) {
         const size_t o = (size_t)r * stride + P;
         for (int k = map->row_runs[r]; k < map->row_runs[r + 1]; k++) {
           const LensMap::Run &run = map->runs[k];
+          const size_t f = o + run.u;
+          const int n = 2 * run.pairs;
           if (run.regular) {
-            const size_t s = run.src / 2, n = 2 * run.pairs;
-            memcpy(&y[o + run.u], &sy[s], n);
-            memcpy(&u[o + run.u], &su[s], n);
-            memcpy(&v[o + run.u], &sv[s], n);
+            if ((run.src & 3) == 0) {
+              split(src + run.src, n, &y[f], &u[f], &v[f]);
+            } else {
+              split(src + run.src - 2, n + 2, tmp_y.data(), tmp_u.data(), tmp_v.data());
+              memcpy(&y[f], tmp_y.data() + 1, n);
+              memcpy(&u[f], tmp_u.data() + 1, n);
+              memcpy(&v[f], tmp_v.data() + 1, n);
+            }
             continue;
           }
           const int32_t *os = map->other.data() + run.src;
-          for (int i = 0; i < 2 * run.pairs; i++) {
-            const int s = os[i] / 2;
-            y[o + run.u + i] = sy[s];
-            u[o + run.u + i] = su[s];
-            v[o + run.u + i] = sv[s];
+          for (int i = 0; i < n; i++) {
+            const int sa = os[i];
+            const uint8_t *c = src + (sa & ~3);
+            y[f + i] = src[sa];
+            u[f + i] = c[1];
+            v[f + i] = c[3];
           }
         }
       }
