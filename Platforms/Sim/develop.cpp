@@ -203,8 +203,9 @@ void blur_row(const Develop &d, int n, const uint8_t *src, const int32_t *map, i
 // (|dx| <= P) read whole rows without clamping; then each output row sums its samples' rows 16
 // pixels at a time. The same pixels as the sample by sample loop.
 struct Planes {
-  int W = 0, H = 0, P = 0, stride = 0;
-  std::vector<uint8_t> y, u, v;
+  int W = 0, H = 0, P = 0, stride = 0, Q = 0, cstride = 0;
+  std::vector<uint8_t> y, u, v;   // the frame's pixels (y padded by P on both sides)
+  std::vector<uint16_t> ce, co;   // chroma pairs (below)
   std::vector<uint8_t> tmp_y, tmp_u, tmp_v;   // a run's pixels from its pair's first on
   void fill(const uint8_t *src, const LensMap *map, int W_, int H_, int P_) {
     W = W_;
@@ -259,10 +260,35 @@ struct Planes {
         }
       }
     }
+    // the chroma of each pixel as U | V << 8, even pixels in ce, odd ones in co, padded with the edge
+    // pixel's: a pair's first pixel's samples at offset dx are ce or co (dx's parity) from dx >> 1 on
+    Q = P / 2 + 1;
+    cstride = W / 2 + 2 * Q;
+    if (ce.size() < (size_t)cstride * H) {
+      ce.resize((size_t)cstride * H);
+      co.resize(ce.size());
+    }
+    const __m128i low = _mm_set1_epi16(0x00ff), high = _mm_set1_epi16((short)0xff00);
     for (int r = 0; r < H; r++) {
-      for (uint8_t *p : {&y[(size_t)r * stride + P], &u[(size_t)r * stride + P], &v[(size_t)r * stride + P]}) {
-        memset(p - P, p[0], P);
-        memset(p + W, p[W - 1], P);
+      uint8_t *py = &y[(size_t)r * stride + P];
+      memset(py - P, py[0], P);
+      memset(py + W, py[W - 1], P);
+      const uint8_t *pu = &u[(size_t)r * stride + P], *pv = &v[(size_t)r * stride + P];
+      uint16_t *pe = &ce[(size_t)r * cstride + Q], *po = &co[(size_t)r * cstride + Q];
+      int i = 0;
+      for (; i + 16 <= W; i += 16) {
+        const __m128i U = _mm_loadu_si128((const __m128i *)(pu + i)), V = _mm_loadu_si128((const __m128i *)(pv + i));
+        _mm_storeu_si128((__m128i *)(pe + i / 2), _mm_or_si128(_mm_and_si128(U, low), _mm_slli_epi16(V, 8)));
+        _mm_storeu_si128((__m128i *)(po + i / 2), _mm_or_si128(_mm_srli_epi16(U, 8), _mm_and_si128(V, high)));
+      }
+      for (; i < W; i += 2) {
+        pe[i / 2] = (uint16_t)(pu[i] | pv[i] << 8);
+        po[i / 2] = (uint16_t)(pu[i + 1] | pv[i + 1] << 8);
+      }
+      const uint16_t first = pe[0], last = po[W / 2 - 1];
+      for (int j = 1; j <= Q; j++) {
+        pe[-j] = po[-j] = first;
+        pe[W / 2 - 1 + j] = po[W / 2 - 1 + j] = last;
       }
     }
   }
@@ -296,48 +322,42 @@ struct Planes {
 };
 
 void blur_row(const Develop &d, int n, const Planes &pl, int v, uint8_t *row) {
-  const uint8_t *ry[Develop::kMaxTaps], *ru[Develop::kMaxTaps], *rv[Develop::kMaxTaps];
+  const uint8_t *ry[Develop::kMaxTaps];
+  const uint16_t *rc[Develop::kMaxTaps];   // pair j's chroma sample k: rc[k][j]
   for (int k = 0; k < n; k++) {
-    const size_t off = (size_t)std::min(pl.H - 1, std::max(0, v + d.dy[k])) * pl.stride + pl.P + d.dx[k];
-    ry[k] = pl.y.data() + off;
-    ru[k] = pl.u.data() + off;
-    rv[k] = pl.v.data() + off;
+    const size_t r = (size_t)std::min(pl.H - 1, std::max(0, v + d.dy[k]));
+    ry[k] = pl.y.data() + r * pl.stride + pl.P + d.dx[k];
+    rc[k] = (d.dx[k] & 1 ? pl.co : pl.ce).data() + r * pl.cstride + pl.Q + (d.dx[k] >> 1);
   }
   // (s + n / 2) / n as ((s + n / 2) M) >> 16, M = 65536 / n + 1: exact for every s <= 8 * 255 + 4
   // (checked for every such s and n = 2..8)
   const __m128i m = _mm_set1_epi16((short)(uint16_t)(65536 / n + 1)), h = _mm_set1_epi16((short)(n / 2));
-  const __m128i zero = _mm_setzero_si128(), even = _mm_set1_epi32(0x0000ffff);
+  const __m128i zero = _mm_setzero_si128(), low = _mm_set1_epi16(0x00ff);
   const int W = pl.W;
   int u = 0;
   for (; u + 16 <= W; u += 16) {
-    __m128i y0 = zero, y1 = zero, u0 = zero, u1 = zero, v0 = zero, v1 = zero;
+    __m128i y0 = zero, y1 = zero, us = zero, vs = zero;
     for (int k = 0; k < n; k++) {
       const __m128i a = _mm_loadu_si128((const __m128i *)(ry[k] + u));
-      const __m128i b = _mm_loadu_si128((const __m128i *)(ru[k] + u));
-      const __m128i c = _mm_loadu_si128((const __m128i *)(rv[k] + u));
+      const __m128i c = _mm_loadu_si128((const __m128i *)(rc[k] + u / 2));   // 8 pairs' U | V << 8
       y0 = _mm_add_epi16(y0, _mm_unpacklo_epi8(a, zero));
       y1 = _mm_add_epi16(y1, _mm_unpackhi_epi8(a, zero));
-      u0 = _mm_add_epi16(u0, _mm_unpacklo_epi8(b, zero));
-      u1 = _mm_add_epi16(u1, _mm_unpackhi_epi8(b, zero));
-      v0 = _mm_add_epi16(v0, _mm_unpacklo_epi8(c, zero));
-      v1 = _mm_add_epi16(v1, _mm_unpackhi_epi8(c, zero));
+      us = _mm_add_epi16(us, _mm_and_si128(c, low));
+      vs = _mm_add_epi16(vs, _mm_srli_epi16(c, 8));
     }
     auto mean = [&](__m128i s) { return _mm_mulhi_epu16(_mm_add_epi16(s, h), m); };
-    // YUYV: each pair's U and V from its first pixel's samples
-    auto pack = [&](__m128i ys, __m128i us, __m128i vs) {
-      const __m128i c = _mm_or_si128(_mm_and_si128(mean(us), even), _mm_slli_epi32(mean(vs), 16));
-      return _mm_or_si128(mean(ys), _mm_slli_epi16(c, 8));
-    };
-    _mm_storeu_si128((__m128i *)(row + 2 * u), pack(y0, u0, v0));
-    _mm_storeu_si128((__m128i *)(row + 2 * u + 16), pack(y1, u1, v1));
+    const __m128i mu = mean(us), mv = mean(vs);
+    _mm_storeu_si128((__m128i *)(row + 2 * u), _mm_or_si128(mean(y0), _mm_slli_epi16(_mm_unpacklo_epi16(mu, mv), 8)));
+    _mm_storeu_si128((__m128i *)(row + 2 * u + 16),
+                     _mm_or_si128(mean(y1), _mm_slli_epi16(_mm_unpackhi_epi16(mu, mv), 8)));
   }
   for (; u < W; u += 2) {
     int y0 = 0, y1 = 0, us = 0, vs = 0;
     for (int k = 0; k < n; k++) {
       y0 += ry[k][u];
       y1 += ry[k][u + 1];
-      us += ru[k][u];
-      vs += rv[k][u];
+      us += rc[k][u / 2] & 0xff;
+      vs += rc[k][u / 2] >> 8;
     }
     put_mean(row + 2 * u, y0, us, y1, vs, n);
   }
