@@ -198,54 +198,51 @@ void blur_row(const Develop &d, int n, const uint8_t *src, const int32_t *map, i
   }
 }
 #else
-// The blur on planes: Y, U and V of every frame pixel through the map (U and V those of its scratch
-// pixel's pair), each row padded by P copies of its edge pixels on both sides, so that the samples
-// (|dx| <= P) read whole rows without clamping; then each output row sums its samples' rows 16
-// pixels at a time. The same pixels as the sample by sample loop.
+// The blur on planes: the luma of every frame pixel through the map, and its chroma (its scratch
+// pixel's pair's) as U | V << 8 with the even pixels in ce, the odd ones in co, each row padded with
+// copies of its edge pixels on both sides (P lumas, Q chroma words), so that the samples (|dx| <= P)
+// read whole rows without clamping: a pair's first pixel's sample at offset dx is ce or co (dx's
+// parity) from dx >> 1 on. Then each output row sums its samples' rows 16 pixels at a time. The
+// same pixels as the sample by sample loop.
 struct Planes {
   int W = 0, H = 0, P = 0, stride = 0, Q = 0, cstride = 0;
-  std::vector<uint8_t> y, u, v;   // the frame's pixels (y padded by P on both sides)
-  std::vector<uint16_t> ce, co;   // chroma pairs (below)
-  std::vector<uint8_t> tmp_y, tmp_u, tmp_v;   // a run's pixels from its pair's first on
+  std::vector<uint8_t> y;
+  std::vector<uint16_t> ce, co;
   void fill(const uint8_t *src, const LensMap *map, int W_, int H_, int P_) {
     W = W_;
     H = H_;
     P = P_;
     stride = W + 2 * P;
-    const size_t size = (size_t)stride * H;
-    if (y.size() < size) {
-      y.resize(size);
-      u.resize(size);
-      v.resize(size);
+    Q = P / 2 + 1;
+    cstride = W / 2 + 2 * Q;
+    if (y.size() < (size_t)stride * H) y.resize((size_t)stride * H);
+    if (ce.size() < (size_t)cstride * H) {
+      ce.resize((size_t)cstride * H);
+      co.resize(ce.size());
     }
-    if (!map) {
-      for (int r = 0; r < H; r++) {
-        const size_t o = (size_t)r * stride + P;
-        split(src + (size_t)r * W * 2, W, &y[o], &u[o], &v[o]);
-      }
-    } else {
-      // the frame's planes straight from the scratch: a regular run split from its first scratch
-      // pixel on (one that starts on a pair's second pixel from that pair's first, through a row
-      // buffer, one pixel later), the rest pixel by pixel
-      if (tmp_y.size() < (size_t)W + 2) {
-        tmp_y.resize(W + 2);
-        tmp_u.resize(W + 2);
-        tmp_v.resize(W + 2);
-      }
-      for (int r = 0; r < H; r++) {
-        const size_t o = (size_t)r * stride + P;
+    for (int r = 0; r < H; r++) {
+      uint8_t *py = &y[(size_t)r * stride + P];
+      uint16_t *pe = &ce[(size_t)r * cstride + Q], *po = &co[(size_t)r * cstride + Q];
+      if (!map) {
+        const uint8_t *row = src + (size_t)r * W * 2;
+        lumas(row, W, py);
+        chromas(row, W / 2, pe);
+        memcpy(po, pe, W);   // both pixels of a pair show its chroma
+      } else {
+        // a regular run from its first scratch pixel on: on an even one the frame's pairs are the
+        // scratch's; on an odd one each frame pair's first pixel is a scratch pair's second (that
+        // pair's chroma), its second pixel the next pair's first
         for (int k = map->row_runs[r]; k < map->row_runs[r + 1]; k++) {
           const LensMap::Run &run = map->runs[k];
-          const size_t f = o + run.u;
-          const int n = 2 * run.pairs;
+          const int u = run.u, n = 2 * run.pairs;
           if (run.regular) {
+            lumas(src + run.src, n, py + u);
             if ((run.src & 3) == 0) {
-              split(src + run.src, n, &y[f], &u[f], &v[f]);
+              chromas(src + run.src, run.pairs, pe + u / 2);
+              memcpy(po + u / 2, pe + u / 2, (size_t)2 * run.pairs);
             } else {
-              split(src + run.src - 2, n + 2, tmp_y.data(), tmp_u.data(), tmp_v.data());
-              memcpy(&y[f], tmp_y.data() + 1, n);
-              memcpy(&u[f], tmp_u.data() + 1, n);
-              memcpy(&v[f], tmp_v.data() + 1, n);
+              chromas(src + run.src - 2, run.pairs, pe + u / 2);
+              chromas(src + run.src + 2, run.pairs, po + u / 2);
             }
             continue;
           }
@@ -253,38 +250,13 @@ struct Planes {
           for (int i = 0; i < n; i++) {
             const int sa = os[i];
             const uint8_t *c = src + (sa & ~3);
-            y[f + i] = src[sa];
-            u[f + i] = c[1];
-            v[f + i] = c[3];
+            py[u + i] = src[sa];
+            ((u + i) & 1 ? po : pe)[(u + i) / 2] = (uint16_t)(c[1] | c[3] << 8);
           }
         }
       }
-    }
-    // the chroma of each pixel as U | V << 8, even pixels in ce, odd ones in co, padded with the edge
-    // pixel's: a pair's first pixel's samples at offset dx are ce or co (dx's parity) from dx >> 1 on
-    Q = P / 2 + 1;
-    cstride = W / 2 + 2 * Q;
-    if (ce.size() < (size_t)cstride * H) {
-      ce.resize((size_t)cstride * H);
-      co.resize(ce.size());
-    }
-    const __m128i low = _mm_set1_epi16(0x00ff), high = _mm_set1_epi16((short)0xff00);
-    for (int r = 0; r < H; r++) {
-      uint8_t *py = &y[(size_t)r * stride + P];
       memset(py - P, py[0], P);
       memset(py + W, py[W - 1], P);
-      const uint8_t *pu = &u[(size_t)r * stride + P], *pv = &v[(size_t)r * stride + P];
-      uint16_t *pe = &ce[(size_t)r * cstride + Q], *po = &co[(size_t)r * cstride + Q];
-      int i = 0;
-      for (; i + 16 <= W; i += 16) {
-        const __m128i U = _mm_loadu_si128((const __m128i *)(pu + i)), V = _mm_loadu_si128((const __m128i *)(pv + i));
-        _mm_storeu_si128((__m128i *)(pe + i / 2), _mm_or_si128(_mm_and_si128(U, low), _mm_slli_epi16(V, 8)));
-        _mm_storeu_si128((__m128i *)(po + i / 2), _mm_or_si128(_mm_srli_epi16(U, 8), _mm_and_si128(V, high)));
-      }
-      for (; i < W; i += 2) {
-        pe[i / 2] = (uint16_t)(pu[i] | pv[i] << 8);
-        po[i / 2] = (uint16_t)(pu[i + 1] | pv[i + 1] << 8);
-      }
       const uint16_t first = pe[0], last = po[W / 2 - 1];
       for (int j = 1; j <= Q; j++) {
         pe[-j] = po[-j] = first;
@@ -292,32 +264,31 @@ struct Planes {
       }
     }
   }
-  // n pixels (even) of YUYV into Y, U, V planes, each pair's chroma to both of its pixels
-  static void split(const uint8_t *p, int n, uint8_t *py, uint8_t *pu, uint8_t *pv) {
-    const __m128i low = _mm_set1_epi16(0x00ff), even = _mm_set1_epi32(0x0000ffff);
+  // the lumas of n pixels (even) of YUYV
+  static void lumas(const uint8_t *p, int n, uint8_t *out) {
+    const __m128i low = _mm_set1_epi16(0x00ff);
     int i = 0;
     for (; i + 16 <= n; i += 16) {
       const __m128i a = _mm_loadu_si128((const __m128i *)(p + 2 * i));
       const __m128i b = _mm_loadu_si128((const __m128i *)(p + 2 * i + 16));
-      _mm_storeu_si128((__m128i *)(py + i), _mm_packus_epi16(_mm_and_si128(a, low), _mm_and_si128(b, low)));
-      const __m128i ca = _mm_srli_epi16(a, 8), cb = _mm_srli_epi16(b, 8);   // U V U V ...
-      auto dup_u = [&](__m128i c) {
-        c = _mm_and_si128(c, even);
-        return _mm_or_si128(c, _mm_slli_epi32(c, 16));
-      };
-      auto dup_v = [&](__m128i c) {
-        c = _mm_srli_epi32(c, 16);
-        return _mm_or_si128(c, _mm_slli_epi32(c, 16));
-      };
-      _mm_storeu_si128((__m128i *)(pu + i), _mm_packus_epi16(dup_u(ca), dup_u(cb)));
-      _mm_storeu_si128((__m128i *)(pv + i), _mm_packus_epi16(dup_v(ca), dup_v(cb)));
+      _mm_storeu_si128((__m128i *)(out + i), _mm_packus_epi16(_mm_and_si128(a, low), _mm_and_si128(b, low)));
     }
-    for (; i < n; i += 2) {
-      py[i] = p[2 * i];
-      py[i + 1] = p[2 * i + 2];
-      pu[i] = pu[i + 1] = p[2 * i + 1];
-      pv[i] = pv[i + 1] = p[2 * i + 3];
+    for (; i < n; i++) out[i] = p[2 * i];
+  }
+  // the chroma U | V << 8 of n pairs of YUYV
+  static void chromas(const uint8_t *p, int n, uint16_t *out) {
+    const __m128i lo = _mm_set1_epi32(0xff), hi = _mm_set1_epi32(0xff00);
+    int i = 0;
+    for (; i + 8 <= n; i += 8) {
+      auto c4 = [&](__m128i w) {
+        const __m128i c = _mm_or_si128(_mm_and_si128(_mm_srli_epi32(w, 8), lo), _mm_and_si128(_mm_srli_epi32(w, 16), hi));
+        return _mm_srai_epi32(_mm_slli_epi32(c, 16), 16);   // sign-extended: packs keeps the 16 bits
+      };
+      const __m128i a = c4(_mm_loadu_si128((const __m128i *)(p + 4 * i)));
+      const __m128i b = c4(_mm_loadu_si128((const __m128i *)(p + 4 * i + 16)));
+      _mm_storeu_si128((__m128i *)(out + i), _mm_packs_epi32(a, b));
     }
+    for (; i < n; i++) out[i] = (uint16_t)(p[4 * i + 1] | p[4 * i + 3] << 8);
   }
 };
 
