@@ -281,7 +281,8 @@ struct Planes {
     int i = 0;
     for (; i + 8 <= n; i += 8) {
       auto c4 = [&](__m128i w) {
-        const __m128i c = _mm_or_si128(_mm_and_si128(_mm_srli_epi32(w, 8), lo), _mm_and_si128(_mm_srli_epi32(w, 16), hi));
+        const __m128i c =
+            _mm_or_si128(_mm_and_si128(_mm_srli_epi32(w, 8), lo), _mm_and_si128(_mm_srli_epi32(w, 16), hi));
         return _mm_srai_epi32(_mm_slli_epi32(c, 16), 16);   // sign-extended: packs keeps the 16 bits
       };
       const __m128i a = c4(_mm_loadu_si128((const __m128i *)(p + 4 * i)));
