@@ -198,143 +198,138 @@ void blur_row(const Develop &d, int n, const uint8_t *src, const int32_t *map, i
   }
 }
 #else
-// The blur on planes: Y, U and V of every frame pixel through the map (U and V those of its scratch
-// pixel's pair), each row padded by P copies of its edge pixels on both sides, so that the samples
-// (|dx| <= P) read whole rows without clamping; then each output row sums its samples' rows 16
-// pixels at a time. The same pixels as the sample by sample loop.
+// The blur on planes: the luma of every frame pixel through the map, and its chroma (its scratch
+// pixel's pair's) as U | V << 8 with the even pixels in ce, the odd ones in co, each row padded with
+// copies of its edge pixels on both sides (P lumas, Q chroma words), so that the samples (|dx| <= P)
+// read whole rows without clamping: a pair's first pixel's sample at offset dx is ce or co (dx's
+// parity) from dx >> 1 on. Then each output row sums its samples' rows 16 pixels at a time. The
+// same pixels as the sample by sample loop.
 struct Planes {
-  int W = 0, H = 0, P = 0, stride = 0;
-  std::vector<uint8_t> y, u, v;
-  // the scratch's planes (its own size; with a map), each pixel's U and V those of its pair
-  std::vector<uint8_t> sy, su, sv;
+  int W = 0, H = 0, P = 0, stride = 0, Q = 0, cstride = 0;
+  std::vector<uint8_t> y;
+  std::vector<uint16_t> ce, co;
   void fill(const uint8_t *src, const LensMap *map, int W_, int H_, int P_) {
     W = W_;
     H = H_;
     P = P_;
     stride = W + 2 * P;
-    const size_t size = (size_t)stride * H;
-    if (y.size() < size) {
-      y.resize(size);
-      u.resize(size);
-      v.resize(size);
+    Q = P / 2 + 1;
+    cstride = W / 2 + 2 * Q;
+    if (y.size() < (size_t)stride * H) y.resize((size_t)stride * H);
+    if (ce.size() < (size_t)cstride * H) {
+      ce.resize((size_t)cstride * H);
+      co.resize(ce.size());
     }
-    if (!map) {
-      for (int r = 0; r < H; r++) {
-        const size_t o = (size_t)r * stride + P;
-        split(src + (size_t)r * W * 2, W, &y[o], &u[o], &v[o]);
-      }
-    } else {
-      const int SW = map->width, SH = map->height;
-      if (sy.size() < (size_t)SW * SH) {
-        sy.resize((size_t)SW * SH);
-        su.resize(sy.size());
-        sv.resize(sy.size());
-      }
-      for (int r = 0; r < SH; r++) {
-        const size_t o = (size_t)r * SW;
-        split(src + o * 2, SW, &sy[o], &su[o], &sv[o]);
-      }
-      // the frame's planes: the runs copied, the rest pixel by pixel
-      for (int r = 0; r < H; r++) {
-        const size_t o = (size_t)r * stride + P;
+    for (int r = 0; r < H; r++) {
+      uint8_t *py = &y[(size_t)r * stride + P];
+      uint16_t *pe = &ce[(size_t)r * cstride + Q], *po = &co[(size_t)r * cstride + Q];
+      if (!map) {
+        const uint8_t *row = src + (size_t)r * W * 2;
+        lumas(row, W, py);
+        chromas(row, W / 2, pe);
+        memcpy(po, pe, W);   // both pixels of a pair show its chroma
+      } else {
+        // a regular run from its first scratch pixel on: on an even one the frame's pairs are the
+        // scratch's; on an odd one each frame pair's first pixel is a scratch pair's second (that
+        // pair's chroma), its second pixel the next pair's first
         for (int k = map->row_runs[r]; k < map->row_runs[r + 1]; k++) {
           const LensMap::Run &run = map->runs[k];
+          const int u = run.u, n = 2 * run.pairs;
           if (run.regular) {
-            const size_t s = run.src / 2, n = 2 * run.pairs;
-            memcpy(&y[o + run.u], &sy[s], n);
-            memcpy(&u[o + run.u], &su[s], n);
-            memcpy(&v[o + run.u], &sv[s], n);
+            lumas(src + run.src, n, py + u);
+            if ((run.src & 3) == 0) {
+              chromas(src + run.src, run.pairs, pe + u / 2);
+              memcpy(po + u / 2, pe + u / 2, (size_t)2 * run.pairs);
+            } else {
+              chromas(src + run.src - 2, run.pairs, pe + u / 2);
+              chromas(src + run.src + 2, run.pairs, po + u / 2);
+            }
             continue;
           }
           const int32_t *os = map->other.data() + run.src;
-          for (int i = 0; i < 2 * run.pairs; i++) {
-            const int s = os[i] / 2;
-            y[o + run.u + i] = sy[s];
-            u[o + run.u + i] = su[s];
-            v[o + run.u + i] = sv[s];
+          for (int i = 0; i < n; i++) {
+            const int sa = os[i];
+            const uint8_t *c = src + (sa & ~3);
+            py[u + i] = src[sa];
+            ((u + i) & 1 ? po : pe)[(u + i) / 2] = (uint16_t)(c[1] | c[3] << 8);
           }
         }
       }
-    }
-    for (int r = 0; r < H; r++) {
-      for (uint8_t *p : {&y[(size_t)r * stride + P], &u[(size_t)r * stride + P], &v[(size_t)r * stride + P]}) {
-        memset(p - P, p[0], P);
-        memset(p + W, p[W - 1], P);
+      memset(py - P, py[0], P);
+      memset(py + W, py[W - 1], P);
+      const uint16_t first = pe[0], last = po[W / 2 - 1];
+      for (int j = 1; j <= Q; j++) {
+        pe[-j] = po[-j] = first;
+        pe[W / 2 - 1 + j] = po[W / 2 - 1 + j] = last;
       }
     }
   }
-  // n pixels (even) of YUYV into Y, U, V planes, each pair's chroma to both of its pixels
-  static void split(const uint8_t *p, int n, uint8_t *py, uint8_t *pu, uint8_t *pv) {
-    const __m128i low = _mm_set1_epi16(0x00ff), even = _mm_set1_epi32(0x0000ffff);
+  // the lumas of n pixels (even) of YUYV
+  static void lumas(const uint8_t *p, int n, uint8_t *out) {
+    const __m128i low = _mm_set1_epi16(0x00ff);
     int i = 0;
     for (; i + 16 <= n; i += 16) {
       const __m128i a = _mm_loadu_si128((const __m128i *)(p + 2 * i));
       const __m128i b = _mm_loadu_si128((const __m128i *)(p + 2 * i + 16));
-      _mm_storeu_si128((__m128i *)(py + i), _mm_packus_epi16(_mm_and_si128(a, low), _mm_and_si128(b, low)));
-      const __m128i ca = _mm_srli_epi16(a, 8), cb = _mm_srli_epi16(b, 8);   // U V U V ...
-      auto dup_u = [&](__m128i c) {
-        c = _mm_and_si128(c, even);
-        return _mm_or_si128(c, _mm_slli_epi32(c, 16));
-      };
-      auto dup_v = [&](__m128i c) {
-        c = _mm_srli_epi32(c, 16);
-        return _mm_or_si128(c, _mm_slli_epi32(c, 16));
-      };
-      _mm_storeu_si128((__m128i *)(pu + i), _mm_packus_epi16(dup_u(ca), dup_u(cb)));
-      _mm_storeu_si128((__m128i *)(pv + i), _mm_packus_epi16(dup_v(ca), dup_v(cb)));
+      _mm_storeu_si128((__m128i *)(out + i), _mm_packus_epi16(_mm_and_si128(a, low), _mm_and_si128(b, low)));
     }
-    for (; i < n; i += 2) {
-      py[i] = p[2 * i];
-      py[i + 1] = p[2 * i + 2];
-      pu[i] = pu[i + 1] = p[2 * i + 1];
-      pv[i] = pv[i + 1] = p[2 * i + 3];
+    for (; i < n; i++) out[i] = p[2 * i];
+  }
+  // the chroma U | V << 8 of n pairs of YUYV
+  static void chromas(const uint8_t *p, int n, uint16_t *out) {
+    const __m128i lo = _mm_set1_epi32(0xff), hi = _mm_set1_epi32(0xff00);
+    int i = 0;
+    for (; i + 8 <= n; i += 8) {
+      auto c4 = [&](__m128i w) {
+        const __m128i c =
+            _mm_or_si128(_mm_and_si128(_mm_srli_epi32(w, 8), lo), _mm_and_si128(_mm_srli_epi32(w, 16), hi));
+        return _mm_srai_epi32(_mm_slli_epi32(c, 16), 16);   // sign-extended: packs keeps the 16 bits
+      };
+      const __m128i a = c4(_mm_loadu_si128((const __m128i *)(p + 4 * i)));
+      const __m128i b = c4(_mm_loadu_si128((const __m128i *)(p + 4 * i + 16)));
+      _mm_storeu_si128((__m128i *)(out + i), _mm_packs_epi32(a, b));
     }
+    for (; i < n; i++) out[i] = (uint16_t)(p[4 * i + 1] | p[4 * i + 3] << 8);
   }
 };
 
 void blur_row(const Develop &d, int n, const Planes &pl, int v, uint8_t *row) {
-  const uint8_t *ry[Develop::kMaxTaps], *ru[Develop::kMaxTaps], *rv[Develop::kMaxTaps];
+  const uint8_t *ry[Develop::kMaxTaps];
+  const uint16_t *rc[Develop::kMaxTaps];   // pair j's chroma sample k: rc[k][j]
   for (int k = 0; k < n; k++) {
-    const size_t off = (size_t)std::min(pl.H - 1, std::max(0, v + d.dy[k])) * pl.stride + pl.P + d.dx[k];
-    ry[k] = pl.y.data() + off;
-    ru[k] = pl.u.data() + off;
-    rv[k] = pl.v.data() + off;
+    const size_t r = (size_t)std::min(pl.H - 1, std::max(0, v + d.dy[k]));
+    ry[k] = pl.y.data() + r * pl.stride + pl.P + d.dx[k];
+    rc[k] = (d.dx[k] & 1 ? pl.co : pl.ce).data() + r * pl.cstride + pl.Q + (d.dx[k] >> 1);
   }
   // (s + n / 2) / n as ((s + n / 2) M) >> 16, M = 65536 / n + 1: exact for every s <= 8 * 255 + 4
   // (checked for every such s and n = 2..8)
   const __m128i m = _mm_set1_epi16((short)(uint16_t)(65536 / n + 1)), h = _mm_set1_epi16((short)(n / 2));
-  const __m128i zero = _mm_setzero_si128(), even = _mm_set1_epi32(0x0000ffff);
+  const __m128i zero = _mm_setzero_si128(), low = _mm_set1_epi16(0x00ff);
   const int W = pl.W;
   int u = 0;
   for (; u + 16 <= W; u += 16) {
-    __m128i y0 = zero, y1 = zero, u0 = zero, u1 = zero, v0 = zero, v1 = zero;
+    __m128i y0 = zero, y1 = zero, us = zero, vs = zero;
     for (int k = 0; k < n; k++) {
       const __m128i a = _mm_loadu_si128((const __m128i *)(ry[k] + u));
-      const __m128i b = _mm_loadu_si128((const __m128i *)(ru[k] + u));
-      const __m128i c = _mm_loadu_si128((const __m128i *)(rv[k] + u));
+      const __m128i c = _mm_loadu_si128((const __m128i *)(rc[k] + u / 2));   // 8 pairs' U | V << 8
       y0 = _mm_add_epi16(y0, _mm_unpacklo_epi8(a, zero));
       y1 = _mm_add_epi16(y1, _mm_unpackhi_epi8(a, zero));
-      u0 = _mm_add_epi16(u0, _mm_unpacklo_epi8(b, zero));
-      u1 = _mm_add_epi16(u1, _mm_unpackhi_epi8(b, zero));
-      v0 = _mm_add_epi16(v0, _mm_unpacklo_epi8(c, zero));
-      v1 = _mm_add_epi16(v1, _mm_unpackhi_epi8(c, zero));
+      us = _mm_add_epi16(us, _mm_and_si128(c, low));
+      vs = _mm_add_epi16(vs, _mm_srli_epi16(c, 8));
     }
     auto mean = [&](__m128i s) { return _mm_mulhi_epu16(_mm_add_epi16(s, h), m); };
-    // YUYV: each pair's U and V from its first pixel's samples
-    auto pack = [&](__m128i ys, __m128i us, __m128i vs) {
-      const __m128i c = _mm_or_si128(_mm_and_si128(mean(us), even), _mm_slli_epi32(mean(vs), 16));
-      return _mm_or_si128(mean(ys), _mm_slli_epi16(c, 8));
-    };
-    _mm_storeu_si128((__m128i *)(row + 2 * u), pack(y0, u0, v0));
-    _mm_storeu_si128((__m128i *)(row + 2 * u + 16), pack(y1, u1, v1));
+    const __m128i mu = mean(us), mv = mean(vs);
+    _mm_storeu_si128((__m128i *)(row + 2 * u), _mm_or_si128(mean(y0), _mm_slli_epi16(_mm_unpacklo_epi16(mu, mv), 8)));
+    _mm_storeu_si128((__m128i *)(row + 2 * u + 16),
+                     _mm_or_si128(mean(y1), _mm_slli_epi16(_mm_unpackhi_epi16(mu, mv), 8)));
   }
   for (; u < W; u += 2) {
     int y0 = 0, y1 = 0, us = 0, vs = 0;
     for (int k = 0; k < n; k++) {
       y0 += ry[k][u];
       y1 += ry[k][u + 1];
-      us += ru[k][u];
-      vs += rv[k][u];
+      us += rc[k][u / 2] & 0xff;
+      vs += rc[k][u / 2] >> 8;
     }
     put_mean(row + 2 * u, y0, us, y1, vs, n);
   }

@@ -319,11 +319,12 @@ void Renderer::ground(const Camera &c, const Look &look, uint8_t *img) const {
     }
     const uint32_t base = (uint32_t)(v * W);
     if (look.light) {
-      // the light at the ground point every 8 pixels, linear in between (it changes over decimetres)
+      // the light at the ground point every 16 pixels, linear in between (it changes over decimetres:
+      // 16 pixels are 3 cm of ground 1 m away, 11 cm at 4 m, where the ball's shadow is a few pixels)
       const int a = std::max(ua, 0);
       if (ub >= a) {
         int ns = 0;
-        for (int uu = a;; uu = std::min(uu + 8, ub)) {
+        for (int uu = a;; uu = std::min(uu + 16, ub)) {
           float gx, gy;
           ground_xy(uu, &gx, &gy);
           // beyond the carpet (rays near the horizon reach kilometres) the light is the carpet edge's
@@ -335,17 +336,19 @@ void Renderer::ground(const Camera &c, const Look &look, uint8_t *img) const {
         look.light->at256(lx.data(), ly.data(), ns, sl.data());
         int l0 = sl[0];
         lt[a] = (int16_t)l0;
-        for (int j = 1, u0 = a; j < ns; j++, u0 += 8) {
-          const int u1 = std::min(u0 + 8, ub), l1 = sl[j];
-          if (u1 - u0 == 8) {
-            // the 16.16 step (l1 - l0) 65536 / 8 below is exact here: the same values without a division
+        for (int j = 1, u0 = a; j < ns; j++, u0 += 16) {
+          const int u1 = std::min(u0 + 16, ub), l1 = sl[j];
+          if (u1 - u0 == 16) {
+            // the 16.16 step (l1 - l0) 65536 / 16 below is exact here: the same values without a division
             const int dl = l1 - l0;
 #ifdef __SSE2__
-            const __m128i k18 = _mm_setr_epi16(1, 2, 3, 4, 5, 6, 7, 8);
-            _mm_storeu_si128((__m128i *)&lt[u0 + 1],
-                             _mm_add_epi16(_mm_set1_epi16((short)l0), _mm_srai_epi16(_mm_mullo_epi16(_mm_set1_epi16((short)dl), k18), 3)));
+            const __m128i k18 = _mm_setr_epi16(1, 2, 3, 4, 5, 6, 7, 8), k8 = _mm_set1_epi16(8);
+            const __m128i l0v = _mm_set1_epi16((short)l0), dlv = _mm_set1_epi16((short)dl);
+            _mm_storeu_si128((__m128i *)&lt[u0 + 1], _mm_add_epi16(l0v, _mm_srai_epi16(_mm_mullo_epi16(dlv, k18), 4)));
+            _mm_storeu_si128((__m128i *)&lt[u0 + 9],
+                             _mm_add_epi16(l0v, _mm_srai_epi16(_mm_mullo_epi16(dlv, _mm_add_epi16(k18, k8)), 4)));
 #else
-            for (int k = 1; k <= 8; k++) lt[u0 + k] = (int16_t)(l0 + ((k * dl) >> 3));
+            for (int k = 1; k <= 16; k++) lt[u0 + k] = (int16_t)(l0 + ((k * dl) >> 4));
 #endif
           } else {
             const int step = (l1 - l0) * 65536 / (u1 - u0);   // 16.16 fixed point

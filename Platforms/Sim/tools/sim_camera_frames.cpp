@@ -1,7 +1,7 @@
 // sim_camera_frames: seeded scenes of the sim camera, each rendered by the clean camera and by the
 // realistic one (sim.lua camera.realism's settings; effects.h), to PNGs and/or timed.
 //   sim_camera_frames [--out DIR] [--scenes N] [--seed S] [--ball white|orange] [--montage FILE]
-//                     [--montage-scene K] [--bench]
+//                     [--montage-scene K] [--bench] [--only clean|realistic]
 // A scene: four robots (two per team) and the ball on the field at seeded places, the camera of
 // robot 0 with its head anywhere, turning during the exposure at up to 4 rad/s (a head scan; the
 // camera pose at the exposure's start from the head angle then, as the DCM takes it from its pose
@@ -10,6 +10,8 @@
 // the README: scene K's (default: the first with the ball well in view) clean | realistic frames at
 // half size (640 x 240; the halving averages most of the noise away: the full frames show it).
 // --bench prints the CPU time per frame of each camera (this thread's, so other load matters less).
+// --only renders one camera's frames (the other's stay black): a profile of that camera alone
+// (perf record build/bin/sim_camera_frames --scenes 400 --only realistic).
 #include <time.h>
 
 #include <climits>
@@ -46,6 +48,7 @@ int main(int argc, char **argv) {
   const char *out_arg = "", *montage_arg = "";
   std::string ball_kind;
   int nscenes = 8, montage_scene = -1, bench = 0;
+  const char *only_arg = "";
   long seed_arg = 1;
   const dcm_opt opts[] = {
       {"--out", DCM_OPT_STRING, &out_arg, 0, 0, "DIR", "DIR/scene_NN.png: clean | realistic", nullptr, 0},
@@ -57,10 +60,16 @@ int main(int argc, char **argv) {
       {"--montage-scene", DCM_OPT_INT, &montage_scene, 0, 1e6, "K",
        "the montage's scene (default: the first with the ball well in view)", nullptr, 0},
       {"--bench", DCM_OPT_FLAG, &bench, 0, 0, nullptr, "CPU time per frame of each camera", nullptr, 0},
+      {"--only", DCM_OPT_STRING, &only_arg, 0, 0, "clean|realistic", "render one camera only (profiling)", nullptr, 0},
       DCM_OPT_END,
   };
   dcm_args("sim_camera_frames", "sim_camera_frames", opts, argc, argv);
-  const std::string out = out_arg, montage = montage_arg;
+  const std::string out = out_arg, montage = montage_arg, only = only_arg;
+  if (!only.empty() && only != "clean" && only != "realistic") {
+    fprintf(stderr, "sim_camera_frames: --only takes clean or realistic, not '%s'\n", only_arg);
+    return 2;
+  }
+  const bool do_clean = only != "realistic", do_real = only != "clean";
   const uint64_t seed = (uint64_t)seed_arg;
   try {
     sim::Params p;
@@ -125,10 +134,10 @@ int main(int argc, char **argv) {
       sh.cam_start = c0;
       sh.has_start = true;
       double t0 = thread_cpu();
-      clean.render(sh, solids, a.data());
+      if (do_clean) clean.render(sh, solids, a.data());
       t_clean += thread_cpu() - t0;
       t0 = thread_cpu();
-      real.render(sh, solids, b.data());
+      if (do_real) real.render(sh, solids, b.data());
       t_real += thread_cpu() - t0;
       if (!out.empty()) {
         blit(a.data(), W, 0, 0, W, H, pair.data(), 2 * W, 0, 0);
