@@ -18,6 +18,10 @@ describe('param_save.edit', function()
     local files = io.popen('cd ' .. native.root() .. ' && find Config -name "*.lua" | sort'):read('*a')
     local edited, checked = 0, 0
     for file in files:gmatch('[^\n]+') do
+      -- whole-body skills are choreography written with functions (a task built once, used in many
+      -- states): every leaf is still checked never to be edited wrongly, but they do not count in the
+      -- share of leaves edited in place, which is about the parameter files
+      local counted = not file:match('/wbc_skills/')
       local src = read(native.root() .. '/' .. file)
       local t = assert(loadstring(src, '=' .. file))()
       local function visit(v, path)
@@ -39,13 +43,13 @@ describe('param_save.edit', function()
           end
         end
         if new == nil or #path == 0 then return end
-        checked = checked + 1
+        if counted then checked = checked + 1 end
         local out, err = save.edit(src, path, new)
         -- a value built by code (a function's result, a local shared by two keys) is refused, never
         -- edited wrongly: save.write writes only what save.verify accepts
         if out then
           local ok, verr = save.verify(src, out, path, new, file)
-          if ok then edited = edited + 1 else assert.matches('changed another key', verr) end
+          if ok then edited = edited + (counted and 1 or 0) else assert.matches('changed another key', verr) end
         else
           assert.matches('does not set the key', err)
         end
