@@ -22,8 +22,8 @@ tap_merge() {
 # its first tick for two participants: motion and the script; no camera) with ./run_main motion, and
 # ./run_repl SCRIPT ARGS as the second (at most 300 s); then both stopped, the robot's blocks removed
 # and the script's TAP merged under LABEL (tap_merge). ROBOT, HRP_SITE and the like come from the
-# caller's environment; SCENARIO_DCM_ARGS adds arguments for the DCM (e.g. "--seed 3"). The logs:
-# $LOGDIR/main_LABEL.log and $LOGDIR/LABEL.log.
+# caller's environment; SCENARIO_DCM_ARGS adds arguments for the DCM (e.g. "--seed 3"),
+# SCENARIO_TIMEOUT another bound for the script (s). The logs: $LOGDIR/main_LABEL.log and $LOGDIR/LABEL.log.
 lockstep_scenario() {
   local id=$1 label=$2 script=$3 arg main_pid rc
   shift 3
@@ -33,10 +33,29 @@ lockstep_scenario() {
   ROBOT_ID=$id ./run_main --sim --quiet --no-restart "${dcm_args[@]}" motion >"$LOGDIR/main_$label.log" 2>&1 &
   main_pid=$!
   for _ in $(seq 200); do grep -q 'motion started' "$LOGDIR/main_$label.log" 2>/dev/null && break; sleep 0.1; done
-  ROBOT_ID=$id timeout 300 ./run_repl "$script" "$@" >"$LOGDIR/$label.log" 2>&1
+  ROBOT_ID=$id timeout "${SCENARIO_TIMEOUT:-300}" ./run_repl "$script" "$@" >"$LOGDIR/$label.log" 2>&1
   rc=$?
   kill -TERM "$main_pid" 2>/dev/null
   wait "$main_pid" 2>/dev/null
   Tools/shm/shm --robot "$id" remove >/dev/null 2>&1
   tap_merge "$LOGDIR/$label.log" "$label" "$rc"
+}
+
+# scenario_logs AREA: the scenario's log folder build/test-logs/AREA in LOGDIR (made), its TAP counters
+# (k, failed) at zero.
+scenario_logs() {
+  LOGDIR="$HRP_ROOT/build/test-logs/$1"
+  mkdir -p "$LOGDIR"
+  failed=0; k=0
+}
+
+# solver_site ITERATIONS: a site overlay (build/solver-site-N: the site's files and a sim.lua) with
+# that many dWorldQuickStep iterations, exported as HRP_SITE: a solver setting, not physics, for
+# comparing a scenario's figures with the body's own.
+solver_site() {
+  local site="$HRP_ROOT/build/solver-site-$1"
+  rm -rf "$site"; mkdir -p "$site"
+  cp Config/site/*.lua "$site/"
+  printf 'return { physics = { iterations = %d } }\n' "$1" >"$site/sim.lua"
+  export HRP_SITE=$site
 }

@@ -9,9 +9,7 @@ set -u
 cd "$(dirname "$0")/../.."
 source Run/env.sh
 source Tests/tap_lib.sh
-LOGDIR="$HRP_ROOT/build/test-logs/motion"
-mkdir -p "$LOGDIR"
-failed=0; k=0
+scenario_logs motion
 id=$(( ${ROBOT_ID:-9200} + 95 ))
 # the robot starts at x = -1.0 (Config/platforms/Sim/sim.lua start), at its zero pose (arms level
 # forward: the hands 0.2 m ahead of the soles), then stands (the hands hang 2 cm ahead); its arms,

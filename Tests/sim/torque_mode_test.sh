@@ -12,19 +12,14 @@ set -u
 cd "$(dirname "$0")/../.."
 source Run/env.sh
 source Tests/tap_lib.sh
-LOGDIR="$HRP_ROOT/build/test-logs/sim"
-mkdir -p "$LOGDIR"
-failed=0; k=0
+scenario_logs sim
 iterations=${1:-}
 id=$(( ${ROBOT_ID:-9300} + 70 ))
 label=torque_arm
 if [ -n "$iterations" ]; then
   label=torque_arm_$iterations
-  site="$HRP_ROOT/build/torque-site-$iterations"
-  rm -rf "$site"; mkdir -p "$site"
-  cp Config/site/*.lua "$site/"
-  printf 'return { physics = { iterations = %d } }\n' "$iterations" >"$site/sim.lua"
-  export HRP_SITE=$site TORQUE_DRIFT_BOUND=0.01
+  solver_site "$iterations"
+  export TORQUE_DRIFT_BOUND=0.01
 fi
 ROBOT=hubo2plus lockstep_scenario "$id" "$label" Tests/sim/torque_arm.lua
 echo "1..$k"

@@ -17,13 +17,13 @@
 --      watchdog puts every joint in position mode holding the arm.
 -- Prints TAP and the figures.
 -- luacheck: globals Sim Motion WBC wait Body
-package.path = os.getenv('HRP_ROOT') .. '/Tests/motion/?.lua;' .. package.path
+package.path = os.getenv('HRP_ROOT') .. '/Tests/wbc/?.lua;' .. package.path
 local ffi = require('ffi')
 local shm = require('shm')
 local param = require('param')
 local Config = require('Config')
 local wbc_torque = require('wbc_torque')
-local ks = require('kick_setup')
+local scene = require('wbc_scene')
 local sc = require('Tests.scenario_lib').new(wait, Body)
 local tap, note = sc.tap, sc.note
 
@@ -36,8 +36,7 @@ local robot, actuators = Config.load('robot'), Config.load('actuators')
 local limit = {}
 for k, name in ipairs(arm) do limit[k] = actuators[robot.actuator[name]].torque end
 
-local function dist(a, b) return math.sqrt((a[1] - b[1]) ^ 2 + (a[2] - b[2]) ^ 2 + (a[3] - b[3]) ^ 2) end
-local function xyz(p) return { p.x, p.y, p.z } end
+local dist, xyz = scene.dist, scene.xyz
 
 -- R = Rz(yaw) Ry(pitch) Rx(roll) of a truth pose; R^T d
 local function to_local(t, d)
@@ -72,22 +71,8 @@ local function step(seconds)
   end
 end
 
-ks.need_motion(wait, tap)
-Motion.request('stand')
-wait(3)
-Motion.request('wbc')
-wait(1)
-tap(Motion.state() == 'wbc' and WBC.status().active, 'the wbc state runs (state ' .. Motion.state() .. ')')
-
--- the stance frame in the field: midway between the soles, x along their mean heading
-local l0, r0 = Sim.link_truth('l_sole'), Sim.link_truth('r_sole')
-local ox, oy, oz = (l0.x + r0.x) / 2, (l0.y + r0.y) / 2, (l0.z + r0.z) / 2
-local yaw = (l0.yaw + r0.yaw) / 2
-local cy, sy = math.cos(yaw), math.sin(yaw)
-local function to_stance(p)
-  local dx, dy = p[1] - ox, p[2] - oy
-  return { cy * dx + sy * dy, -sy * dx + cy * dy, p[3] - oz }
-end
+scene.start(wait, tap)
+local to_stance = scene.stance_frame().to_stance
 local function palm_stance() return to_stance(xyz(Sim.link_truth('r_palm'))) end
 
 -- the palm raised forward by the kinematic controller, then the arm in torque mode

@@ -11,31 +11,15 @@ set -u
 cd "$(dirname "$0")/../.."
 source Run/env.sh
 source Tests/tap_lib.sh
-LOGDIR="$HRP_ROOT/build/test-logs/wbc"
-mkdir -p "$LOGDIR"
-failed=0; k=0
-id=$(( ${ROBOT_ID:-9200} + 77 ))
+scenario_logs wbc
 s=hubo_arm_torque
 iterations=${1:-}
 if [ -n "$iterations" ]; then
-  # a solver setting through a site overlay, for comparison (the figures in docs/whole-body.md)
+  # a solver setting, for comparison (the figures in docs/whole-body.md)
   s=hubo_arm_torque_$iterations
-  site="$HRP_ROOT/build/torque-site-$iterations"
-  rm -rf "$site"; mkdir -p "$site"
-  cp Config/site/*.lua "$site/"
-  printf 'return { physics = { iterations = %d } }\n' "$iterations" >"$site/sim.lua"
-  export HRP_SITE=$site TORQUE_DRIFT_BOUND=0.01
+  solver_site "$iterations"
+  export TORQUE_DRIFT_BOUND=0.01
 fi
-Tools/shm/shm --robot "$id" remove >/dev/null 2>&1   # stale segments of an earlier run
-ROBOT=hubo2plus ROBOT_ID=$id ./run_main --sim --quiet --no-restart --dcm-arg --lockstep-wait --dcm-arg 2 \
-  --dcm-arg --no-camera motion >"$LOGDIR/main_$s.log" 2>&1 &
-main_pid=$!
-for _ in $(seq 200); do grep -q 'motion started' "$LOGDIR/main_$s.log" 2>/dev/null && break; sleep 0.1; done
-ROBOT=hubo2plus ROBOT_ID=$id timeout 600 ./run_repl Tests/wbc/hubo_arm_torque.lua >"$LOGDIR/$s.log" 2>&1
-rc=$?
-kill -TERM "$main_pid" 2>/dev/null
-wait "$main_pid" 2>/dev/null
-Tools/shm/shm --robot "$id" remove >/dev/null 2>&1
-tap_merge "$LOGDIR/$s.log" "$s" "$rc"
+ROBOT=hubo2plus SCENARIO_TIMEOUT=600 lockstep_scenario $(( ${ROBOT_ID:-9200} + 77 )) "$s" Tests/wbc/hubo_arm_torque.lua
 echo "1..$k"
 [ $failed -eq 0 ]

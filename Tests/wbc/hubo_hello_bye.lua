@@ -5,27 +5,21 @@
 -- simulated robot, Sim.link_truth) within 3 cm of the state's target, the palm back within 2 cm of
 -- where it started, no fall. Prints TAP and the figures.
 -- luacheck: globals Sim Motion WBC wait Body
-package.path = os.getenv('HRP_ROOT') .. '/Tests/motion/?.lua;' .. package.path
+package.path = os.getenv('HRP_ROOT') .. '/Tests/motion/?.lua;' .. os.getenv('HRP_ROOT') .. '/Tests/wbc/?.lua;'
+  .. package.path
 local ks = require('kick_setup')
+local scene = require('wbc_scene')
 local sc = require('Tests.scenario_lib').new(wait, Body)
 local tap = sc.tap
 local Config = require('Config')
-
-local function dist(a, b) return math.sqrt((a[1] - b[1]) ^ 2 + (a[2] - b[2]) ^ 2 + (a[3] - b[3]) ^ 2) end
-local function xyz(p) return { p.x, p.y, p.z } end
+local dist, xyz = scene.dist, scene.xyz
 
 ks.need_motion(wait, tap)
 Motion.request('stand')
 wait(3)
 local start = xyz(Sim.link_truth('r_palm'))
 -- the stance frame in the field (the state sets it at its start: midway between the soles)
-local l0, r0 = Sim.link_truth('l_sole'), Sim.link_truth('r_sole')
-local ox, oy, oz = (l0.x + r0.x) / 2, (l0.y + r0.y) / 2, (l0.z + r0.z) / 2
-local yaw = (l0.yaw + r0.yaw) / 2
-local function to_field(p)
-  local c, s = math.cos(yaw), math.sin(yaw)
-  return { ox + c * p[1] - s * p[2], oy + s * p[1] + c * p[2], oz + p[3] }
-end
+local to_field = scene.stance_frame().to_field
 local skill = Config.load('wbc_skills/hello_bye')
 local function target_of(state)
   local st = skill.states[state]

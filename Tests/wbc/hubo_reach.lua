@@ -6,32 +6,17 @@
 -- throughout each reach. A target 1.5 m ahead is flagged infeasible and the robot keeps standing.
 -- Prints TAP and the figures.
 -- luacheck: globals Sim Motion WBC wait Body
-package.path = os.getenv('HRP_ROOT') .. '/Tests/motion/?.lua;' .. os.getenv('HRP_ROOT') .. '/Tests/wbc/?.lua;'
-  .. package.path
-local ks = require('kick_setup')
+package.path = os.getenv('HRP_ROOT') .. '/Tests/wbc/?.lua;' .. package.path
+local scene = require('wbc_scene')
 local zmp_margin = require('zmp_margin')
 local sc = require('Tests.scenario_lib').new(wait, Body)
 local tap = sc.tap
+local dist, xyz = scene.dist, scene.xyz
 
-
-local function dist(a, b) return math.sqrt((a[1] - b[1]) ^ 2 + (a[2] - b[2]) ^ 2 + (a[3] - b[3]) ^ 2) end
-local function xyz(p) return { p.x, p.y, p.z } end
-
-ks.need_motion(wait, tap)
-Motion.request('stand')
-wait(3)
-Motion.request('wbc')
-wait(1)
-tap(Motion.state() == 'wbc' and WBC.status().active, 'the wbc state runs (state ' .. Motion.state() .. ')')
-
--- the stance frame in the field: midway between the soles, x along their mean heading
+scene.start(wait, tap)
 local l0, r0 = Sim.link_truth('l_sole'), Sim.link_truth('r_sole')
-local ox, oy, oz = (l0.x + r0.x) / 2, (l0.y + r0.y) / 2, (l0.z + r0.z) / 2
-local yaw = (l0.yaw + r0.yaw) / 2
-local function to_field(p)
-  local c, s = math.cos(yaw), math.sin(yaw)
-  return { ox + c * p[1] - s * p[2], oy + s * p[1] + c * p[2], oz + p[3] }
-end
+local frame = scene.stance_frame()
+local to_field = frame.to_field
 
 local targets = { { 0.30, -0.25, 0.80 }, { 0.35, -0.25, 0.90 }, { 0.40, -0.15, 0.85 }, { 0.45, -0.20, 0.75 },
   { 0.25, -0.35, 1.00 } }
@@ -48,10 +33,9 @@ for i, t in ipairs(targets) do
     if not m then unloaded = unloaded + 1 elseif m < margin then margin, at = m, { zx, zy } end
   end
   -- where it came closest to an edge, in the stance frame
-  local c, s = math.cos(yaw), math.sin(yaw)
-  local dx, dy = at and at[1] - ox or 0 / 0, at and at[2] - oy or 0 / 0
+  local near = frame.to_stance({ at and at[1] or 0 / 0, at and at[2] or 0 / 0, 0 })
   print(string.format('# target %d: measured ZMP at least %.1f mm inside the support polygon (closest at %.3f, %.3f '
-    .. 'in the stance frame)', i, margin * 1e3, c * dx + s * dy, -s * dx + c * dy))
+    .. 'in the stance frame)', i, margin * 1e3, near[1], near[2]))
   worst_margin = math.min(worst_margin, margin)
   local hand = dist(xyz(Sim.link_truth('r_palm')), to_field(t))
   local sole = math.max(dist(xyz(Sim.link_truth('l_sole')), xyz(l0)), dist(xyz(Sim.link_truth('r_sole')), xyz(r0)))

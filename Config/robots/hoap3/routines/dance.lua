@@ -7,5 +7,7 @@ return {
   steps = {
     { skill = 'dance', seconds = 28 },
     { walk = { 0, 0, 0.2 }, seconds = 7.5 },
+    -- standing still a moment: the walk's last sway dies out before the next moves start
+    { stand = true, seconds = 1.5 },
   },
 }

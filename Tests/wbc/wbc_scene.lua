@@ -1,0 +1,42 @@
+-- What the whole-body scenarios (Tests/wbc/*.lua, run by ./run_repl in lockstep) share: starting the
+-- wbc state from a settled stance, the stance frame as the sim's truth has it, points and distances.
+--   local scene = require('wbc_scene')
+--   scene.start(wait, tap)          -- stands 3 s, then Motion.request('wbc') (1 s): a TAP line
+--   local f = scene.stance_frame()  -- f.to_field({x, y, z}), f.to_stance({x, y, z}): stance frame <-> field
+--   scene.xyz(Sim.link_truth('r_palm')), scene.dist(a, b)
+package.path = os.getenv('HRP_ROOT') .. '/Tests/motion/?.lua;' .. package.path
+local ks = require('kick_setup')
+local Sim, Motion, WBC = require('Sim'), require('Motion'), require('WBC')
+
+local M = {}
+
+function M.xyz(p) return { p.x, p.y, p.z } end
+function M.dist(a, b) return math.sqrt((a[1] - b[1]) ^ 2 + (a[2] - b[2]) ^ 2 + (a[3] - b[3]) ^ 2) end
+
+-- The motion process up, a settled stance, then the wbc state running (checked: one TAP line).
+function M.start(wait, tap)
+  ks.need_motion(wait, tap)
+  Motion.request('stand')
+  wait(3)
+  Motion.request('wbc')
+  wait(1)
+  tap(Motion.state() == 'wbc' and WBC.status().active, 'the wbc state runs (state ' .. Motion.state() .. ')')
+end
+
+-- The stance frame in the field now: midway between the soles, x along their mean heading.
+function M.stance_frame()
+  local l, r = Sim.link_truth('l_sole'), Sim.link_truth('r_sole')
+  local ox, oy, oz = (l.x + r.x) / 2, (l.y + r.y) / 2, (l.z + r.z) / 2
+  local yaw = (l.yaw + r.yaw) / 2
+  local c, s = math.cos(yaw), math.sin(yaw)
+  return {
+    origin = { ox, oy, oz }, yaw = yaw,
+    to_field = function(p) return { ox + c * p[1] - s * p[2], oy + s * p[1] + c * p[2], oz + p[3] } end,
+    to_stance = function(p)
+      local dx, dy = p[1] - ox, p[2] - oy
+      return { c * dx + s * dy, -s * dx + c * dy, p[3] - oz }
+    end,
+  }
+end
+
+return M
