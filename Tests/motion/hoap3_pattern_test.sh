@@ -34,20 +34,8 @@ else
   exit 1
 fi
 
-Tools/shm/shm --robot "$id" remove >/dev/null 2>&1
-ROBOT_ID=$id ./run_main --sim --quiet --no-restart --dcm-arg --lockstep-wait --dcm-arg 2 --dcm-arg --seed \
-  --dcm-arg "${SIM_SEED:-1}" --dcm-arg --no-camera motion >"$LOGDIR/main_pattern.log" 2>&1 &
-main_pid=$!
-for _ in $(seq 200); do
-  grep -q 'motion started' "$LOGDIR/main_pattern.log" 2>/dev/null && break
-  sleep 0.1
-done
-ROBOT_ID=$id timeout 600 ./run_repl Tests/motion/pattern_scenario.lua "$PATTERN" "$LOG" >"$LOGDIR/pattern.log" 2>&1
-rc=$?
-kill -TERM "$main_pid" 2>/dev/null
-wait "$main_pid" 2>/dev/null
-Tools/shm/shm --robot "$id" remove >/dev/null 2>&1
-tap_merge "$LOGDIR/pattern.log" pattern "$rc"
+SCENARIO_TIMEOUT=600 SCENARIO_DCM_ARGS="--seed ${SIM_SEED:-1}" \
+  lockstep_scenario "$id" pattern Tests/motion/pattern_scenario.lua "$PATTERN" "$LOG"
 
 k=$((k + 1))
 if python3 Tools/plot/plot_pattern.py "$LOG" "$LOGDIR/hoap3_pattern" l 'HOAP-3, 12 steps' 0.068,0.040,0.0315,0.0415 >"$LOGDIR/plot_pattern.log" 2>&1 \

@@ -10,7 +10,9 @@
 -- the joint; killing the motion process trips the watchdog, which puts every joint back in
 -- position mode holding the arm. Prints TAP and the figures.
 -- luacheck: globals Sim Motion wait Body
-package.path = os.getenv('HRP_ROOT') .. '/Tests/motion/?.lua;' .. package.path
+package.path = os.getenv('HRP_ROOT') .. '/Tests/motion/?.lua;' .. os.getenv('HRP_ROOT') .. '/Tests/wbc/?.lua;'
+  .. package.path
+local scene = require('wbc_scene')
 local ffi = require('ffi')
 local shm = require('shm')
 local dynamics = require('dynamics')
@@ -29,20 +31,8 @@ local function palm()
   local p = Sim.link_truth('r_palm')
   return { p.x, p.y, p.z }
 end
--- the palm in the torso's frame (the arm's own doing, whatever the legs do)
-local function palm_in_torso()
-  local p, t = palm(), Sim.truth()
-  local d = { p[1] - t.x, p[2] - t.y, p[3] - t.z }
-  local cr, sr, cp, sp, cy, sy = math.cos(t.roll), math.sin(t.roll), math.cos(t.pitch), math.sin(t.pitch),
-    math.cos(t.yaw), math.sin(t.yaw)
-  -- R = Rz(yaw) Ry(pitch) Rx(roll); R^T d
-  local R = { { cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr },
-    { sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr }, { -sp, cp * sr, cp * cr } }
-  local out = {}
-  for c = 1, 3 do out[c] = R[1][c] * d[1] + R[2][c] * d[2] + R[3][c] * d[3] end
-  return out
-end
-local function dist(a, b) return math.sqrt((a[1] - b[1]) ^ 2 + (a[2] - b[2]) ^ 2 + (a[3] - b[3]) ^ 2) end
+local function palm_in_torso() return scene.in_torso('r_palm') end
+local dist = scene.dist
 
 -- the model's gravity torque of each arm joint at the measured pose (the torso's pose from the sim)
 local function gravity()

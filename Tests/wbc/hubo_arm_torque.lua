@@ -38,21 +38,7 @@ for k, name in ipairs(arm) do limit[k] = actuators[robot.actuator[name]].torque 
 
 local dist, xyz = scene.dist, scene.xyz
 
--- R = Rz(yaw) Ry(pitch) Rx(roll) of a truth pose; R^T d
-local function to_local(t, d)
-  local cr, sr, cp, sp, cy, sy = math.cos(t.roll), math.sin(t.roll), math.cos(t.pitch), math.sin(t.pitch),
-    math.cos(t.yaw), math.sin(t.yaw)
-  local R = { { cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr },
-    { sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr }, { -sp, cp * sr, cp * cr } }
-  local out = {}
-  for c = 1, 3 do out[c] = R[1][c] * d[1] + R[2][c] * d[2] + R[3][c] * d[3] end
-  return out
-end
--- the palm in the torso's frame (the arm's own doing, whatever the legs do)
-local function palm_in_torso()
-  local p, t = Sim.link_truth('r_palm'), Sim.link_truth('torso')
-  return to_local(t, { p.x - t.x, p.y - t.y, p.z - t.z })
-end
+local function palm_in_torso() return scene.in_torso('r_palm') end
 
 -- the worst arm torque in dcm.actuator against its limit, sampled by `step`
 local worst_ratio = 0

@@ -3,7 +3,7 @@
 --   local scene = require('wbc_scene')
 --   scene.start(wait, tap)          -- stands 3 s, then Motion.request('wbc') (1 s): a TAP line
 --   local f = scene.stance_frame()  -- f.to_field({x, y, z}), f.to_stance({x, y, z}): stance frame <-> field
---   scene.xyz(Sim.link_truth('r_palm')), scene.dist(a, b)
+--   scene.xyz(Sim.link_truth('r_palm')), scene.dist(a, b), scene.in_torso('r_palm')
 package.path = os.getenv('HRP_ROOT') .. '/Tests/motion/?.lua;' .. package.path
 local ks = require('kick_setup')
 local Sim, Motion, WBC = require('Sim'), require('Motion'), require('WBC')
@@ -11,6 +11,23 @@ local Sim, Motion, WBC = require('Sim'), require('Motion'), require('WBC')
 local M = {}
 
 function M.xyz(p) return { p.x, p.y, p.z } end
+
+-- Vector d (field axes) in the axes of truth pose t: R^T d, R = Rz(yaw) Ry(pitch) Rx(roll).
+function M.to_local(t, d)
+  local cr, sr, cp, sp, cy, sy = math.cos(t.roll), math.sin(t.roll), math.cos(t.pitch), math.sin(t.pitch),
+    math.cos(t.yaw), math.sin(t.yaw)
+  local R = { { cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr },
+    { sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr }, { -sp, cp * sr, cp * cr } }
+  local out = {}
+  for c = 1, 3 do out[c] = R[1][c] * d[1] + R[2][c] * d[2] + R[3][c] * d[3] end
+  return out
+end
+
+-- Where link `name` is in the torso's frame (the limb's own doing, whatever the legs do).
+function M.in_torso(name)
+  local p, t = Sim.link_truth(name), Sim.truth()
+  return M.to_local(t, { p.x - t.x, p.y - t.y, p.z - t.z })
+end
 function M.dist(a, b) return math.sqrt((a[1] - b[1]) ^ 2 + (a[2] - b[2]) ^ 2 + (a[3] - b[3]) ^ 2) end
 
 -- The motion process up, a settled stance, then the wbc state running (checked: one TAP line).
