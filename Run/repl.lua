@@ -51,19 +51,21 @@ function env.wait(seconds)
   if participant then participant:done(tick, target) end
   -- In lockstep the clock waits for every participant (and, held at tick 0, for all of them to
   -- join): while its DCM is alive a slow participant on a loaded machine is no error, up to 120 s.
-  local stalled = 0
+  local since = shm.C.shm_now()   -- the last new tick
+  local looked = since
   while tick < target do
-    local t = Body.wait_tick(tick, 5.0)
-    if t then
-      tick, stalled = t, 0
-      -- a DCM that started after our done() (we joined before it ran in lockstep) consults us from
-      -- its first tick on, whatever wake we asked for: answer it, or it waits for us for ever
-      if participant and tick < target and participant:due(tick) then participant:done(tick, target) end
-    else
-      stalled = stalled + 5.0
+    local t = Body.wait_tick(tick, 0.05)
+    local now = shm.C.shm_now()
+    if t then tick, since, looked = t, now, now end
+    -- a DCM that started its lockstep after our done() (we joined first) consults us from its first
+    -- tick on, whatever wake we asked for: answer it, or it waits for us for ever. Looked at every
+    -- 0.05 s too: the DCM may publish its first tick before it turns the lockstep on
+    if participant and tick < target and participant:due(tick) then participant:done(tick, target) end
+    if now - looked >= 5.0 then
+      looked = now
       local pid = tonumber(shm.open('dcm.sensor').dcm_pid[0])
       local dcm_alive = pid ~= 0 and shm.C.shm_pid_alive(pid) == 1
-      if not (participant and lockstep.active() and dcm_alive and stalled < 120) then
+      if not (participant and lockstep.active() and dcm_alive and now - since < 120) then
         error(string.format('wait: the clock is not advancing (tick %d): is ./run_dcm running for ROBOT_ID %d?',
           tick, shm.robot_id()), 2)
       end
