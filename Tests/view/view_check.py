@@ -27,6 +27,7 @@ With --wbc (a robot whose motion runs the whole-body state, Tests/view/view_test
 7. the panel shows the task `com` with a number for its error.
 """
 import argparse
+import contextlib
 import os
 import socket
 import sys
@@ -136,6 +137,24 @@ class WbcLog(threading.Thread):
             time.sleep(0.002)
 
 
+@contextlib.contextmanager
+def chromium_page(url):
+    """A page of headless Chromium (its own throw-away profile) opened at url, with the list its
+    uncaught page errors go into; the browser closes when the block ends."""
+    with tempfile.TemporaryDirectory(prefix="hrp-view-chromium-") as profile, sync_playwright() as p:
+        ctx = p.chromium.launch_persistent_context(
+            profile, executable_path="/usr/bin/chromium", headless=True, args=CHROMIUM_ARGS,
+            viewport={"width": 1600, "height": 900}, device_scale_factor=1)
+        try:
+            page = ctx.new_page()
+            errors = []
+            page.on("pageerror", lambda e: errors.append(str(e)))
+            page.goto(url)
+            yield page, errors
+        finally:
+            ctx.close()
+
+
 def check_wbc(a, robot):
     """The whole-body panel against the page's block and the page's block against the robot's."""
     for _ in range(100):
@@ -144,14 +163,7 @@ def check_wbc(a, robot):
         time.sleep(0.1)
     log = WbcLog(robot)
     log.start()
-    with tempfile.TemporaryDirectory(prefix="hrp-view-chromium-") as profile, sync_playwright() as p:
-        ctx = p.chromium.launch_persistent_context(
-            profile, executable_path="/usr/bin/chromium", headless=True, args=CHROMIUM_ARGS,
-            viewport={"width": 1600, "height": 900}, device_scale_factor=1)
-        page = ctx.new_page()
-        errors = []
-        page.on("pageerror", lambda e: errors.append(str(e)))
-        page.goto(a.url)
+    with chromium_page(a.url) as (page, errors):
         try:
             page.wait_for_function("hrpView.wbc() && hrpView.wbc().active && "
                                    "document.querySelectorAll('#wbc tr[data-task]').length > 0", timeout=30000)
@@ -172,7 +184,6 @@ def check_wbc(a, robot):
         info = page.locator("#wbc-info").inner_text()
         page.locator("#wbc-panel").scroll_into_view_if_needed()
         page.screenshot(path=a.out, full_page=True)
-        ctx.close()
     log.stop = True
     log.join()
     tasks = {t["name"]: t for t in (held or {}).get("tasks", [])}
@@ -224,14 +235,7 @@ def main():
         time.sleep(0.1)
     truth = TruthLog(robot)
     truth.start()
-    with tempfile.TemporaryDirectory(prefix="hrp-view-chromium-") as profile, sync_playwright() as p:
-        ctx = p.chromium.launch_persistent_context(
-            profile, executable_path="/usr/bin/chromium", headless=True, args=CHROMIUM_ARGS,
-            viewport={"width": 1600, "height": 900}, device_scale_factor=1)
-        page = ctx.new_page()
-        errors = []
-        page.on("pageerror", lambda e: errors.append(str(e)))
-        page.goto(a.url)
+    with chromium_page(a.url) as (page, errors):
         try:
             page.wait_for_function("window.hrpView && hrpView.status().frames > 2 && hrpView.truth() !== null",
                                    timeout=30000)
@@ -262,7 +266,6 @@ def main():
         geo = page.evaluate("hrpView.geometry()")
         field_box = page.locator("#field").bounding_box()
         cam_box = page.locator("#camera").bounding_box()
-        ctx.close()
     truth.stop = True
     truth.join()
 
