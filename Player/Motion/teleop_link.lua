@@ -1,0 +1,163 @@
+-- The `teleop` shm block between Lib/Teleop.lua (the operator's side: a checked trajectory in
+-- chunks, commands, a heartbeat) and the motion state teleop (Player/Motion/states/teleop.lua).
+-- Before a tick: a new chunk is taken into the trajectory being received (in order; a chunk out of
+-- order, an angle that is not finite or a size that does not fit the body drops the trajectory
+-- with the reason), and a trajectory whose samples have all arrived and whose checksum matches is
+-- ctl.teleop_rx with whole = true; a new command goes into ctl.teleop_cmd; the heartbeat's age into
+-- ctl.teleop_link_ok. After it: the executor's state (ctl.teleop_report) is written back.
+local ffi = require('ffi')
+local teleop = require('teleop')
+
+local M = {}
+local Link = {}
+Link.__index = Link
+
+local CHUNK = 2048    -- Config/shm.schema: nteleop_chunk
+local NSEG = 16       -- Config/shm.schema: nteleop_seg
+local MAX_SAMPLES = 200 * 120   -- two minutes at 200 Hz: a longer trajectory is refused
+
+-- link_timeout: s without a heartbeat before the link counts as lost.
+function M.new(block, link_timeout)
+  local self = setmetatable({ b = block, chunk = block.chunk_seq[0], cmd = block.cmd_seq[0],
+    beat = block.heartbeat[0], beat_t = nil, timeout = link_timeout, reason = '', written_reason = nil }, Link)
+  self.writer = function(x) self:write(x) end
+  return self
+end
+
+local function drop(self, ctl, why)
+  self.rx = nil
+  ctl.teleop_rx = nil
+  self.reason = why
+end
+
+-- Takes the chunk in block x (inside its read lock).
+local function take_chunk(self, ctl, x)
+  local id, n, nj = x.traj_id[0], x.traj_n[0], x.traj_nj[0]
+  local rx = self.rx
+  if not rx or rx.id ~= id then
+    if nj ~= ctl.n then
+      return drop(self, ctl, string.format('trajectory %d: %d angles per sample, the body has %d', id, nj, ctl.n))
+    end
+    if n < 1 or n > MAX_SAMPLES then
+      return drop(self, ctl, string.format('trajectory %d: %d samples (1..%d)', id, n, MAX_SAMPLES))
+    end
+    local nseg = x.traj_nseg[0]
+    if nseg < 1 or nseg > NSEG then
+      return drop(self, ctl, string.format('trajectory %d: %d segments (1..%d)', id, nseg, NSEG))
+    end
+    rx = { id = id, n = n, nj = nj, checksum = x.traj_checksum[0], segments = {}, q = {}, received = 0,
+      hash = teleop.FNV_START, whole = false }
+    for s = 1, nseg do rx.segments[s] = x.traj_seg[s - 1] end
+    if rx.segments[nseg] ~= n then
+      return drop(self, ctl, string.format('trajectory %d: its last segment ends at sample %d, not %d', id,
+        rx.segments[nseg], n))
+    end
+    self.rx = rx
+    ctl.teleop_rx = rx
+  end
+  if rx.whole then return end
+  local first, cn = x.chunk_first[0], x.chunk_n[0]
+  if first ~= rx.received then
+    return drop(self, ctl, string.format('trajectory %d: a chunk from sample %d, expected %d (a chunk lost)', id,
+      first + 1, rx.received + 1))
+  end
+  if cn < 1 or cn * nj > CHUNK or first + cn > n then
+    return drop(self, ctl, string.format('trajectory %d: a chunk of %d samples from sample %d does not fit', id, cn,
+      first + 1))
+  end
+  local h, fnv = rx.hash, teleop.fnv1a
+  for k = 0, cn - 1 do
+    local s = {}
+    for j = 1, nj do
+      local a = x.chunk[k * nj + j - 1]
+      if a ~= a or a == math.huge or a == -math.huge then
+        return drop(self, ctl, string.format('trajectory %d: sample %d, joint %d is not a finite angle', id,
+          first + k + 1, j))
+      end
+      s[j] = a
+      h = fnv(h, a)
+    end
+    rx.q[first + k + 1] = s
+  end
+  rx.hash = h
+  rx.received = first + cn
+  if rx.received == n then
+    if h ~= rx.checksum then
+      return drop(self, ctl, string.format('trajectory %d: checksum %08x, sent %08x: refused', id,
+        h % 2 ^ 32, rx.checksum % 2 ^ 32))
+    end
+    rx.whole = true
+  end
+end
+
+function Link:before(ctl)
+  local b = self.b
+  local t = ctl.t
+  local beat = b.heartbeat[0]
+  if beat ~= self.beat then
+    self.beat, self.beat_t = beat, t
+  end
+  ctl.teleop_link_ok = self.beat_t ~= nil and t - self.beat_t <= self.timeout
+  local seq = b.chunk_seq[0]
+  if seq ~= self.chunk then
+    self.chunk = seq
+    b:read(function(x) take_chunk(self, ctl, x) end)
+    self.ack = seq
+  end
+  seq = b.cmd_seq[0]
+  if seq ~= self.cmd then
+    self.cmd = seq
+    local cmd, id = b.cmd[0], b.traj_id[0]
+    if ctl:state() == 'teleop' then
+      ctl.teleop_cmd = { seq = seq, cmd = cmd, id = id }
+    else
+      ctl.teleop_done = { seq = seq, ok = false, error = "the teleop motion is not running (Motion.request('teleop'))" }
+    end
+  end
+end
+
+local STATE = { idle = 0, loading = 1, ready = 2, running = 3, paused = 4, stopped = 5, held = 6, done = 7 }
+M.STATE = STATE
+
+function Link:write(x)
+  local r, rx = self.r, self.rx
+  if self.ack then x.chunk_ack[0] = self.ack end
+  local done = self.done
+  if done then
+    x.cmd_done[0] = done.seq
+    x.cmd_rc[0] = done.ok and 0 or -1
+    if not done.ok then self.reason = done.error end
+  end
+  x.tick[0] = self.tick
+  x.link_ok[0] = self.link_ok and 1 or 0
+  x.received[0] = rx and rx.received or 0
+  x.loaded_id[0] = rx and rx.whole and rx.id or 0
+  local state = r and r.state or 'idle'
+  if state == 'idle' and rx then state = rx.whole and 'ready' or 'loading' end
+  x.state[0] = STATE[state]
+  x.sample[0] = r and r.sample or 0
+  x.segment[0] = r and r.segment or 0
+  -- the latest event's reason: the link's (a trajectory dropped, a command refused) or the state's
+  if r and r.reason ~= '' and r.reason ~= self.state_reason then self.reason = r.reason end
+  self.state_reason = r and r.reason
+  local reason = self.reason
+  if reason ~= self.written_reason then
+    ffi.fill(x.reason, 256)
+    ffi.copy(x.reason, reason, math.min(#reason, 255))
+    self.written_reason = reason
+  end
+end
+
+function Link:after(ctl, tick)
+  if ctl.teleop_reason then
+    self.reason = ctl.teleop_reason
+    ctl.teleop_reason = nil
+  end
+  self.r, self.tick, self.link_ok = ctl.teleop_report, tick, ctl.teleop_link_ok
+  self.done = ctl.teleop_done
+  ctl.teleop_done = nil
+  self.b:write(self.writer)
+  self.ack = nil
+end
+
+return M
