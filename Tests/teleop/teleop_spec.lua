@@ -1,0 +1,251 @@
+-- luacheck: std +busted
+-- Teleoperation without a simulator (docs/teleoperation.md): the Hubo2+'s key poses load and bad
+-- ones are refused naming the file and the key; the validator (Lib/teleop.lua) accepts "reach"
+-- from the walk's stance and refuses four crafted key poses (Tests/teleop/keyposes/) each for its
+-- reason at its first failing instant; the executor (the motion state teleop and its shm link, the
+-- joints following the commands perfectly) starts only a trajectory that arrived whole with its
+-- checksum right, pauses, resumes and stops at the tick a command arrives, and on a lost link
+-- finishes the segment or holds, never starting the next.
+local Config = require('Config')
+local kin = require('kinematics')
+local control = require('Motion.control')
+local teleop = require('teleop')
+local teleop_link = require('Motion.teleop_link')
+local Teleop = require('Teleop')
+local shm = require('shm')
+
+local BODY = 'hubo2plus'
+local FIXTURES = (os.getenv('HRP_ROOT') or '.') .. '/Tests/teleop/keyposes/'
+local robot = Config.load('robot', nil, { robot = BODY })
+local params = Config.load('walk', nil, { robot = BODY })
+local model = kin.load({ robot = BODY })
+local cfg = Config.load('teleop', nil, { robot = BODY })
+
+local function tick(c, link, k)
+  for i = 1, c.n do c.pos[i] = c.q[i] end
+  link:before(c)
+  c:tick(c.t + c.dt)
+  link:after(c, k)
+end
+
+-- the walk's stance, reached with perfect joints: where a trajectory starts
+local block = shm.open('teleop')
+local link = teleop_link.new(block, cfg.executor.link_timeout)
+local c = control.new({ robot = robot, params = params, model = model })
+local k = 0
+local function run(n, beat)
+  for _ = 1, n do
+    k = k + 1
+    if beat then Teleop.heartbeat() end
+    tick(c, link, k)
+  end
+end
+run(400)
+local q0 = {}
+for i = 1, c.n do q0[i] = c.q[i] end
+
+local function kp_error(path)
+  local ok, err = pcall(teleop.keypose_file, path, { robot = BODY })
+  assert.is_false(ok)
+  return tostring(err)
+end
+
+local function write(text)
+  local path = os.tmpname() .. '.lua'
+  local f = assert(io.open(path, 'w'))
+  f:write(text)
+  f:close()
+  return path
+end
+
+describe('key poses', function()
+  it("of the Hubo2+ load (reach, ready, push, crouch_reach)", function()
+    for _, name in ipairs({ 'reach', 'ready', 'push', 'crouch_reach' }) do
+      local kp = teleop.keypose(name, { robot = BODY })
+      assert.equals(name, kp.name)
+      assert.equals('hold', kp.limbs.lfoot.mode)
+    end
+  end)
+
+  it('refuse bad input naming the file and the key', function()
+    local cases = {
+      { "limbs = { rhand = { mode = 'grab' } }", "key 'limbs.rhand.mode' must be 'free', 'hold' or 'follow'" },
+      { "limbs = { rhand = { mode = 'free' } }", "key 'limbs.rhand.pos' must be 3 finite numbers" },
+      { "limbs = { rhand = { mode = 'free', pos = { 0, 0, 0/0 } } }", "key 'limbs.rhand.pos' must be 3 finite" },
+      { "limbs = { tail = { mode = 'hold' } }", "key 'limbs.tail' names no limb of the teleop config" },
+      { "limbs = { lfoot = { mode = 'free', pos = { 0, 0.1, 0.1 } } }", "key 'limbs.lfoot.mode' must be 'hold'" },
+      { "limbs = { rhand = { mode = 'hold' } }, joints = { XYZ = 1 }", "key 'joints.XYZ' names no joint" },
+      { "limbs = { rhand = { mode = 'hold' } }, com = { 1 }", "key 'com' must be 2 finite numbers" },
+    }
+    for _, case in ipairs(cases) do
+      local path = write("return { doc = 'x', duration = 2, " .. case[1] .. ' }')
+      local err = kp_error(path)
+      os.remove(path)
+      assert.is_truthy(err:find(path, 1, true), err)
+      assert.is_truthy(err:find(case[2], 1, true), err)
+    end
+    local path = write("return { doc = 'x', duration = 0.01, limbs = { rhand = { mode = 'hold' } } }")
+    assert.is_truthy(kp_error(path):find("key 'duration' must be a number of seconds in 0.2..60", 1, true))
+    os.remove(path)
+  end)
+end)
+
+local v = teleop.validator({ robot = BODY })
+
+describe('the validator', function()
+  local plan
+  it('accepts "reach" from the stance, every sample checked', function()
+    local kp = teleop.keypose('reach', { robot = BODY })
+    local why
+    plan, why = v:plan(q0, { kp })
+    assert.is_nil(why and why.message)
+    local f = plan.figures
+    print(string.format('# reach: %d samples (%.2f s), hand %.1f mm from its target, COM >= %.1f mm inside the '
+      .. 'support polygon, feet drift %.2f mm, peak joint speed %.0f %% of the actuators\', %d collision pairs, '
+      .. 'solve + checks %.0f ms (collision %.0f ms)', plan.n, (plan.n - 1) * plan.dt, f.reach * 1e3,
+      f.com_margin * 1e3, f.foot_drift * 1e3, f.speed_share * 100, v.col:npair(), f.solve_us / 1e3,
+      f.collide_us / 1e3))
+    assert.is_true(f.reach <= cfg.check.reach)
+    assert.is_true(f.com_margin >= cfg.check.com_margin)
+    assert.equals(plan.n, plan.segments[1])
+    assert.equals(1 + math.floor(kp.duration / plan.dt + 0.5), plan.n)
+    for i = 1, plan.n do assert.equals(#robot.joints, #plan.q[i]) end
+  end)
+
+  it('accepts a plan of two key poses (ready, then push)', function()
+    local p, why = v:plan(q0, { teleop.keypose('ready', { robot = BODY }), teleop.keypose('push', { robot = BODY }) })
+    assert.is_nil(why and why.message)
+    assert.equals(2, #p.segments)
+    print(string.format('# ready + push: %d samples, hand %.1f mm off, COM >= %.1f mm inside', p.n,
+      p.figures.reach * 1e3, p.figures.com_margin * 1e3))
+  end)
+
+  local bad = {
+    { 'out_of_reach', 'reach' },
+    { 'self_collision', 'self_collision' },
+    { 'com_outside', 'com' },
+    { 'joint_limit', 'joint_limit' },
+  }
+  for _, case in ipairs(bad) do
+    it(string.format('refuses %s for %s, naming the first failing instant', case[1], case[2]), function()
+      local kp = teleop.keypose_file(FIXTURES .. case[1] .. '.lua', { robot = BODY })
+      local p, why = v:plan(q0, { kp })
+      assert.is_nil(p)
+      print('# ' .. why.message)
+      assert.equals(case[2], why.reason, why.message)
+      assert.equals(case[1], why.keypose)
+      assert.is_true(why.sample > 1 and why.sample <= 1 + math.floor(kp.duration / v.dt + 0.5))
+      assert.near(why.t, (why.sample - 1) * v.dt, 1e-9)
+    end)
+  end
+
+  it('has a checksum that changes with any one angle', function()
+    local h = teleop.checksum(plan.q, plan.n, plan.nj)
+    assert.equals(plan.checksum, h)
+    local keep = plan.q[plan.n][5]
+    plan.q[plan.n][5] = keep + 1e-12
+    assert.are_not.equal(h, teleop.checksum(plan.q, plan.n, plan.nj))
+    plan.q[plan.n][5] = keep
+  end)
+end)
+
+describe('the executor', function()
+  local kp = teleop.keypose('reach', { robot = BODY })
+  local plan = assert(v:plan(q0, { kp }))
+  local function wait() run(1, true) end
+
+  local function status() return Teleop.status() end
+
+  it('refuses a start before the trajectory arrived, and one whose checksum is wrong', function()
+    c:request('teleop')
+    run(300, true)
+    assert.equals('teleop', c:state())
+    Teleop.start(999)
+    run(1, true)
+    assert.equals('idle', status().state)
+    assert.is_false(status().last.ok)
+    assert.is_truthy(status().reason:find('has not arrived'))
+    local id = Teleop.send(plan, wait, { corrupt = 2 })
+    run(1, true)
+    assert.is_truthy(status().reason:find('checksum'), status().reason)
+    Teleop.start(id)
+    run(1, true)
+    assert.is_false(status().last.ok)
+    assert.equals('idle', status().state)
+  end)
+
+  it('plays a whole trajectory; pause, resume and stop act at the tick they arrive', function()
+    for i = 1, c.n do c.q[i] = q0[i] end
+    local id = Teleop.send(plan, wait)
+    run(1, true)
+    assert.equals('ready', status().state)
+    assert.equals(id, status().loaded)
+    Teleop.start(id)
+    run(100, true)
+    assert.equals('running', status().state)
+    assert.equals(100, status().sample)
+    Teleop.pause()
+    run(1, true)
+    local held = {}
+    for i = 1, c.n do held[i] = c.q[i] end
+    run(50, true)
+    assert.equals('paused', status().state)
+    for i = 1, c.n do assert.equals(held[i], c.q[i]) end
+    Teleop.resume()
+    run(10, true)
+    assert.equals(110, status().sample)
+    Teleop.stop()
+    run(1, true)
+    assert.equals('stopped', status().state)
+    for i = 1, c.n do assert.equals(plan.q[110][i], c.q[i]) end
+    run(20, true)
+    for i = 1, c.n do assert.equals(plan.q[110][i], c.q[i]) end
+    Teleop.resume()
+    run(1, true)
+    assert.is_false(status().last.ok)
+  end)
+
+  it('on a lost link finishes the segment and never starts the next (on_lost = finish)', function()
+    -- back to the start through the plan's first sample, then a two-segment plan
+    for i = 1, c.n do c.q[i] = q0[i] end
+    run(1, true)
+    local two = assert(v:plan(q0, { kp, teleop.keypose('ready', { robot = BODY }) }))
+    local id = Teleop.send(two, wait)
+    Teleop.start(id)
+    run(50, true)
+    assert.equals('running', status().state)
+    run(two.segments[1] + 100, false)   -- the heartbeat stops
+    local s = status()
+    assert.is_false(s.link_ok)
+    assert.equals('held', s.state)
+    assert.equals(two.segments[1], s.sample)
+    print('# lost link: ' .. s.reason)
+    for i = 1, c.n do assert.equals(two.q[two.segments[1]][i], c.q[i]) end
+    Teleop.resume()
+    run(1, false)
+    assert.is_false(status().last.ok)
+  end)
+
+  it('on a lost link holds at once with on_lost = hold, and starts nothing without a link', function()
+    for i = 1, c.n do c.q[i] = q0[i] end
+    run(1, true)
+    local id = Teleop.send(plan, wait)
+    local on_lost = cfg.executor.on_lost
+    c.teleop_cfg.on_lost = 'hold'
+    Teleop.start(id)
+    run(40, true)
+    run(200, false)
+    local s = status()
+    local lost_at = 40 + math.floor(cfg.executor.link_timeout / c.dt)
+    assert.equals('held', s.state)
+    assert.is_true(math.abs(s.sample - lost_at) <= 2, tostring(s.sample))
+    c.teleop_cfg.on_lost = on_lost
+    Teleop.stop()
+    run(1, false)
+    for i = 1, c.n do c.q[i] = q0[i] end
+    Teleop.start(id)
+    run(1, false)
+    assert.is_false(status().last.ok)
+    assert.is_truthy(status().reason:find('link is lost'))
+  end)
+end)
