@@ -1,6 +1,6 @@
 -- Teleoperation's executor from the REPL and the operator's server: a trajectory checked by
 -- Lib/teleop.lua sent in chunks to the motion state teleop (Player/Motion/states/teleop.lua), the
--- commands, the heartbeat and the executor's state, through the `teleop` block.
+-- commands, the heartbeat and the executor's state, through the `teleop` and `teleop.chunk` blocks.
 --
 --   Motion.request('teleop')
 --   local plan = assert(require('teleop').validator():plan(q0, { kp }))
@@ -22,6 +22,7 @@ local CHUNK = 2048   -- Config/shm.schema: nteleop_chunk
 local NSEG = 16
 
 local block = shm.lazy('teleop')
+local chunks = shm.lazy('teleop.chunk')
 
 -- Sends a plan's samples ({ q, n, nj, segments, checksum }); wait(s) is called between chunks until
 -- the executor took each (the REPL's wait: lockstep-aware). opts.corrupt = k changes one angle of chunk k
@@ -32,7 +33,7 @@ function M.send(plan, wait, opts)
   if #plan.segments > NSEG then
     error(string.format('Teleop.send: %d segments, at most %d', #plan.segments, NSEG), 2)
   end
-  local b = block()
+  local b, ack = chunks(), block()
   local per = math.floor(CHUNK / plan.nj)
   local id
   b:write(function(x)
@@ -57,7 +58,7 @@ function M.send(plan, wait, opts)
       x.chunk_seq[0] = seq
     end)
     local tries = 0
-    while b.chunk_ack[0] ~= seq do
+    while ack.chunk_ack[0] ~= seq do
       tries = tries + 1
       if tries > 2000 then error('Teleop.send: the motion process takes no chunks (is it running?)', 2) end
       wait(0.005)
@@ -71,7 +72,7 @@ local function command(name, id)
   local seq
   block():write(function(x)
     x.cmd[0] = M.CMD[name]
-    if id then x.traj_id[0] = id end
+    if id then x.cmd_id[0] = id end
     seq = x.cmd_seq[0] + 1
     x.cmd_seq[0] = seq
   end)

@@ -25,6 +25,7 @@ struct collide {
   pinocchio::GeometryModel geom;
   std::unique_ptr<pinocchio::GeometryData> gdata;
   std::vector<int> qidx;              // caller's joint j -> index in Pinocchio's q
+  std::vector<std::string> names;     // caller's joint order
   Eigen::VectorXd q;
   double margin = 0;
   double check_us = 0;
@@ -47,7 +48,7 @@ double thread_cpu_us() {
 int set_q(collide *c, const double *q) {
   if (!q) return fail(c, "no joint angles");
   for (size_t j = 0; j < c->qidx.size(); j++) {
-    if (!std::isfinite(q[j])) return fail(c, "joint '" + c->model.names[j + 1] + "': angle is not finite");
+    if (!std::isfinite(q[j])) return fail(c, "joint '" + c->names[j] + "': angle is not finite");
     c->q[c->qidx[j]] = q[j];
   }
   pinocchio::updateGeometryPlacements(c->model, *c->data, c->geom, *c->gdata, c->q);
@@ -96,6 +97,7 @@ int collide_new(const char *urdf, int njoint, const char *const *joints, collide
       return -1;
     }
     c->qidx.push_back(c->model.idx_qs[id]);
+    c->names.push_back(name);
   }
   if ((int)seen.size() != c->model.njoints - 1) {
     snprintf(err, errlen, "%s: the joint order names %d joints, the URDF has %d", urdf, (int)seen.size(),

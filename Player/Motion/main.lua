@@ -134,7 +134,7 @@ local check_blocks = require('shm_watch').exit_on_replaced('motion')
 -- whole-body control's targets and status (the state wbc)
 local wbc_link = require('Motion.wbc_link').new(shm.open('wbc'))
 -- teleoperation's trajectories, commands and heartbeat (the state teleop)
-local teleop_link = require('Motion.teleop_link').new(shm.open('teleop'),
+local teleop_link = require('Motion.teleop_link').new(shm.open('teleop'), shm.open('teleop.chunk'),
   Config.load('teleop', nil, { robot = robot.name }).executor.link_timeout)
 
 -- A fault for Tests/fault/faults_test.sh: with $HRP_FAULT_BUSY naming a file, motion loops for ever

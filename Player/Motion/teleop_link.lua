@@ -1,5 +1,6 @@
--- The `teleop` shm block between Lib/Teleop.lua (the operator's side: a checked trajectory in
--- chunks, commands, a heartbeat) and the motion state teleop (Player/Motion/states/teleop.lua).
+-- The `teleop` and `teleop.chunk` shm blocks between Lib/Teleop.lua (the operator's side: a checked
+-- trajectory in chunks, commands, a heartbeat) and the motion state teleop
+-- (Player/Motion/states/teleop.lua).
 -- Before a tick: a new chunk is taken into the trajectory being received (in order; a chunk out of
 -- order, an angle that is not finite or a size that does not fit the body drops the trajectory
 -- with the reason), and a trajectory whose samples have all arrived and whose checksum matches is
@@ -16,9 +17,9 @@ local CHUNK = 2048    -- Config/shm.schema: nteleop_chunk
 local NSEG = 16       -- Config/shm.schema: nteleop_seg
 local MAX_SAMPLES = 200 * 120   -- two minutes at 200 Hz: a longer trajectory is refused
 
--- link_timeout: s without a heartbeat before the link counts as lost.
-function M.new(block, link_timeout)
-  local self = setmetatable({ b = block, chunk = block.chunk_seq[0], cmd = block.cmd_seq[0],
+-- block: teleop, chunks: teleop.chunk; link_timeout: s without a heartbeat before the link counts as lost.
+function M.new(block, chunks, link_timeout)
+  local self = setmetatable({ b = block, cb = chunks, chunk = chunks.chunk_seq[0], cmd = block.cmd_seq[0],
     beat = block.heartbeat[0], beat_t = nil, timeout = link_timeout, reason = '', written_reason = nil }, Link)
   self.writer = function(x) self:write(x) end
   return self
@@ -98,16 +99,17 @@ function Link:before(ctl)
     self.beat, self.beat_t = beat, t
   end
   ctl.teleop_link_ok = self.beat_t ~= nil and t - self.beat_t <= self.timeout
-  local seq = b.chunk_seq[0]
+  local cb = self.cb
+  local seq = cb.chunk_seq[0]
   if seq ~= self.chunk then
     self.chunk = seq
-    b:read(function(x) take_chunk(self, ctl, x) end)
+    cb:read(function(x) take_chunk(self, ctl, x) end)
     self.ack = seq
   end
   seq = b.cmd_seq[0]
   if seq ~= self.cmd then
     self.cmd = seq
-    local cmd, id = b.cmd[0], b.traj_id[0]
+    local cmd, id = b.cmd[0], b.cmd_id[0]
     if ctl:state() == 'teleop' then
       ctl.teleop_cmd = { seq = seq, cmd = cmd, id = id }
     else
@@ -148,13 +150,20 @@ function Link:write(x)
   end
 end
 
+-- Written while the state runs, and when there is something to answer or a change of what is
+-- reported (a chunk taken, the link's state, a reason): the recorder keeps a block when it changes.
 function Link:after(ctl, tick)
   if ctl.teleop_reason then
     self.reason = ctl.teleop_reason
     ctl.teleop_reason = nil
   end
-  self.r, self.tick, self.link_ok = ctl.teleop_report, tick, ctl.teleop_link_ok
-  self.done = ctl.teleop_done
+  local r, done = ctl.teleop_report, ctl.teleop_done
+  local link_ok = ctl.teleop_link_ok
+  if not (r or self.r or done or self.ack or link_ok ~= self.link_ok or self.reason ~= self.written_reason) then
+    return
+  end
+  self.r, self.tick, self.link_ok = r, tick, link_ok
+  self.done = done
   ctl.teleop_done = nil
   self.b:write(self.writer)
   self.ack = nil

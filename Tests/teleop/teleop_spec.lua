@@ -30,7 +30,7 @@ end
 
 -- the walk's stance, reached with perfect joints: where a trajectory starts
 local block = shm.open('teleop')
-local link = teleop_link.new(block, cfg.executor.link_timeout)
+local link = teleop_link.new(block, shm.open('teleop.chunk'), cfg.executor.link_timeout)
 local c = control.new({ robot = robot, params = params, model = model })
 local k = 0
 local function run(n, beat)
