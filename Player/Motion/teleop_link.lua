@@ -25,9 +25,11 @@ function M.new(block, chunks, link_timeout)
   return self
 end
 
-local function drop(self, ctl, why)
+-- Drops trajectory `id` (a start naming it is refused with why).
+local function drop(self, ctl, id, why)
   self.rx = nil
   ctl.teleop_rx = nil
+  ctl.teleop_dropped = { id = id, why = why }
   self.reason = why
 end
 
@@ -37,20 +39,20 @@ local function take_chunk(self, ctl, x)
   local rx = self.rx
   if not rx or rx.id ~= id then
     if nj ~= ctl.n then
-      return drop(self, ctl, string.format('trajectory %d: %d angles per sample, the body has %d', id, nj, ctl.n))
+      return drop(self, ctl, id, string.format('trajectory %d: %d angles per sample, the body has %d', id, nj, ctl.n))
     end
     if n < 1 or n > MAX_SAMPLES then
-      return drop(self, ctl, string.format('trajectory %d: %d samples (1..%d)', id, n, MAX_SAMPLES))
+      return drop(self, ctl, id, string.format('trajectory %d: %d samples (1..%d)', id, n, MAX_SAMPLES))
     end
     local nseg = x.traj_nseg[0]
     if nseg < 1 or nseg > NSEG then
-      return drop(self, ctl, string.format('trajectory %d: %d segments (1..%d)', id, nseg, NSEG))
+      return drop(self, ctl, id, string.format('trajectory %d: %d segments (1..%d)', id, nseg, NSEG))
     end
     rx = { id = id, n = n, nj = nj, checksum = x.traj_checksum[0], segments = {}, q = {}, received = 0,
       hash = teleop.FNV_START, whole = false }
     for s = 1, nseg do rx.segments[s] = x.traj_seg[s - 1] end
     if rx.segments[nseg] ~= n then
-      return drop(self, ctl, string.format('trajectory %d: its last segment ends at sample %d, not %d', id,
+      return drop(self, ctl, id, string.format('trajectory %d: its last segment ends at sample %d, not %d', id,
         rx.segments[nseg], n))
     end
     self.rx = rx
@@ -59,12 +61,12 @@ local function take_chunk(self, ctl, x)
   if rx.whole then return end
   local first, cn = x.chunk_first[0], x.chunk_n[0]
   if first ~= rx.received then
-    return drop(self, ctl, string.format('trajectory %d: a chunk from sample %d, expected %d (a chunk lost)', id,
+    return drop(self, ctl, id, string.format('trajectory %d: a chunk from sample %d, expected %d (a chunk lost)', id,
       first + 1, rx.received + 1))
   end
   if cn < 1 or cn * nj > CHUNK or first + cn > n then
-    return drop(self, ctl, string.format('trajectory %d: a chunk of %d samples from sample %d does not fit', id, cn,
-      first + 1))
+    return drop(self, ctl, id, string.format('trajectory %d: a chunk of %d samples from sample %d does not fit', id,
+      cn, first + 1))
   end
   local h, fnv = rx.hash, teleop.fnv1a
   for k = 0, cn - 1 do
@@ -72,7 +74,7 @@ local function take_chunk(self, ctl, x)
     for j = 1, nj do
       local a = x.chunk[k * nj + j - 1]
       if a ~= a or a == math.huge or a == -math.huge then
-        return drop(self, ctl, string.format('trajectory %d: sample %d, joint %d is not a finite angle', id,
+        return drop(self, ctl, id, string.format('trajectory %d: sample %d, joint %d is not a finite angle', id,
           first + k + 1, j))
       end
       s[j] = a
@@ -84,7 +86,7 @@ local function take_chunk(self, ctl, x)
   rx.received = first + cn
   if rx.received == n then
     if h ~= rx.checksum then
-      return drop(self, ctl, string.format('trajectory %d: checksum %08x, sent %08x: refused', id,
+      return drop(self, ctl, id, string.format('trajectory %d: checksum %08x, sent %08x: refused', id,
         h % 2 ^ 32, rx.checksum % 2 ^ 32))
     end
     rx.whole = true

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# tier: test (make test runs it: about 20 s)
+# tier: check (make check runs it: about 10 s)
 # Teleoperation's executor in the sim (lockstep): the Hubo2+ plays the validated key pose "reach"
 # (the palm within 2 cm of its target), refuses a corrupted trajectory and holds when stopped
 # mid-trajectory (Tests/teleop/hubo_reach_exec.lua). Prints TAP and the figures.

@@ -171,6 +171,7 @@ describe('the executor', function()
     Teleop.start(id)
     run(1, true)
     assert.is_false(status().last.ok)
+    assert.is_truthy(status().reason:find('checksum'), status().reason)
     assert.equals('idle', status().state)
   end)
 

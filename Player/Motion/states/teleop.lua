@@ -52,6 +52,8 @@ local function command(c, d, r)
       return answer(c, cmd, false, 'a trajectory is being played: stop it first')
     end
     if not (rx and rx.id == cmd.id) then
+      local dropped = c.teleop_dropped
+      if dropped and dropped.id == cmd.id then return answer(c, cmd, false, dropped.why) end
       return answer(c, cmd, false, string.format('trajectory %d has not arrived', cmd.id))
     end
     if not rx.whole then
