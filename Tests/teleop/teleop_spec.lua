@@ -112,6 +112,15 @@ describe('the validator', function()
     for i = 1, plan.n do assert.equals(#robot.joints, #plan.q[i]) end
   end)
 
+  it("accepts each of the Hubo2+'s key poses from the stance", function()
+    for _, name in ipairs({ 'ready', 'push', 'crouch_reach' }) do
+      local p, why = v:plan(q0, { teleop.keypose(name, { robot = BODY }) })
+      assert.is_nil(why and why.message)
+      print(string.format('# %s: %d samples, hand %.1f mm off, COM >= %.1f mm inside, peak joint speed %.0f %%', name,
+        p.n, p.figures.reach * 1e3, p.figures.com_margin * 1e3, p.figures.speed_share * 100))
+    end
+  end)
+
   it('accepts a plan of two key poses (ready, then push)', function()
     local p, why = v:plan(q0, { teleop.keypose('ready', { robot = BODY }), teleop.keypose('push', { robot = BODY }) })
     assert.is_nil(why and why.message)
@@ -182,9 +191,24 @@ describe('the executor', function()
     assert.equals('ready', status().state)
     assert.equals(id, status().loaded)
     Teleop.start(id)
-    run(100, true)
+    run(40, true)
+    -- the garbage the executor and its link make per tick while playing, over 400 ticks (the
+    -- heartbeat bumped in place: the sender's writes are not the motion process's)
+    collectgarbage('collect')
+    collectgarbage('stop')
+    local k0 = collectgarbage('count')
+    for _ = 1, 400 do
+      block.heartbeat[0] = block.heartbeat[0] + 1
+      k = k + 1
+      tick(c, link, k)
+    end
+    local per = (collectgarbage('count') - k0) * 1024 / 400
+    collectgarbage('restart')
+    print(string.format('# executor playing: %.1f bytes of garbage per tick (400 ticks)', per))
+    assert.is_true(per < 16, string.format('%.1f bytes per tick', per))
+    run(10, true)
     assert.equals('running', status().state)
-    assert.equals(100, status().sample)
+    assert.equals(450, status().sample)
     Teleop.pause()
     run(1, true)
     local held = {}
@@ -194,13 +218,13 @@ describe('the executor', function()
     for i = 1, c.n do assert.equals(held[i], c.q[i]) end
     Teleop.resume()
     run(10, true)
-    assert.equals(110, status().sample)
+    assert.equals(460, status().sample)
     Teleop.stop()
     run(1, true)
     assert.equals('stopped', status().state)
-    for i = 1, c.n do assert.equals(plan.q[110][i], c.q[i]) end
+    for i = 1, c.n do assert.equals(plan.q[460][i], c.q[i]) end
     run(20, true)
-    for i = 1, c.n do assert.equals(plan.q[110][i], c.q[i]) end
+    for i = 1, c.n do assert.equals(plan.q[460][i], c.q[i]) end
     Teleop.resume()
     run(1, true)
     assert.is_false(status().last.ok)
