@@ -18,9 +18,11 @@
 --   plan  --> { dt, n, nj, q = { {nj angles} x n }, segments = { last sample of each }, checksum, figures }
 --   why   --> { reason, t, sample, segment, keypose, detail, message }   (plan nil: rejected)
 --
--- Reasons: 'keypose' (a limb or joint the body lacks, a foot not held), 'joint_limit', 'joint_speed',
--- 'self_collision', 'com' (outside the support polygon's margin), 'foot_drift', 'reach'. t is the
--- first failing instant (s from the plan's start; sample = t / dt + 1).
+-- Reasons: 'reach' (a free limb short of its target at its segment's end: checked first), then per
+-- sample in order 'joint_limit', 'joint_speed', 'self_collision', 'com' (inside the support polygon
+-- by less than the margin), 'foot_drift'. t is the first failing instant (s from the plan's start;
+-- sample = t / dt + 1). A key pose naming a limb or joint the body lacks, or a foot not held, is an
+-- error when it is loaded (the file and the key named).
 local Config = require('Config')
 local bit = require('bit')
 
@@ -28,7 +30,7 @@ local format, floor, sqrt, min, max = string.format, math.floor, math.sqrt, math
 
 local M = {}
 
-M.REASONS = { 'keypose', 'joint_limit', 'joint_speed', 'self_collision', 'com', 'foot_drift', 'reach' }
+M.REASONS = { 'reach', 'joint_limit', 'joint_speed', 'self_collision', 'com', 'foot_drift' }
 local FEET = { lfoot = true, rfoot = true }
 
 -- ---------------------------------------------------------------------------------------------------
