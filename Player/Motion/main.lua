@@ -134,8 +134,9 @@ local check_blocks = require('shm_watch').exit_on_replaced('motion')
 -- whole-body control's targets and status (the state wbc)
 local wbc_link = require('Motion.wbc_link').new(shm.open('wbc'))
 -- teleoperation's trajectories, commands and heartbeat (the state teleop)
-local teleop_link = require('Motion.teleop_link').new(shm.open('teleop'), shm.open('teleop.chunk'),
-  Config.load('teleop', nil, { robot = robot.name }).executor.link_timeout)
+local teleop_link = require('Motion.teleop_link')
+teleop_link = teleop_link.new(shm.open('teleop'), shm.open('teleop.chunk'),
+  Config.load('teleop', nil, { robot = robot.name }).executor.link_timeout, teleop_link.bounds(robot))
 
 -- A fault for Tests/fault/faults_test.sh: with $HRP_FAULT_BUSY naming a file, motion loops for ever
 -- (running, answering nothing: the hung writer the DCM's stall check catches) once the file appears.

@@ -2,9 +2,10 @@
 -- trajectory in chunks, commands, a heartbeat) and the motion state teleop
 -- (Player/Motion/states/teleop.lua).
 -- Before a tick: a new chunk is taken into the trajectory being received (in order; a chunk out of
--- order, an angle that is not finite or a size that does not fit the body drops the trajectory
--- with the reason), and a trajectory whose samples have all arrived and whose checksum matches is
--- ctl.teleop_rx with whole = true; a new command goes into ctl.teleop_cmd; the heartbeat's age into
+-- order, an angle that is not finite, beyond its joint's limits or a step faster than the validator
+-- allows, or a size that does not fit the body drops the trajectory with the reason, whoever sent
+-- it), and a trajectory whose samples have all arrived and whose checksum matches is ctl.teleop_rx
+-- with whole = true; a new command goes into ctl.teleop_cmd; the heartbeat's age into
 -- ctl.teleop_link_ok. After it: the executor's state (ctl.teleop_report) is written back.
 local ffi = require('ffi')
 local teleop = require('teleop')
@@ -17,9 +18,28 @@ local CHUNK = 2048    -- Config/shm.schema: nteleop_chunk
 local NSEG = 16       -- Config/shm.schema: nteleop_seg
 local MAX_SAMPLES = 200 * 120   -- two minutes at 200 Hz: a longer trajectory is refused
 
--- block: teleop, chunks: teleop.chunk; link_timeout: s without a heartbeat before the link counts as lost.
-function M.new(block, chunks, link_timeout)
+-- The bounds every sample that arrives is held to, whoever sent it: the joints' limits and the
+-- step one period allows at the validator's share of each actuator's speed (robot: the robot config).
+function M.bounds(robot)
+  local Config = require('Config')
+  local copts = { robot = robot.name }
+  local actuators = Config.load('actuators', nil, copts)
+  local share = Config.load('teleop', nil, copts).check.speed_share
+  local b = { lo = {}, hi = {}, step = {} }
+  for i, j in ipairs(robot.joints) do
+    b.lo[i], b.hi[i] = robot.limits[j][1], robot.limits[j][2]
+    local act = actuators[robot.actuator[j]]
+    -- a hair over the validator's bound: its samples pass whatever their rounding
+    b.step[i] = (act and act.speed or 1.0) * share * robot.period * (1 + 1e-6) + 1e-9
+  end
+  return b
+end
+
+-- block: teleop, chunks: teleop.chunk; link_timeout: s without a heartbeat before the link counts as
+-- lost; bounds: M.bounds(robot).
+function M.new(block, chunks, link_timeout, bounds)
   local self = setmetatable({ b = block, cb = chunks, chunk = chunks.chunk_seq[0], cmd = block.cmd_seq[0],
+    bounds = bounds,
     beat = block.heartbeat[0], beat_t = nil, timeout = link_timeout, reason = '', written_reason = nil }, Link)
   self.writer = function(x) self:write(x) end
   return self
@@ -30,12 +50,14 @@ local function drop(self, ctl, id, why)
   self.rx = nil
   ctl.teleop_rx = nil
   ctl.teleop_dropped = { id = id, why = why }
+  self.dropped_id = id
   self.reason = why
 end
 
 -- Takes the chunk in block x (inside its read lock).
 local function take_chunk(self, ctl, x)
   local id, n, nj = x.traj_id[0], x.traj_n[0], x.traj_nj[0]
+  if id == self.dropped_id then return end   -- the rest of a dropped trajectory: taken, not kept
   local rx = self.rx
   if not rx or rx.id ~= id then
     if nj ~= ctl.n then
@@ -69,13 +91,24 @@ local function take_chunk(self, ctl, x)
       cn, first + 1))
   end
   local h, fnv = rx.hash, teleop.fnv1a
+  local lo, hi, step = self.bounds.lo, self.bounds.hi, self.bounds.step
+  local names = ctl.robot.joints
   for k = 0, cn - 1 do
     local s = {}
+    local before = rx.q[first + k]
     for j = 1, nj do
       local a = x.chunk[k * nj + j - 1]
       if a ~= a or a == math.huge or a == -math.huge then
-        return drop(self, ctl, id, string.format('trajectory %d: sample %d, joint %d is not a finite angle', id,
-          first + k + 1, j))
+        return drop(self, ctl, id, string.format('trajectory %d: sample %d, %s is not a finite angle', id,
+          first + k + 1, names[j]))
+      end
+      if a < lo[j] or a > hi[j] then
+        return drop(self, ctl, id, string.format('trajectory %d: sample %d, %s at %.3f rad beyond %.3f .. %.3f', id,
+          first + k + 1, names[j], a, lo[j], hi[j]))
+      end
+      if before and math.abs(a - before[j]) > step[j] then
+        return drop(self, ctl, id, string.format('trajectory %d: sample %d, %s steps %.4f rad in a period (at most '
+          .. '%.4f)', id, first + k + 1, names[j], math.abs(a - before[j]), step[j]))
       end
       s[j] = a
       h = fnv(h, a)

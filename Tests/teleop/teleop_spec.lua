@@ -30,7 +30,7 @@ end
 
 -- the walk's stance, reached with perfect joints: where a trajectory starts
 local block = shm.open('teleop')
-local link = teleop_link.new(block, shm.open('teleop.chunk'), cfg.executor.link_timeout)
+local link = teleop_link.new(block, shm.open('teleop.chunk'), cfg.executor.link_timeout, teleop_link.bounds(robot))
 local c = control.new({ robot = robot, params = params, model = model })
 local k = 0
 local function run(n, beat)
@@ -181,6 +181,31 @@ describe('the executor', function()
     run(1, true)
     assert.is_false(status().last.ok)
     assert.is_truthy(status().reason:find('checksum'), status().reason)
+    assert.equals('idle', status().state)
+  end)
+
+  it('refuses a trajectory with a sample beyond a limit or a step too fast, whoever sent it', function()
+    local function copy_plan()
+      local q = {}
+      for i = 1, plan.n do
+        q[i] = {}
+        for j = 1, plan.nj do q[i][j] = plan.q[i][j] end
+      end
+      return { q = q, n = plan.n, nj = plan.nj, segments = { plan.n } }
+    end
+    local far = copy_plan()
+    for i = 200, far.n do far.q[i][14] = 3.0 end   -- RWY beyond 2.967 from sample 200
+    far.checksum = teleop.checksum(far.q, far.n, far.nj)
+    Teleop.send(far, wait)
+    run(1, true)
+    assert.is_truthy(status().reason:find('sample 200, RWY at 3.000 rad beyond', 1, true), status().reason)
+    assert.equals('idle', status().state)
+    local jump = copy_plan()
+    for i = 300, jump.n do jump.q[i][4] = jump.q[i][4] + 0.1 end   -- LSP jumps 0.1 rad at sample 300
+    jump.checksum = teleop.checksum(jump.q, jump.n, jump.nj)
+    Teleop.send(jump, wait)
+    run(1, true)
+    assert.is_truthy(status().reason:find('sample 300, LSP steps', 1, true), status().reason)
     assert.equals('idle', status().state)
   end)
 
