@@ -87,6 +87,10 @@ function M.keypose(name, opts)
   local ok, t = pcall(Config.load, concern, nil, copts)
   if not ok then error(tostring(t), 0) end
   local files = table.concat(Config.files(concern, copts), ' + ')
+  local spec = dofile(require('native').root() .. '/Config/spec/keyposes.lua')
+  for k in pairs(t) do
+    if spec[k] == nil then keypose_error(files, tostring(k), 'is not a key of a key pose') end
+  end
   return against_body(normalise(name, files, t), files, Config.load('robot', nil, copts),
     Config.load('teleop', nil, copts))
 end
