@@ -3,6 +3,7 @@
 --   Motion.request('walk')     -- relax, sit, stand, walk, kick_left, kick_right, wbc (Lib/WBC.lua),
 --                              -- pattern, touch (the arms until the hands feel a touch: touch.lua)
 --   Motion.request('wbc', { skill = 'hello_bye' })   -- whole-body control running a skill (WBC.skill)
+--   Motion.request('teleop')   -- the executor of checked teleoperation trajectories (Lib/Teleop.lua)
 --   Motion.request('pattern', { file = 'build/pattern/hoap3_walk.csv' })
 --                              -- plays a joint trajectory file (Lib/trajectory.lua, made ahead by
 --                              -- Tools/pattern/gen_pattern.lua) from the current pose, then stance;
@@ -25,10 +26,10 @@ local M = {}
 
 -- the motion state machine's states, in the order of motion.state / motion.request
 M.STATES = { 'relax', 'sit', 'stance', 'walk', 'kick_left', 'kick_right', 'falling', 'standup_front',
-  'standup_back', 'wbc', 'pattern', 'touch' }
+  'standup_back', 'wbc', 'pattern', 'touch', 'teleop' }
 -- request names and the state each asks for
 M.REQUESTS = { relax = 'relax', sit = 'sit', stand = 'stance', walk = 'walk', kick_left = 'kick_left',
-  kick_right = 'kick_right', wbc = 'wbc', pattern = 'pattern', touch = 'touch' }
+  kick_right = 'kick_right', wbc = 'wbc', pattern = 'pattern', touch = 'touch', teleop = 'teleop' }
 
 local index = {}
 for i, s in ipairs(M.STATES) do index[s] = i - 1 end

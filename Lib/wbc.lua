@@ -76,8 +76,9 @@ function M.load(opts)
   end, opts.robot and { robot = opts.robot } or nil)
 end
 
--- Joint limits from a robot config: `limits` (rad) and each actuator's speed (rad/s).
-function Ctl:limits(robot)
+-- Joint limits from a robot config: `limits` (rad) and each actuator's speed (rad/s), times
+-- speed_share (default 1: the whole speed).
+function Ctl:limits(robot, speed_share)
   local actuators = require('Config').load('actuators', nil, { robot = robot.name })
   local n = self.n
   local lo, hi, speed = ffi.new('double[?]', n), ffi.new('double[?]', n), ffi.new('double[?]', n)
@@ -85,7 +86,7 @@ function Ctl:limits(robot)
     local lim = robot.limits[j]
     lo[i - 1], hi[i - 1] = lim[1], lim[2]
     local act = actuators[robot.actuator[j]]
-    speed[i - 1] = act and act.speed or 1.0
+    speed[i - 1] = (act and act.speed or 1.0) * (speed_share or 1)
   end
   check(self, C.wbc_set_limits(self.cw, lo, hi, speed))
 end

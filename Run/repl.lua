@@ -35,7 +35,7 @@ local function optional(name)
   end
 end
 if Config.platform() == 'Sim' then optional('Sim') end
-for _, name in ipairs({ 'Motion', 'Walk', 'Vision', 'World', 'Game', 'WBC' }) do optional(name) end
+for _, name in ipairs({ 'Motion', 'Walk', 'Vision', 'World', 'Game', 'WBC', 'Teleop' }) do optional(name) end
 
 local participant -- set in script mode
 
@@ -108,6 +108,8 @@ hrp REPL (robot id %d, body %s, platform %s)
   Motion.request('walk')  Walk.set_velocity(vx, vy, va)  Vision.ball()   (when loaded)
   Motion.request('wbc')  WBC.set_target('r_palm', {0.35, -0.25, 0.9})  WBC.set_target('r_palm', nil)  WBC.status()
   Motion.request('wbc', { skill = 'hello_bye' })  WBC.skill('hello_bye')  WBC.skill(nil)   (skills: docs/whole-body.md)
+  Motion.request('teleop')  Teleop.send(plan, wait)  Teleop.start(id)  Teleop.stop()  Teleop.status()
+                      (key poses, their validation: require('teleop'), docs/teleoperation.md)
   help()  quit with Ctrl-D]]
 function env.help() print(string.format(HELP, shm.robot_id(), Config.robot(), Config.platform())) end
 

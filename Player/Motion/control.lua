@@ -3,8 +3,8 @@
 -- driven by tests and benchmarks directly.
 --
 -- States (Lib/Motion.lua's STATES, one small file each in Player/Motion/states/): relax, sit,
--- stance, walk, kick_left, kick_right, falling, standup_front, standup_back, wbc, pattern, touch.
--- Requests (relax, sit, stand, walk, kick_left, kick_right, wbc, pattern, touch) are wishes: `ctl.want`
+-- stance, walk, kick_left, kick_right, falling, standup_front, standup_back, wbc, pattern, touch, teleop.
+-- Requests (relax, sit, stand, walk, kick_left, kick_right, wbc, pattern, touch, teleop) are wishes: `ctl.want`
 -- holds the last one and the states move towards it (relax at once from anywhere; the rest through
 -- stance). 'pattern' takes a trajectory file (Lib/trajectory.lua), read when it is asked for: ctl.pattern.
 --
@@ -41,7 +41,7 @@ local TRANSITIONS = {
   relax = { sit = 'sit', stand = 'stance', walk = 'stance', kick_left = 'stance', kick_right = 'stance' },
   sit = { stand = 'stance', walk = 'stance', kick_left = 'stance', kick_right = 'stance' },
   stance = { sit = 'sit', walk = 'walk', kick_left = 'kick_left', kick_right = 'kick_right', wbc = 'wbc',
-    pattern = 'pattern', touch = 'touch', fall = 'falling' },
+    pattern = 'pattern', touch = 'touch', teleop = 'teleop', fall = 'falling' },
   walk = { done = 'stance', fall = 'falling' },
   kick_left = { done = 'stance', fall = 'falling' },
   kick_right = { done = 'stance', fall = 'falling' },
@@ -51,11 +51,12 @@ local TRANSITIONS = {
   wbc = { done = 'stance', fall = 'falling' },
   pattern = { done = 'stance', fall = 'falling' },
   touch = { done = 'stance', fall = 'falling' },
+  teleop = { done = 'stance', fall = 'falling' },
   ['*'] = { relax = 'relax' },
 }
 -- states in which a fall is watched for (the stand-ups check the result themselves)
 local WATCH_FALL = { stance = true, walk = true, kick_left = true, kick_right = true, wbc = true, pattern = true,
-  touch = true }
+  touch = true, teleop = true }
 
 local ROLES = { legs = true, arms = true, head = true, all = true }
 

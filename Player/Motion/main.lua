@@ -133,6 +133,10 @@ local hardness, actuator_mode = actuator.hardness, actuator.mode
 local check_blocks = require('shm_watch').exit_on_replaced('motion')
 -- whole-body control's targets and status (the state wbc)
 local wbc_link = require('Motion.wbc_link').new(shm.open('wbc'))
+-- teleoperation's trajectories, commands and heartbeat (the state teleop)
+local teleop_link = require('Motion.teleop_link')
+teleop_link = teleop_link.new(shm.open('teleop'), shm.open('teleop.chunk'),
+  Config.load('teleop', nil, { robot = robot.name }).executor.link_timeout, teleop_link.bounds(robot))
 
 -- A fault for Tests/fault/faults_test.sh: with $HRP_FAULT_BUSY naming a file, motion loops for ever
 -- (running, answering nothing: the hung writer the DCM's stall check catches) once the file appears.
@@ -191,8 +195,10 @@ while true do
     v[1], v[2], v[3] = motion.velocity[0], motion.velocity[1], motion.velocity[2]
     ctl.head[1], ctl.head[2] = motion.head_command[0], motion.head_command[1]
     wbc_link:before(ctl)
+    teleop_link:before(ctl)
     ctl:tick(time)
     wbc_link:after(ctl, tick)
+    teleop_link:after(ctl, tick)
     -- commands of the joints motion drives now (Body clamps to the limits and refuses NaN)
     local q, write = ctl.q, ctl.write
     for i = 1, n do

@@ -19,7 +19,7 @@ function M.entry(c)
   -- from the last commands after a motion of ours, else (start, limp, lying) from the measured pose
   local prev = c.prev
   local from_cmd = prev == 'walk' or prev == 'kick_left' or prev == 'kick_right' or prev == 'standup_front'
-    or prev == 'standup_back' or prev == 'wbc' or prev == 'pattern' or prev == 'touch'
+    or prev == 'standup_back' or prev == 'wbc' or prev == 'pattern' or prev == 'touch' or prev == 'teleop'
   for _, i in ipairs(c.own) do
     d.q0[i] = from_cmd and c.q[i] or c.pos[i]
     d.h0[i] = c.h[i]
@@ -47,7 +47,7 @@ function M.update(c)
   if s < 1 then return nil end
   local want = c.want
   if want == 'walk' or want == 'kick_left' or want == 'kick_right' or want == 'sit' or want == 'wbc'
-    or want == 'pattern' or want == 'touch' then
+    or want == 'pattern' or want == 'touch' or want == 'teleop' then
     return want
   end
 end
