@@ -48,7 +48,8 @@ tap(report.stopped == nil and report.steps == expected,
   string.format('the routine plays to its end: %d of %d steps', report.steps, expected))
 tap(report.falls == 0 and not Sim.truth().fallen, 'no fall')
 -- the standing moves are the whole-body controller's: their ZMP must stay inside; the turns are the
--- walk's (its steps put the measured ZMP on a sole's edge, within a few mm: printed above)
+-- walk's (its steps put the true centre of pressure on a sole's edge: printed above; the pressure
+-- sensors, 12.5 mm inside the edges, cannot show it)
 local standing = worst['standing moves'] or -math.huge
 tap(standing > 0 and unloaded == 0, string.format('the measured ZMP inside the support polygon throughout the '
   .. 'standing moves: smallest margin %.1f mm, %d samples with no foot loaded', standing * 1e3, unloaded))

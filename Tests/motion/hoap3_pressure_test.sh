@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# tier: check (make check runs it: about 15 s)
+# tier: test (about 30 s: 6 s of robot time standing and leaning)
 # The HOAP-3's foot pressure sensors (four under each foot: robot.lua foot_pressure, the sim's model
 # in Platforms/Sim/pressure.h) against the sim's truth (lockstep): standing, the sensors' centre of
 # pressure and the motion process's measured ZMP within a few mm of the truth's and inside the soles;
