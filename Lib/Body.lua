@@ -264,6 +264,18 @@ function M.get_gyro() return vec3(sensor.gyro) end                   -- rad/s, t
 function M.get_accelerometer() return vec3(sensor.accelerometer) end -- m/s^2, with gravity
 function M.get_angle() return vec3(sensor.angle) end                 -- roll, pitch, yaw (rad)
 function M.get_foot_force() return { sensor.foot_force[0], sensor.foot_force[1] } end
+-- N, the point pressure sensors under the soles (robot.lua foot_pressure): the left foot's, then the
+-- right's; {} on a body without them
+local npressure = 0
+do
+  local fp = rawget(robot, 'foot_pressure')
+  if fp then npressure = #fp.lfoot.points + #fp.rfoot.points end
+end
+function M.get_foot_pressure()
+  local t = {}
+  for k = 1, npressure do t[k] = sensor.foot_pressure[k - 1] end
+  return t
+end
 function M.get_button(k) return sensor.button[(k or 1) - 1] end
 function M.get_battery() return sensor.battery[0] end
 -- The robot's clock (simulated time under the sim): the only clock robot code uses.

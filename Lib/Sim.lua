@@ -1,7 +1,9 @@
 -- The simulator's truth and control (PLATFORM=Sim), through this robot's `sim` block.
 --
 --   local Sim = require('Sim')
---   Sim.truth()  --> { x, y, z, yaw, roll, pitch, fallen = bool, ball = { x, y, z, vx, vy, touch, touch_time } }
+--   Sim.truth()  --> { x, y, z, yaw, roll, pitch, fallen = bool, ball = { x, y, z, vx, vy, touch, touch_time },
+--                      cop = { x, y, fz } }  (cop: the centre of pressure of the ground's forces on the
+--                      soles, on the carpet's plane, and their normal sum; fz = 0 with no sole down)
 --                    (ball.touch: world index of the robot that touched it last, -1 none since placed)
 --   Sim.reset()                      every robot to its start pose, ball to the centre, score 0:0
 --   Sim.teleport_robot(x, y, yaw)    this robot, joints at their commands, on its lower sole laid flat, at rest
@@ -108,6 +110,7 @@ local function bind(S, R)
         fallen = x.fallen[0] ~= 0,
         ball = { x = x.ball[0], y = x.ball[1], z = x.ball[2], vx = x.ball[3], vy = x.ball[4],
           touch = x.ball_touch[0], touch_time = x.ball_touch_time[0] },
+        cop = { x = x.cop[0], y = x.cop[1], fz = x.cop[2] },
       }
     end)
   end

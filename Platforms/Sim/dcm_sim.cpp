@@ -252,6 +252,7 @@ void publish_truth(Sim &s, int r) {
   *b.realtime_factor = s.rtf;
   *b.ball_touch = s.world->ball_touch();
   *b.ball_touch_time = s.world->ball_touch_time();
+  memcpy(b.cop, t.cop, sizeof t.cop);
   shm_write_end(b.blk);
 }
 
@@ -280,6 +281,7 @@ int sim_configure(void *hw, dcm *d, char *err, size_t errlen) {
       d->robot[r].torque_limit[j] = li >= 0 ? m.links[li].effort : 0;
     }
     snprintf(d->robot[r].name, sizeof d->robot[r].name, "%s", s.params[r].name.c_str());
+
   }
   const sim::Params &p = s.params[0];
   d->period = p.period;
@@ -300,6 +302,15 @@ int sim_open(void *hw, dcm *d, char *err, size_t errlen) {
     s.rob.resize(d->nrobots);
     for (int r = 0; r < d->nrobots; r++) {
       SimRobot &x = s.rob[r];
+      // every pressure sensor has its place in dcm.sensor
+      long npress = 0;
+      for (const sim::PressureFoot &f : s.params[r].pressure) npress += (long)f.xy.size() / 2;
+      const long room = shm_schema_const(d->schema, "npressure");
+      if (npress > room) {
+        snprintf(err, errlen, "robot '%s': %ld foot pressure sensors (robot.lua foot_pressure), room for %ld in "
+                 "dcm.sensor (Config/shm.schema npressure)", s.params[r].name.c_str(), npress, room);
+        return -EINVAL;
+      }
       if (dcm_blocks_open(d->schema, d->robot[r].id, DCM_BLK_sim(&x.sim), err, errlen) < 0) return -EIO;
       x.frames.open(d->schema, d->robot[r].id, s.params[r]);
       const std::vector<std::string> &joints = s.bodies[r].joints;
@@ -431,6 +442,7 @@ void sim_publish(void *hw, dcm *d, int r, const dcm_blk_dcm_sensor *o) {
   memcpy(o->angle, x.angle, sizeof x.angle);
   memcpy(o->foot_force, x.foot_force, sizeof x.foot_force);
   memcpy(o->ft, x.ft, sizeof x.ft);
+  for (int k = 0; k < o->n.foot_pressure; k++) o->foot_pressure[k] = k < (int)x.pressure.size() ? x.pressure[k] : 0;
   for (int k = 0; k < 2; k++) o->button[k] = w.time() < s.rob[r].button_until[k];
   *o->battery = s.params[r].battery;
 }

@@ -14,7 +14,7 @@ using namespace world_internal;
 // ---------------------------------------------------------------- construction
 
 World::World(const Params &p, const Model &m, int nrobots, uint64_t seed)
-    : World(p, std::vector<Body>(std::max(nrobots, 0), Body{m, p.joints, p.servos, p.ft}), seed) {}
+    : World(p, std::vector<Body>(std::max(nrobots, 0), Body{m, p.joints, p.servos, p.ft, p.pressure}), seed) {}
 
 World::World(const Params &p, std::vector<Body> bodies, uint64_t seed)
     : p_(p), bodies_(std::move(bodies)), seed_(seed), rng_(seed) {
@@ -221,6 +221,19 @@ void World::build_robot(int r, const Body &body) {
     if (!body.ft[k].empty() && rb.ft_link[k] < 0) {
       throw std::runtime_error(m.file + ": no joint '" + body.ft[k] + "' (robot config's ft)");
     }
+  }
+  // pressure sensors: each foot's frame and the link it rides on
+  rb.pressure = &body.pressure;
+  if (!body.pressure.empty() && body.pressure.size() != 2) {
+    throw std::runtime_error(m.file + ": foot pressure sensors for " + std::to_string(body.pressure.size()) +
+                             " feet, not 2 (robot config's foot_pressure)");
+  }
+  for (size_t k = 0; k < body.pressure.size(); k++) {
+    rb.press_frame[k] = m.frame_index(body.pressure[k].frame);
+    if (rb.press_frame[k] < 0) {
+      throw std::runtime_error(m.file + ": no frame '" + body.pressure[k].frame + "' (robot config's foot_pressure)");
+    }
+    rb.press_link[k] = m.frames[rb.press_frame[k]].link;
   }
   const int nj = (int)body.joints.size();
   rb.cmd.assign(nj, 0);

@@ -28,6 +28,13 @@ struct Servo {
   double speed_unit = 0.0240;   // rad/s per count of the present speed (speeds are quantised to it)
 };
 
+// Point pressure sensors under one foot (robot.lua `foot_pressure`, Platforms/Sim/pressure.h): the
+// frame of the description whose x-y plane is the sole, and the sensors' positions in it.
+struct PressureFoot {
+  std::string frame;           // e.g. "l_sole"; its link is the foot whose ground contacts load them
+  std::vector<double> xy;      // x0 y0 x1 y1 ... (m)
+};
+
 // Every number the world needs, from the sim, robot, camera and actuators configs (Lib/Config.lua layers).
 struct Params {
   double timestep = 0.001, period = 0.008, gravity = 9.81;
@@ -74,6 +81,8 @@ struct Params {
   // robot.lua's optional `ft`: per slot of dcm.sensor.ft (left foot, right foot, left hand, right
   // hand) the joint whose child link carries a 6-axis sensor, "" for none
   std::vector<std::string> ft = std::vector<std::string>(4);
+  // robot.lua's optional `foot_pressure`: the left foot's sensors, then the right's (empty: none)
+  std::vector<PressureFoot> pressure;
   std::string urdf;                   // path of the robot file
 };
 // Reads the sim, robot and camera configs of a body ("" = $ROBOT) into p; throws
@@ -88,6 +97,9 @@ struct Sensors {
   // none. The wrench the sensor's link (and what it touches) exerts on the link above it, at the
   // joint's anchor, in the sensor link's frame: standing, a foot's fz carries the weight above it.
   double ft[24];
+  // point pressure sensors (Params::pressure): N each, the left foot's then the right's, in the
+  // order robot.lua lists them; the mean over the tick's physics steps; empty when the body has none
+  std::vector<double> pressure;
 };
 
 // Field-frame truth of one robot's torso (body link frame) and the ball.
@@ -95,6 +107,10 @@ struct Truth {
   double x, y, z, yaw, roll, pitch;
   bool fallen;
   double ball[5];     // x, y, z, vx, vy
+  // the centre of pressure of the ground's forces on the robot (the carpet's and the static
+  // objects'; their mean over the tick): x, y where their moment has no horizontal part on the
+  // carpet's plane (z = 0), and their vertical sum fz (N); 0 0 0 with nothing on the ground
+  double cop[3];
 };
 
 // A convex solid for the camera: vertices (world) and faces (vertex index loops, outward CCW).
@@ -122,6 +138,7 @@ struct Body {
   std::vector<std::string> joints;
   std::vector<Servo> servos;   // per shm joint
   std::vector<std::string> ft = std::vector<std::string>(4);   // as Params::ft
+  std::vector<PressureFoot> pressure;                          // as Params::pressure
 };
 
 class World {
@@ -223,7 +240,18 @@ class World {
     double push_at_left = 0;
     double accel[3] = {0, 0, 9.81};
     int ft_link[4] = {-1, -1, -1, -1};     // per ft slot: the sensor's (child) link, -1 none
+    // pressure sensors per foot (left, right): the frame they sit in, its link (-1: none), and the
+    // ground's force and moment (about the field's origin) on that link, summed over the tick's steps
+    int press_frame[2] = {-1, -1}, press_link[2] = {-1, -1};
+    const std::vector<PressureFoot> *pressure = nullptr;   // its body's sensors' layout
+    Vec3 press_f[2] = {Vec3::Zero(), Vec3::Zero()}, press_m[2] = {Vec3::Zero(), Vec3::Zero()};
+    // the same for every contact of the robot with the ground (Truth::cop)
+    Vec3 ground_f = Vec3::Zero(), ground_m = Vec3::Zero();
   };
+  // a contact of a robot with the ground, its force wanted after the step: robot, sole side (-1:
+  // none), pressure foot (-1: none), whether the robot is body 1 (0) or 2 (1) of the contact joint,
+  // the contact point
+  struct ContactUse { int robot, sole, press, which; Vec3 pos; };
 
   void build_env();
   void build_robot(int r, const Body &body);
@@ -248,7 +276,7 @@ class World {
   std::vector<Robot> robots_;
   std::vector<Solid> goal_solids_;   // the static solids the camera sees: goals, objects
   std::vector<dJointFeedback> cfb_;        // contact feedback of sole contacts, this step
-  std::vector<std::pair<int, int>> cfb_owner_;  // (robot, sole side) per cfb_ entry
+  std::vector<ContactUse> cfb_owner_;      // per cfb_ entry
   double time_ = 0;
   int substeps_ = 8;
   int score_[2] = {0, 0};

@@ -53,6 +53,7 @@ void load_bodies(const std::vector<std::string> &robots, std::vector<Params> *pa
     b.joints = p.joints;
     b.servos = p.servos;
     b.ft = p.ft;
+    b.pressure = p.pressure;
     // one world steps every robot with one control period
     if (r > 0 && std::fabs(p.period - (*params)[0].period) > 1e-12) {
       throw std::runtime_error("robot '" + robots[r] + "' has a control period of " + std::to_string(p.period) +

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "pressure.h"
 #include "world_internal.h"
 
 namespace sim {
@@ -132,6 +133,26 @@ void params_load(const std::string &robot, Params *p) {
     p->ft[k] = r.has(key) ? r.str(key) : "";
     if (r.has(key) && std::find(p->joints.begin(), p->joints.end(), p->ft[k]) == p->joints.end()) {
       throw std::runtime_error(robot_lua + ": '" + key + "' is '" + p->ft[k] + "', not one of its joints");
+    }
+  }
+  // point pressure sensors under the feet: { lfoot = { frame = F, points = { {x, y}, ... } }, rfoot = ... },
+  // both feet or none; the frame is checked against the description where the robot is built
+  p->pressure.clear();
+  if (r.has("foot_pressure")) {
+    for (const char *foot : {"lfoot", "rfoot"}) {
+      const std::string key = std::string("foot_pressure.") + foot;
+      if (!r.has(key + ".frame")) throw std::runtime_error(robot_lua + ": missing string '" + key + ".frame'");
+      PressureFoot pf;
+      pf.frame = r.str(key + ".frame");
+      for (int i = 1; r.has(key + ".points." + std::to_string(i)); i++) {
+        std::vector<double> v = r.nums(key + ".points." + std::to_string(i));
+        if (v.size() != 2) throw std::runtime_error(robot_lua + ": '" + key + ".points[" + std::to_string(i) + "]' must be {x, y}");
+        pf.xy.insert(pf.xy.end(), v.begin(), v.end());
+      }
+      if (!pressure_layout_ok(pf.xy)) {
+        throw std::runtime_error(robot_lua + ": '" + key + ".points' must be at least 3 finite {x, y}, not all on one line");
+      }
+      p->pressure.push_back(pf);
     }
   }
   // each joint's servo: the actuator model robot.lua names for it

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "pressure.h"
 #include "world_internal.h"
 
 namespace sim {
@@ -63,6 +64,23 @@ void World::sense(int r, Sensors *s) {
   s->foot_force[0] = rb.foot_acc[0];
   s->foot_force[1] = rb.foot_acc[1];
   sense_ft(rb, s->ft);
+  // pressure sensors: the ground's wrench on the foot in its sole frame gives the sole's normal force
+  // and centre of pressure, which the sensors share (pressure.h)
+  s->pressure.clear();
+  for (int k = 0; k < 2 && rb.press_frame[k] >= 0; k++) {
+    const Frame &fr = rb.m->frames[rb.press_frame[k]];
+    Vec3 lp;
+    Mat3 lR;
+    link_pose(r, fr.link, &lp, &lR);
+    const Vec3 o = lp + lR * fr.pos;
+    const Mat3 Rs = lR * fr.rot;
+    const Vec3 f = Rs.transpose() * rb.press_f[k], m = Rs.transpose() * (rb.press_m[k] - o.cross(rb.press_f[k]));
+    const std::vector<double> &xy = (*rb.pressure)[k].xy;
+    const double fz = f.z();
+    const std::vector<double> share = fz > 0 ? pressure_distribute(xy, fz, -m.y() / fz, m.x() / fz)
+                                             : std::vector<double>(xy.size() / 2, 0.0);
+    s->pressure.insert(s->pressure.end(), share.begin(), share.end());
+  }
 }
 
 void World::link_pose(int r, int link, Vec3 *pos, Mat3 *rot) const {
@@ -89,6 +107,11 @@ Truth World::truth(int r) const {
   t.ball[2] = bp[2];
   t.ball[3] = bv[0];
   t.ball[4] = bv[1];
+  const Robot &rb = robots_[r];
+  const bool on = rb.ground_f.z() > 0;
+  t.cop[0] = on ? -rb.ground_m.y() / rb.ground_f.z() : 0;
+  t.cop[1] = on ? rb.ground_m.x() / rb.ground_f.z() : 0;
+  t.cop[2] = on ? rb.ground_f.z() : 0;
   return t;
 }
 

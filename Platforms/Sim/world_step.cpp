@@ -131,11 +131,15 @@ void World::collide(dGeomID o1, dGeomID o2) {
     c[i].surface = s;
     dJointID j = dJointCreateContact(world_, contacts_, &c[i]);
     dJointAttach(j, b1, b2);
-    // vertical force under the soles
-    const GeomInfo *sole = a->sole >= 0 ? a : (b->sole >= 0 ? b : nullptr);
-    if (sole && ground && cfb_.size() < cfb_.capacity()) {
+    // the ground's force on the robot (the truth's centre of pressure), its soles (foot_force) and
+    // the feet that carry pressure sensors
+    const GeomInfo *rob = a->kind == kRobot ? a : (b->kind == kRobot ? b : nullptr);
+    if (rob && ground && cfb_.size() < cfb_.capacity()) {
+      const Robot &rr = robots_[rob->robot];
+      const int press = rr.press_link[0] == rob->link ? 0 : rr.press_link[1] == rob->link ? 1 : -1;
       cfb_.push_back(dJointFeedback());
-      cfb_owner_.push_back({sole->robot * 4 + sole->sole * 2 + (sole == a ? 0 : 1), 0});
+      const dReal *cp = c[i].geom.pos;
+      cfb_owner_.push_back({rob->robot, rob->sole, press, rob == a ? 0 : 1, Vec3(cp[0], cp[1], cp[2])});
       dJointSetFeedback(j, &cfb_.back());
     }
   }
@@ -172,9 +176,17 @@ void World::physics_step() {
   for (Robot &rb : robots_) dSpaceCollide(rb.space, this, &World::near_cb);
   dWorldQuickStep(world_, p_.timestep);
   for (size_t i = 0; i < cfb_.size(); i++) {
-    const int code = cfb_owner_[i].first;
-    const int r = code / 4, side = (code / 2) % 2, which = code % 2;
-    robots_[r].foot_acc[side] += which == 0 ? cfb_[i].f1[2] : cfb_[i].f2[2];
+    const ContactUse &u = cfb_owner_[i];
+    Robot &rb = robots_[u.robot];
+    const dReal *fv = u.which == 0 ? cfb_[i].f1 : cfb_[i].f2;
+    const Vec3 f(fv[0], fv[1], fv[2]), m = u.pos.cross(f);
+    rb.ground_f += f;
+    rb.ground_m += m;
+    if (u.sole >= 0) rb.foot_acc[u.sole] += f.z();
+    if (u.press >= 0) {
+      rb.press_f[u.press] += f;
+      rb.press_m[u.press] += m;
+    }
   }
   dJointGroupEmpty(contacts_);
   check_goal();
@@ -208,6 +220,8 @@ void World::step() {
     const dReal *v = dBodyGetLinearVel(rb.body[0]);
     rb.vel_start = Vec3(v[0], v[1], v[2]);
     rb.foot_acc[0] = rb.foot_acc[1] = 0;
+    rb.ground_f = rb.ground_m = Vec3::Zero();
+    for (int k = 0; k < 2; k++) rb.press_f[k] = rb.press_m[k] = Vec3::Zero();
   }
   // joint torques (`load`) are read once per tick: ODE computes the hinges' feedback in the last
   // physics step only (feedback is output, it does not enter the dynamics)
@@ -223,6 +237,12 @@ void World::step() {
     for (int k = 0; k < 3; k++) rb.accel[k] = ab[k];
     rb.foot_acc[0] /= substeps_;
     rb.foot_acc[1] /= substeps_;
+    rb.ground_f /= substeps_;
+    rb.ground_m /= substeps_;
+    for (int k = 0; k < 2; k++) {
+      rb.press_f[k] /= substeps_;
+      rb.press_m[k] /= substeps_;
+    }
   }
 }
 

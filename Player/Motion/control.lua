@@ -142,9 +142,13 @@ function M.new(opts)
     c.owned[i], c.taken[i], c.write[i], c.owner[i] = false, false, false, 0
   end
   for k = 1, 24 do c.ft[k] = 0 end
-  c.sensors = { gyro = c.gyro, position = c.pos, angle = c.angle, acc = c.acc, ft = c.ft }
+  -- the feet's point pressure sensors (dcm.sensor.foot_pressure, robot.lua foot_pressure)
+  c.press = {}
+  local fp = rawget(robot, 'foot_pressure') -- optional (a Config table errs on a missing key)
+  for k = 1, fp and #fp.lfoot.points + #fp.rfoot.points or 0 do c.press[k] = 0 end
+  c.sensors = { gyro = c.gyro, position = c.pos, angle = c.angle, acc = c.acc, ft = c.ft, press = c.press }
   c.walk = M.walk_engine(params, opts.walk_files).new(params, opts.model):bind(robot, opts.walk_files)
-  c.balance = balance.new(params)
+  c.balance = balance.new(params, robot)
   c.kick = Kick.new(c.walk)
   c.walk_kick = WalkKick.new(params)
   c.capture = capture.new()

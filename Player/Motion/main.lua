@@ -125,7 +125,7 @@ local params_live = param.follow('motion')
 
 local participant = lockstep.join()
 local tick = -1 -- the current tick is handled first (the lockstep waits for it)
-local pos, gyro, angle, acc, ft = ctl.pos, ctl.gyro, ctl.angle, ctl.acc, ctl.ft
+local pos, gyro, angle, acc, ft, press = ctl.pos, ctl.gyro, ctl.angle, ctl.acc, ctl.ft, ctl.press
 local hardness, actuator_mode = actuator.hardness, actuator.mode
 
 -- a DCM restarted with another layout, or any block removed or recreated: the mappings held here
@@ -161,6 +161,7 @@ while true do
       angle[1], angle[2], angle[3] = s.angle[0], s.angle[1], s.angle[2]
       acc[1], acc[2], acc[3] = s.accelerometer[0], s.accelerometer[1], s.accelerometer[2]
       for k = 1, 24 do ft[k] = s.ft[k - 1] end
+      for k = 1, #press do press[k] = s.foot_pressure[k - 1] end
       return s.time[0]
     end)
     -- what others did to the joints motion does not drive, and which joints a caller took

@@ -38,6 +38,44 @@ describe('balance', function()
     assert.is_near(-0.07, b.zmp[2], 1e-12)
   end)
 
+  it('measures the ZMP on point pressure sensors (robot.lua foot_pressure) when the body has them', function()
+    -- a rectangle of four sensors per foot, 0.08 x 0.04 m, centred 0.01 m ahead of the sole frame
+    local pts = { { 0.05, -0.02 }, { 0.05, 0.02 }, { -0.03, -0.02 }, { -0.03, 0.02 } }
+    local robot = { foot_pressure = { lfoot = { frame = 'l_sole', points = pts },
+      rfoot = { frame = 'r_sole', points = pts } } }
+    -- one foot: the forces' weighted mean position, their sum
+    local fz, x, y = balance.sole_cop(pts, { 10, 30, 10, 30 }, 0)
+    assert.is_near(80, fz, 1e-12)
+    assert.is_near(0.01, x, 1e-12)
+    assert.is_near(0.01, y, 1e-12)
+    fz, x, y = balance.sole_cop(pts, { 0, 0, 0, 0, 40, 0, 0, 0 }, 4)
+    assert.is_near(40, fz, 1e-12)
+    assert.is_near(0.05, x, 1e-12)
+    assert.is_near(-0.02, y, 1e-12)
+    assert.are.same({ 0, 0, 0 }, { balance.sole_cop(pts, { 0, 0, 0, 0 }, 0) })
+    -- both feet: each foot's centre of pressure turned and moved with its pose, weighted by its force;
+    -- the ankle F/T (ft) is not read
+    local b = balance.new(params(), robot)
+    local ft = wrench({ 0, 0, 500, 9, 9 }, { 0, 0, 500, 9, 9 })
+    -- left: 100 N on its front sensors (x 0.05, y 0); right (turned 90 deg): 100 N on its rear
+    -- sensors (x -0.03, y 0 in its frame: 0.03 towards -y in the ground frame)
+    local press = { 50, 50, 0, 0, 0, 0, 50, 50 }
+    assert.is_true(b:measure(ft, LEFT, { 0, -0.1, math.pi / 2 }, press))
+    assert.is_near(100, b.force[1], 1e-12)
+    assert.is_near(0.5 * 0.05 + 0.5 * 0, b.zmp[1], 1e-12)
+    assert.is_near(0.5 * 0.1 + 0.5 * (-0.1 - 0.03), b.zmp[2], 1e-12)
+    -- a foot under minForce does not count; none loaded: no contact
+    assert.is_true(b:measure(ft, LEFT, RIGHT, { 15, 15, 15, 15, 0, 0, 20, 20 }))
+    assert.is_near(0.01, b.zmp[1], 1e-12)
+    assert.is_near(0.1, b.zmp[2], 1e-12)
+    assert.is_false(b:measure(ft, LEFT, RIGHT, { 5, 5, 5, 5, 5, 5, 5, 5 }))
+    -- the update reads them too
+    b:update(0.005, ft, LEFT, RIGHT, { 0, 0 }, false, { 20, 20, 20, 20, 20, 20, 20, 20 })
+    assert.is_true(b.contact)
+    assert.is_near(0.01, b.err[1], 1e-12)
+    assert.is_near(0, b.err[2], 1e-12)
+  end)
+
   it('moves the COM against a lasting ZMP error, bounded, and leaks back when the error goes', function()
     local b = balance.new(params())
     local ft = wrench({ 0, 0, 200, 0, -0.03 * 200 }, { 0, 0, 200, 0, -0.03 * 200 }) -- ZMP 3 cm ahead

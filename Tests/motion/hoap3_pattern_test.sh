@@ -38,7 +38,7 @@ SCENARIO_TIMEOUT=600 SCENARIO_DCM_ARGS="--seed ${SIM_SEED:-1}" \
   lockstep_scenario "$id" pattern Tests/motion/pattern_scenario.lua "$PATTERN" "$LOG"
 
 k=$((k + 1))
-if python3 Tools/plot/plot_pattern.py "$LOG" "$LOGDIR/hoap3_pattern" l 'HOAP-3, 12 steps' 0.068,0.040,0.0315,0.0415 >"$LOGDIR/plot_pattern.log" 2>&1 \
+if python3 Tools/plot/plot_pattern.py "$LOG" "$LOGDIR/hoap3_pattern" l 'HOAP-3, 12 steps' 0.068,0.040,0.0315,0.0415 pressure >"$LOGDIR/plot_pattern.log" 2>&1 \
   && [ -s "$LOGDIR/hoap3_pattern_joints.png" ]; then
   echo "ok $k - pattern: plotted $LOGDIR/hoap3_pattern_joints.png, $LOGDIR/hoap3_pattern_zmp.png"
 else

@@ -5,7 +5,8 @@
 -- plays PATTERN from stance; checks no fall, the whole file played, back in stance, the distance
 -- walked; prints the planned against measured ZMP (RMS, max) and joint angles (RMS per leg joint).
 -- Measured: the joint angles the sim senses (dcm.sensor.position); the ZMP from the feet's sensors
--- the sim gives this body (dcm.sensor.ft: 6-axis force/torque at each ankle, robot.lua's `ft`),
+-- the sim gives this body (dcm.sensor.foot_pressure: point pressure sensors under the soles,
+-- robot.lua's `foot_pressure`, or else dcm.sensor.ft: 6-axis force/torque at each ankle, its `ft`),
 -- through Player/Motion/balance.lua's measure() with the soles' poses from the sim's truth
 -- (Sim.link_truth), in the pattern's frame (its origin midway between the soles at the file's
 -- t = 0, x along their mean heading). LOG: one row a tick while the file plays.
@@ -84,7 +85,7 @@ tap(Motion.state() == 'stance', 'still in stance after the refusals')
 
 -- play
 local falls0 = Motion.falls()
-local ft, meas = {}, balance.new(wp)
+local ft, press, meas = {}, {}, balance.new(wp, robot)
 local origin -- the pattern's frame in the field: x, y, yaw
 local function to_plan(x, y)
   local c, s = math.cos(origin[3]), math.sin(origin[3])
@@ -110,7 +111,7 @@ end
 local qp, pos = {}, {}
 local f = assert(io.open(log, 'w'))
 local head = { 't', 'pt', 'zmp_x', 'zmp_y', 'meas_x', 'meas_y', 'contact', 'lsole_x', 'lsole_y', 'rsole_x', 'rsole_y',
-  'lfoot_x', 'lfoot_y', 'rfoot_x', 'rfoot_y', 'fz_l', 'fz_r' }
+  'lfoot_x', 'lfoot_y', 'rfoot_x', 'rfoot_y', 'fz_l', 'fz_r', 'cop_x', 'cop_y', 'cop_fz' }
 for _, j in ipairs(legs) do head[#head + 1] = 'plan_' .. j end
 for _, j in ipairs(legs) do head[#head + 1] = 'meas_' .. j end
 f:write(table.concat(head, ','), '\n')
@@ -133,10 +134,15 @@ while Body.get_time() - t_start < tr.duration + 15 do
       origin = { 0.5 * (l.x + r.x), 0.5 * (l.y + r.y), a }
     end
     for k = 1, 24 do ft[k] = sensor.ft[k - 1] end
+    for k = 1, 8 do press[k] = sensor.foot_pressure[k - 1] end
     for i = 1, n do pos[i] = sensor.position[i - 1] end
     local lx, ly = to_plan(l.x, l.y)
     local rx, ry = to_plan(r.x, r.y)
-    local contact = meas:measure(ft, { lx, ly, l.yaw - origin[3] }, { rx, ry, r.yaw - origin[3] })
+    local contact = meas:measure(ft, { lx, ly, l.yaw - origin[3] }, { rx, ry, r.yaw - origin[3] }, press)
+    -- the sim's truth: the centre of pressure of the ground's forces on the soles
+    local cop = Sim.truth().cop
+    local cx, cy = to_plan(cop.x, cop.y)
+    local cf = cop.fz
     local zx, zy = tr:extra_at('zmp_x', pt), tr:extra_at('zmp_y', pt)
     local mx, my = meas.zmp[1], meas.zmp[2]
     if contact then
@@ -148,7 +154,7 @@ while Body.get_time() - t_start < tr.duration + 15 do
     jn = jn + 1
     local row = { Body.get_time(), pt, zx, zy, contact and mx or 0 / 0, contact and my or 0 / 0, contact and 1 or 0,
       lx, ly, rx, ry, tr:extra_at('lfoot_x', pt), tr:extra_at('lfoot_y', pt), tr:extra_at('rfoot_x', pt),
-      tr:extra_at('rfoot_y', pt), meas.force[1], meas.force[2] }
+      tr:extra_at('rfoot_y', pt), meas.force[1], meas.force[2], cf > 0 and cx or 0 / 0, cf > 0 and cy or 0 / 0, cf }
     for k, j in ipairs(legs) do
       local e = pos[ji[j]] - qp[ji[j]]
       je2[k] = je2[k] + e * e
@@ -177,8 +183,8 @@ end
 tap(not fell and got_x > 0.8 * plan_x and got_x < 1.2 * plan_x,
   string.format('walked %.3f m forward, planned %.3f m', got_x, plan_x))
 local rms = ne > 0 and math.sqrt(e2 / ne) or math.huge
-note('ZMP planned vs measured (ankle F/T, %d of %d ticks with a foot loaded): RMS %.1f mm, max %.1f mm',
-  ne, jn, 1000 * rms, 1000 * emax)
+note('ZMP planned vs measured (%s, %d of %d ticks with a foot loaded): RMS %.1f mm, max %.1f mm',
+  meas.pressure and 'foot pressure sensors' or 'ankle F/T', ne, jn, 1000 * rms, 1000 * emax)
 tap(rms < ZMP_RMS_MAX, string.format('ZMP error RMS %.1f mm < %.0f mm', 1000 * rms, 1000 * ZMP_RMS_MAX))
 local worst, wname = 0, ''
 local parts = {}

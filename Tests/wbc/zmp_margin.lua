@@ -1,8 +1,10 @@
 -- The measured ZMP of a body standing in the sim and its margin to the edge of the support polygon,
 -- for the whole-body scenarios (Tests/wbc/hubo_reach.lua). The ZMP is the centre of pressure of both
--- feet from their 6-axis force/torque sensors (dcm.sensor.ft: the wrench each foot link exerts on the
--- leg above it, at the ankle joint, in the link's axes; a foot under `min_force` N does not count),
--- put in the field frame by the foot links' true poses and onto the ground plane (the soles' height):
+-- feet from their sensors: on a body with point pressure sensors under its soles (robot.lua
+-- foot_pressure, dcm.sensor.foot_pressure) the sensors' positions weighted by their forces, else
+-- the feet's 6-axis force/torque sensors (dcm.sensor.ft: the wrench each foot link exerts on the
+-- leg above it, at the ankle joint, in the link's axes); a foot under `min_force` N does not count;
+-- put in the field frame by the feet's true poses and onto the ground plane (the soles' height):
 -- the same sensor model as Player/Motion/balance.lua, with the feet's poses from the sim's truth. The
 -- support polygon: the convex hull of the soles of the feet that carry weight, the bottom faces of the
 -- URDF's collision boxes named sole* on each foot link.
@@ -71,12 +73,22 @@ function M.new(Sim, shm)
   f:close()
   local self = setmetatable({ Sim = Sim, sensor = shm.open('dcm.sensor'), feet_ = {},
     min_force = Config.load('walk').balance.minForce }, Z)
+  local fp = Config.optional(robot, 'foot_pressure')
   for k, key in ipairs({ 'lfoot', 'rfoot' }) do
-    local joint = robot.ft[key]
-    local link = assert(urdf:match('<joint name="' .. joint .. '".-<child link="([^"]+)"'),
-      'zmp_margin: no child link of ' .. joint)
-    self.feet_[k] = { link = link, corners = sole_corners(urdf, link) }
+    local link
+    if fp then
+      -- the link the sensors' frame is fixed to
+      link = assert(urdf:match('<joint name="[^"]*" type="fixed">%s*<parent link="([^"]+)"/>%s*<child link="'
+        .. fp[key].frame .. '"/>'), 'zmp_margin: no link carries the frame ' .. fp[key].frame)
+    else
+      local joint = robot.ft[key]
+      link = assert(urdf:match('<joint name="' .. joint .. '".-<child link="([^"]+)"'),
+        'zmp_margin: no child link of ' .. joint)
+    end
+    self.feet_[k] = { link = link, corners = sole_corners(urdf, link), frame = fp and fp[key].frame,
+      points = fp and fp[key].points }
   end
+  self.pressure = fp ~= nil
   self:feet()
   return self
 end
@@ -92,12 +104,42 @@ function Z:feet()
       foot.ground[k] = { foot.pos[1] + w[1], foot.pos[2] + w[2] }
       zg, n = zg + foot.pos[3] + w[3], n + 1
     end
+    if foot.frame then
+      -- the pressure sensors on the ground plane
+      local s = self.Sim.link_truth(foot.frame)
+      foot.sensors = {}
+      for k, q in ipairs(foot.points) do
+        local w = rotate({ s.roll, s.pitch, s.yaw }, { q[1], q[2], 0 })
+        foot.sensors[k] = { s.x + w[1], s.y + w[2] }
+      end
+    end
   end
   self.ground = zg / n
 end
 
+-- The ZMP {x, y} on the ground plane, field frame, from the pressure sensors (nil: no foot loaded).
+function Z:pressure_zmp()
+  local n = #self.feet_[1].points + #self.feet_[2].points
+  local f = self.sensor:read(function(x) local t = {} for i = 1, n do t[i] = x.foot_pressure[i - 1] end return t end)
+  local sfz, sx, sy, o = 0, 0, 0, 0
+  for _, foot in ipairs(self.feet_) do
+    local fz = 0
+    for k = 1, #foot.points do fz = fz + f[o + k] end
+    foot.loaded = fz > self.min_force
+    if foot.loaded then
+      for k, p in ipairs(foot.sensors) do
+        sx, sy, sfz = sx + f[o + k] * p[1], sy + f[o + k] * p[2], sfz + f[o + k]
+      end
+    end
+    o = o + #foot.points
+  end
+  if sfz <= 0 then return nil end
+  return sx / sfz, sy / sfz
+end
+
 -- The measured ZMP {x, y} on the ground plane, field frame (nil: no foot carries weight).
 function Z:zmp()
+  if self.pressure then return self:pressure_zmp() end
   local ft = self.sensor:read(function(x) local t = {} for i = 1, 12 do t[i] = x.ft[i - 1] end return t end)
   local sfz, sx, sy = 0, 0, 0
   for k, foot in ipairs(self.feet_) do
@@ -122,6 +164,21 @@ end
 function Z:margin()
   local zx, zy = self:zmp()
   if not zx then return nil end
+  return self:margin_of(zx, zy), zx, zy
+end
+
+-- The same for the sim's truth (Sim.truth().cop: the centre of pressure of the ground's forces on the
+-- soles), in the polygon of the feet the sensors find loaded (call margin() first on the tick): it
+-- cannot leave the soles, but it sits on an edge while a foot tips about it, where sensors a little
+-- inside the edge (pressure sensors) can show no more than their own edge.
+function Z:truth_margin()
+  local cop = self.Sim.truth().cop
+  if cop.fz <= 0 then return nil end
+  return self:margin_of(cop.x, cop.y), cop.x, cop.y
+end
+
+-- The distance of (zx, zy) inside the polygon of the loaded feet (m; negative outside).
+function Z:margin_of(zx, zy)
   local pts = {}
   for _, foot in ipairs(self.feet_) do
     if foot.loaded then for _, p in ipairs(foot.ground) do pts[#pts + 1] = { p[1], p[2] } end end
@@ -133,7 +190,7 @@ function Z:margin()
     local d = (ex * (zy - a[2]) - ey * (zx - a[1])) / math.sqrt(ex * ex + ey * ey)   -- left of a->b: inside
     m = math.min(m, d)
   end
-  return m, zx, zy
+  return m
 end
 
 return M

@@ -2,9 +2,11 @@
 """Plots a walk pattern played in the sim (the log of Tests/motion/pattern_scenario.lua) to PNG:
 the planned against the measured joint angles of one leg, and the planned against the measured ZMP
 with the soles' extent along x and y.
-usage: plot_pattern.py LOG.csv OUT_PREFIX [LEG] [TITLE] [SOLE]
+usage: plot_pattern.py LOG.csv OUT_PREFIX [LEG] [TITLE] [SOLE] [SENSORS]
 writes OUT_PREFIX_joints.png (LEG: l or r, default l) and OUT_PREFIX_zmp.png; SOLE: "toe,heel,inner,outer"
-(m from the sole point below the ankle to each edge of the sole): each sole's extent shaded there"""
+(m from the sole point below the ankle to each edge of the sole): each sole's extent shaded there;
+SENSORS: "pressure" when the measured ZMP is the foot pressure sensors' (default: the ankle F/T); the
+log's cop_x, cop_y (the sim's truth), when it has them, drawn too"""
 import sys
 import numpy as np
 import matplotlib
@@ -44,9 +46,13 @@ fig.savefig(prefix + '_joints.png', dpi=80)
 # support sole, at its edge when the foot tips
 fig, ax = plt.subplots(2, 1, figsize=(12, 8), sharex=True)
 ok = d['contact'] > 0
+sensors = 'foot pressure sensors' if len(sys.argv) > 6 and sys.argv[6] == 'pressure' else 'ankle F/T'
+
 for a, axis in zip(ax, ['x', 'y']):
     a.plot(t, d['zmp_' + axis], label='planned ZMP')
-    a.plot(t[ok], d['meas_' + axis][ok], '.', ms=2, label='measured ZMP (ankle F/T)')
+    a.plot(t[ok], d['meas_' + axis][ok], '.', ms=2, label='measured ZMP (%s)' % sensors)
+    if 'cop_' + axis in d.dtype.names:
+        a.plot(t, d['cop_' + axis], lw=0.8, alpha=0.8, label='centre of pressure (sim truth)')
     a.plot(t, d['lsole_' + axis], ':', label='left sole point (sim)')
     a.plot(t, d['rsole_' + axis], ':', label='right sole point (sim)')
     if sole:

@@ -89,8 +89,22 @@ return {
       r_ank_roll = 0.026,
     },
   },
-  -- 6-axis force/torque at the ankles (dcm.sensor.ft), the sim's instruments: the real HOAP-3 has four
-  -- pressure sensors under each foot instead (S7), which no platform reads yet. At the wrists: the
+  -- the four pressure sensors under each foot (S7: channels RF, LF, RB, LB per foot) in the sole
+  -- frames below the ankle axes (`frames` below), x forward, y left, m: the ref reads S7's ZMP
+  -- constants (robot serial #0035: LX 47.0, LY 83.0, MX 18.5 right / 28.5 left, MY 27.5 mm) as a
+  -- rectangle of sensor centres 83 mm long and 47 mm wide, its front row 55.5 mm ahead of and its
+  -- rear row 27.5 mm behind the ankle axis, its outer column 28.5 mm and its inner 18.5 mm beside it
+  -- (the ref's interpretation: ~12.5 mm inside every edge of the sole). In dcm.sensor.foot_pressure,
+  -- the sim's model of them: Platforms/Sim/pressure.h
+  foot_pressure = {
+    lfoot = { frame = 'l_sole',
+      points = { { 0.0555, -0.0185 }, { 0.0555, 0.0285 }, { -0.0275, -0.0185 }, { -0.0275, 0.0285 } } },
+    rfoot = { frame = 'r_sole',
+      points = { { 0.0555, -0.0285 }, { 0.0555, 0.0185 }, { -0.0275, -0.0285 }, { -0.0275, 0.0185 } } },
+  },
+  -- 6-axis force/torque at the ankles (dcm.sensor.ft), the sim's instruments: the real HOAP-3 has the
+  -- pressure sensors above instead, which the measured ZMP reads (Player/Motion/balance.lua). At the
+  -- wrists: the
   -- wrist force sensors S0 reports (one per wrist), between the forearm and the hand (the wrist yaw
   -- servo's link), as six-axis sensors (S0 gives no axes)
   ft = { lfoot = 'l_ank_roll', rfoot = 'r_ank_roll', lhand = 'l_wrist_yaw', rhand = 'r_wrist_yaw' },

@@ -39,9 +39,9 @@ return {
     r = { posture = { r_sho_pitch = 1.5708, r_sho_roll = -0.1, r_arm_yaw = 0, r_el = -0.3, r_wrist_yaw = 0 },
           pitch = 'r_sho_pitch' },
   },
-  -- the ankle roll axis above the sole (the real HOAP-3 has foot pressure sensors, not ankle F/T:
-  -- balance stays off)
-  balance = { sensorHeight = 0.040 },
+  -- the measured ZMP: the four pressure sensors under each foot (robot.lua foot_pressure), as on the
+  -- real HOAP-3, not the sim's ankle F/T (so no sensorHeight here); balance feedback stays off, the
+  -- default
   tStance = 2.0,             -- s
   -- falling: the OP3's arm poses (1.2 rad forward of hanging, 0.8 behind) in this body's zero (arms
   -- forward): about the torso's y axis, both arms, falling forwards, backwards
