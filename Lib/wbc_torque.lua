@@ -130,7 +130,10 @@ end
 
 -- The task's inverse inertia J A^-1 J^T (3 x 3 rows, m/s^2 per N) at the state last given to
 -- torques: with the task's gain kp the arm's stiffness against a force on the frame is kp Lambda, so
--- a force f moves the frame by (1 / kp) J A^-1 J^T f.
+-- a force f moves the frame by (1 / kp) J A^-1 J^T f. Second: A^-1 J^T (n x 3 rows): a torque t_k
+-- on joint k (a gear's friction) moves the frame by (1 / kp) (A^-1 J^T)[k] t_k, so the gears'
+-- friction can hold it up to (1 / kp) sum_k |(A^-1 J^T u)_k| friction_k from where the force alone
+-- puts it along u.
 function Ctl:compliance()
   local n, A, J = self.n, self.b_A, self.b_J
   -- X = A^-1 J^T by Gaussian elimination with partial pivoting on [A | J^T]
@@ -151,16 +154,17 @@ function Ctl:compliance()
       end
     end
   end
-  local out = {}
+  local out, x = {}, {}
+  for r = 1, n do x[r] = { a[r][n + 1] / a[r][r], a[r][n + 2] / a[r][r], a[r][n + 3] / a[r][r] } end
   for i = 1, 3 do
     out[i] = {}
     for k = 1, 3 do
       local s = 0
-      for r = 1, n do s = s + J[(i - 1) * n + r - 1] * a[r][n + k] / a[r][r] end
+      for r = 1, n do s = s + J[(i - 1) * n + r - 1] * x[r][k] end
       out[i][k] = s
     end
   end
-  return out
+  return out, x
 end
 
 -- Torques (N m, one per limb joint, within the actuators' limits) at the measured state: q, qdot

@@ -49,9 +49,7 @@ return {
     posture_kd = 20,
     -- 1/s: joint damping (weighted by the arm's mass matrix) in the task's null space, with no task
     -- everywhere; it stays when the posture's gains are zero, so the redundant directions do not
-    -- swing freely. Not a cure for the sim's creep at 40 solver iterations (docs/whole-body.md,
-    -- Torque mode: 23 mm in 10 s without it, 18-21 with 10-100/s, 11 with 200/s, a plateau), and a
-    -- strong one costs tracking (a 0.5 Hz circle 6 mm RMS at 4-10/s, 8 mm at 100/s).
+    -- swing freely. A strong one costs tracking (a 0.5 Hz circle 6 mm RMS at 4-10/s, 8 mm at 100/s).
     damping = 10,
     -- s: the joint damping's rate is the angle's change over this window, not the encoder's
     -- one-period difference (one count per 5 ms is 3 mrad/s on the Hubo2+'s arms)
@@ -61,9 +59,11 @@ return {
     -- rad/s of zero: `friction` of it along the task's joint rates while its target moves (without
     -- it the arm lags a 0.5 Hz circle by 20 mm RMS in a model with the data's friction), and
     -- `friction_measured` along the measured rates while the target stands (the encoders' rate is
-    -- quantised and late: at 0.9 a 20 N push on the Hubo2+'s palm overshoots F/K by 59 % and the
-    -- friction holds it there; at 0.5 it lands within 2 %, at 0 15 % short). No target: none, the
-    -- friction helps hold the arm.
+    -- quantised and late, and the compensation stops with the motion: with the gears' friction held
+    -- in the sim, a 20 N push on the Hubo2+'s palm moves it 0.86 of F/K at 0.9 but the friction then
+    -- holds it 10-13 mm from where it was after the release; at 0.5 it returns within 5 mm but moves
+    -- a fraction of F/K: docs/whole-body.md, Torque mode). No target: none, the friction helps hold
+    -- the arm.
     friction = 0.9,
     friction_measured = 0.5,
     friction_band = 0.02,

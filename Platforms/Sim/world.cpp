@@ -31,7 +31,7 @@ World::World(const Params &p, std::vector<Body> bodies, uint64_t seed)
   world_ = dWorldCreate();
   dWorldSetGravity(world_, 0, 0, -p_.gravity);
   dWorldSetQuickStepNumIterations(world_, p_.iterations);
-  dWorldSetERP(world_, 0.2);
+  dWorldSetERP(world_, kWorldErp);
   dWorldSetCFM(world_, kWorldCfm);
   dWorldSetContactSurfaceLayer(world_, 0.0002);
   dWorldSetContactMaxCorrectingVel(world_, 1.0);
@@ -243,6 +243,7 @@ void World::build_robot(int r, const Body &body) {
   rb.actuate.assign(nj, 0);
   rb.tau.assign(nj, 0);
   rb.applied.assign(nj, 0);
+  rb.stick.assign(nj, 0);
   // self-collision: not between a link and its parent or grandparent, nor between links whose
   // boxes already touch at the zero pose (the mesh boxes are larger than the parts)
   rb.allowed.assign(nl * nl, 1);

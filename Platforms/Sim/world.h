@@ -40,6 +40,7 @@ struct Params {
   double timestep = 0.001, period = 0.008, gravity = 9.81;
   int iterations = 20;
   double rotor_inertia = 5e-4, linear_damping = 0;
+  double gear_presliding = 2.9e-4;   // rad: a stuck gear's give before it slips (torque mode)
   double temperature = 40;
   double mu = 1, kp = 5e4, kd = 300, robot_mu = 0.5;
   int max_contacts = 8;
@@ -229,6 +230,7 @@ class World {
     std::vector<int> actuate;              // per shm joint: 0 position, 1 torque (as dcm.actuator.mode)
     std::vector<double> tau;               // per shm joint: the torque commanded (N*m)
     std::vector<double> applied;           // per shm joint: the torque applied in the last physics step
+    std::vector<double> stick;             // per shm joint in torque mode: the angle its gear holds (rad)
     std::vector<char> allowed;             // self-collision allowed, nlink x nlink
     double foot_acc[2] = {0, 0};
     Vec3 vel_start = Vec3::Zero();

@@ -19,6 +19,7 @@ namespace world_internal {
 
 const int kGround = 0, kBall = 1, kRobot = 2;   // GeomInfo::kind
 const double kWorldCfm = 1e-5;
+const double kWorldErp = 0.2;   // dWorldSetERP: the share of a joint's error corrected each step
 // collision category bits: 0..47 the links of a robot, 48..62 robots, 63 static parts
 const int kLinkBits = 48;
 const unsigned long kStatic = 1ul << 63;

@@ -17,6 +17,8 @@ void params_load(const std::string &robot, Params *p) {
   p->gravity = s.num("physics.gravity");
   p->rotor_inertia = s.num("physics.link_rotor_inertia");
   p->linear_damping = s.num("physics.linear_damping", 0);
+  p->gear_presliding = s.num("physics.gear_presliding");
+  if (!(p->gear_presliding >= 0)) throw std::runtime_error(sim_lua + ": physics.gear_presliding must be >= 0 (rad)");
   p->temperature = s.num("servo.temperature");
   p->mu = s.num("contact.mu");
   p->kp = s.num("contact.kp");

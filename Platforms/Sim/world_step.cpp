@@ -42,14 +42,24 @@ void World::servo_update(Robot &rb) {
       // joint speed w the motor gives at most effort - damping * w in the direction of w (the back-EMF
       // damping of the torque-off model, damping = torque / speed: no torque at the no-load speed)
       // and brakes with at most effort. The gear's friction is ODE's dry friction: the hinge's motor,
-      // no longer the servo, holds speed 0 with at most `friction` N*m. The rotor inertia is the
-      // world's (physics.link_rotor_inertia on every moving link), as in position mode. Hardness does
-      // not apply. Not modelled (no data): the current loop's bandwidth, torque ripple, heating.
+      // no longer the servo, holds the joint with at most `friction` N*m where the gear stuck
+      // (`stick`), which follows the joint once it is more than physics.gear_presliding away (the
+      // gear slips). Holding a place, not only speed 0: QuickStep's rows are not converged at a
+      // body's iterations (40 on the Hubo2+), and a row that only asks for speed 0 lets a joint
+      // under a load well below its friction creep at a steady rate with the row's force near zero
+      // (the Hubo2+'s shoulder 4-5 mrad/s at 40, none at 400); its angle error is corrected as ODE
+      // corrects every joint's (the world's ERP per step), so the creep is undone as a servo's is.
+      // The friction's limit stays the data's. The rotor inertia is the world's
+      // (physics.link_rotor_inertia on every moving link), as in position mode. Hardness does not
+      // apply. Not modelled (no data): the current loop's bandwidth, torque ripple, heating.
+      const double angle = dJointGetHingeAngle(h);
       if (rb.mode[j] != 3) {
         dJointSetHingeParam(h, dParamCFM, kWorldCfm);
         rb.mode[j] = 3;
+        rb.stick[j] = angle;
       }
-      dJointSetHingeParam(h, dParamVel, 0);
+      rb.stick[j] = std::min(std::max(rb.stick[j], angle - p_.gear_presliding), angle + p_.gear_presliding);
+      dJointSetHingeParam(h, dParamVel, kWorldErp / p_.timestep * (rb.stick[j] - angle));
       dJointSetHingeParam(h, dParamFMax, l.friction);
       const double bw = l.damping * dJointGetHingeAngleRate(h);
       const double hi = std::min(l.effort, l.effort - bw), lo = std::max(-l.effort, -l.effort - bw);

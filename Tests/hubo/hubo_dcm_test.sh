@@ -12,19 +12,7 @@ cd "${HRP_ROOT:-$(dirname "$0")/../..}"
 source Tests/hubo/tree.sh
 export ROBOT_ID=${ROBOT_ID:-9450} PLATFORM=Hubo ROBOT=hubo2plus
 source Tests/dcm_emu_lib.sh
-hubo_tree "$T/root"
-mkdir "$T/bus"
-export FAKECAN_DIR=$T/bus HUBO_FAKE_CAN=1
-cd "$T/root"
-
-start_emu() {
-  rm -f "$T/emu.in"; mkfifo "$T/emu.in"
-  Platforms/Hubo/emulator/hubo_emulator --stdin --quiet --realtime "$@" <"$T/emu.in" >>"$T/emu.out" 2>>"$T/emu.log" &
-  EMU=$!
-  exec 3>"$T/emu.in"
-  for _ in $(seq 100); do grep -q ready "$T/emu.log" 2>/dev/null && break; sleep 0.05; done
-}
-start_dcm() { ./run_dcm "$@" 2>>"$T/dcm.log" & DCM=$!; }
+hubo_fake_bus
 # emu_board NAME: "ref0 ref1 enc0 enc1 fet ctrl home dead" from the emulator's stats
 emu_board() { emu_stats; grep "^board $1 " "$T/emu.out" | awk '{print $8, $9, $11, $12, $14, $16, $18, $20}'; }
 emu_line() { emu_stats; grep "^$1" "$T/emu.out"; }

@@ -17,19 +17,7 @@ cd "${HRP_ROOT:-$(dirname "$0")/../..}"
 source Tests/hubo/tree.sh
 export ROBOT_ID=$(( ${ROBOT_ID:-9400} + 90 )) PLATFORM=Hubo ROBOT=hubo2plus
 source Tests/dcm_emu_lib.sh
-hubo_tree "$T/root"
-mkdir "$T/bus"
-export FAKECAN_DIR=$T/bus HUBO_FAKE_CAN=1
-cd "$T/root"
-
-start_emu() {
-  rm -f "$T/emu.in"; mkfifo "$T/emu.in"
-  Platforms/Hubo/emulator/hubo_emulator --stdin --quiet --realtime "$@" <"$T/emu.in" >>"$T/emu.out" 2>>"$T/emu.log" &
-  EMU=$!
-  exec 3>"$T/emu.in"
-  for _ in $(seq 100); do grep -q ready "$T/emu.log" 2>/dev/null && break; sleep 0.05; done
-}
-start_dcm() { ./run_dcm "$@" 2>>"$T/dcm.log" & DCM=$!; }
+hubo_fake_bus
 # jmc9 KEY [N]: the N-th value (1: the first) after KEY in the emulator's line of board JMC9
 jmc9() { emu_stats; grep "^board JMC9 " "$T/emu.out" | awk -v k="$1" -v n="${2:-1}" '{for (i = 1; i < NF; i++) if ($i == k) {print $(i + n); exit}}'; }
 stat() { repl "local s = require('shm').open('dcm.stats'); print($1)"; }

@@ -6,8 +6,8 @@
 # holding the arm. Prints TAP and the figures.
 #   Tests/sim/torque_mode_test.sh [ITERATIONS]
 # ITERATIONS: dWorldQuickStep iterations through a site overlay (a solver setting, not physics; the
-# body's own 40 without it), with which the palm's drift bound is issue 31's 1 cm instead of 2 cm
-# (Tests/sim/torque_converged_test.sh runs it with 400).
+# body's own 40 without it): the same checks, for comparing the figures (Tests/sim/torque_converged_test.sh
+# runs it with 400).
 set -u
 cd "$(dirname "$0")/../.."
 source Run/env.sh
@@ -19,7 +19,6 @@ label=torque_arm
 if [ -n "$iterations" ]; then
   label=torque_arm_$iterations
   solver_site "$iterations"
-  export TORQUE_DRIFT_BOUND=0.01
 fi
 ROBOT=hubo2plus lockstep_scenario "$id" "$label" Tests/sim/torque_arm.lua
 echo "1..$k"

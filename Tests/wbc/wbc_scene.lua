@@ -4,6 +4,7 @@
 --   scene.start(wait, tap)          -- stands 3 s, then Motion.request('wbc') (1 s): a TAP line
 --   local f = scene.stance_frame()  -- f.to_field({x, y, z}), f.to_stance({x, y, z}): stance frame <-> field
 --   scene.xyz(Sim.link_truth('r_palm')), scene.dist(a, b), scene.in_torso('r_palm')
+--   scene.in_link('r_palm', 'torso')  -- a link's origin in another link's frame
 package.path = os.getenv('HRP_ROOT') .. '/Tests/motion/?.lua;' .. package.path
 local ks = require('kick_setup')
 local Sim, Motion, WBC = require('Sim'), require('Motion'), require('WBC')
@@ -23,11 +24,19 @@ function M.to_local(t, d)
   return out
 end
 
--- Where link `name` is in the torso's frame (the limb's own doing, whatever the legs do).
+-- Where link `name` is in the root link's frame (Sim.truth's: the pelvis on the Hubo2+; the limb's
+-- own doing and the waist's, whatever the legs do).
 function M.in_torso(name)
   local p, t = Sim.link_truth(name), Sim.truth()
   return M.to_local(t, { p.x - t.x, p.y - t.y, p.z - t.z })
 end
+-- Where link `name` is in link `of`'s frame (Sim.link_truth of both: e.g. a hand against the link its
+-- arm hangs from, whatever the waist and the legs do).
+function M.in_link(name, of)
+  local p, t = Sim.link_truth(name), Sim.link_truth(of)
+  return M.to_local(t, { p.x - t.x, p.y - t.y, p.z - t.z })
+end
+
 function M.dist(a, b) return math.sqrt((a[1] - b[1]) ^ 2 + (a[2] - b[2]) ^ 2 + (a[3] - b[3]) ^ 2) end
 
 -- The motion process up, a settled stance, then the wbc state running (checked: one TAP line).

@@ -8,6 +8,11 @@ return {
     -- Rotor-like inertia added to every moving link's inertia diagonal, kg*m^2 (shared/robots/README.md:
     -- QuickStep needs 3e-4..1e-3 on the 12 g links; the real servos' reflected rotor inertia is larger).
     link_rotor_inertia = 5e-4,
+    -- rad: in torque mode a joint's gear friction holds the joint where it stuck until it has given
+    -- this much (then it slips and the stuck place follows): a harmonic drive's lost motion, at most
+    -- 1 arc-minute in the makers' catalogues (no figure in shared/robots; the small bodies have no
+    -- torque path). Platforms/Sim/world_step.cpp, servo_update.
+    gear_presliding = 2.9e-4,
     linear_damping = 0,          -- no air drag on links (a 3 kg robot is not slowed by air)
   },
 

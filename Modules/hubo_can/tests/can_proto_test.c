@@ -4,22 +4,11 @@
  * per-bus bookkeeping (corrupt, misaddressed, unexpected, late, timeouts, dead boards). */
 #include "can_proto.h"
 #include "tap.h"
+#include "hubo_can/tests/frame_by_hand.h"
 
 #include <math.h>
 #include <stdarg.h>
 #include <string.h>
-
-static hcan_frame F(uint32_t id, int dlc, ...) {
-  hcan_frame f;
-  memset(&f, 0, sizeof f);
-  f.id = id;
-  f.dlc = (uint8_t)dlc;
-  va_list ap;
-  va_start(ap, dlc);
-  for (int i = 0; i < dlc; i++) f.data[i] = (uint8_t)va_arg(ap, int);
-  va_end(ap);
-  return f;
-}
 
 static int same(const hcan_frame *a, const hcan_frame *b) {
   if (a->id != b->id || a->dlc != b->dlc || memcmp(a->data, b->data, a->dlc) != 0) {

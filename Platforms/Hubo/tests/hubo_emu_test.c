@@ -4,22 +4,11 @@
  * Frames written out by hand from hubo_can.md (4.1, 4.2), not by the encoder. TAP. */
 #include "../emulator/emu.h"
 #include "tap.h"
+#include "hubo_can/tests/frame_by_hand.h"
 
 #include <math.h>
 #include <stdarg.h>
 #include <string.h>
-
-static hcan_frame F(uint32_t id, int dlc, ...) {
-  hcan_frame f;
-  memset(&f, 0, sizeof f);
-  f.id = id;
-  f.dlc = (uint8_t)dlc;
-  va_list ap;
-  va_start(ap, dlc);
-  for (int i = 0; i < dlc; i++) f.data[i] = (uint8_t)va_arg(ap, int);
-  va_end(ap);
-  return f;
-}
 
 int main(void) {
   /* one 2-channel board 0x09 on bus 0, its channels as can.lua's RSY / REB: 1:1 x100, 4000 counts,
