@@ -215,15 +215,32 @@ Renderer::Renderer(const Params &p, uint64_t seed)
       if (line) tex_[(size_t)(j >> 3) * (tw_ >> 3) + (i >> 3)] |= 1ull << (((j & 7) << 3) + (i & 7));
     }
   }
-  // the tiles that are not plain carpet (a line texel, or partly beyond the carpet) counted over
-  // every rectangle from tile (0, 0): how many a rectangle holds in four look-ups
+  // each tile's reach: how many tiles around it (in both axes) are plain carpet, with no line texel
+  // and wholly inside the carpet (at most 255); the texture's far edges count as not carpet, its
+  // near ones not at all (the quarter's mirror images lie there). The distance to the nearest tile
+  // that is not, along its row, then the larger of that and the rows' distance.
   const int tiles_x = tw_ / 8, tiles_y = th_ / 8;
-  bad_.assign((size_t)(tiles_x + 1) * (tiles_y + 1), 0);
-  for (int tj = 0; tj < tiles_y; tj++)
+  std::vector<int> row_dist((size_t)tiles_x * tiles_y);
+  for (int tj = 0; tj < tiles_y; tj++) {
+    int last = -100000;   // leftward
     for (int ti = 0; ti < tiles_x; ti++) {
       const bool plain = tex_[(size_t)tj * tiles_x + ti] == 0 && (ti + 1) * 8 <= carpet_x_ && (tj + 1) * 8 <= carpet_y_;
-      const size_t k = (size_t)(tj + 1) * (tiles_x + 1) + ti + 1;
-      bad_[k] = (plain ? 0 : 1) + bad_[k - 1] + bad_[k - tiles_x - 1] - bad_[k - tiles_x - 2];
+      if (!plain) last = ti;
+      row_dist[(size_t)tj * tiles_x + ti] = ti - last;
+    }
+    last = tiles_x;   // rightward, the far edge first
+    for (int ti = tiles_x - 1; ti >= 0; ti--) {
+      int &d = row_dist[(size_t)tj * tiles_x + ti];
+      if (d == 0) last = ti;
+      d = std::min(d, last - ti);
+    }
+  }
+  reach_.assign((size_t)tiles_x * tiles_y, 0);
+  for (int tj = 0; tj < tiles_y; tj++)
+    for (int ti = 0; ti < tiles_x; ti++) {
+      int d = tiles_y - tj;   // the far edge
+      for (int j = 0; j < tiles_y; j++) d = std::min(d, std::max(row_dist[(size_t)j * tiles_x + ti], std::abs(j - tj)));
+      reach_[(size_t)tj * tiles_x + ti] = (uint8_t)std::min(255, std::max(0, d - 1));
     }
   std::mt19937_64 rng(seed ^ 0x9e3779b97f4a7c15ull);
   std::normal_distribution<double> n(0, std::max(0.0, p.cam_noise));
@@ -248,8 +265,7 @@ void Renderer::ground(const Camera &c, const Look &look, uint8_t *img) const {
   const uint8_t *col[4] = {kFloor, kGreen, kWhite, kSky};
   const uint64_t *tex = tex_.data();
   const int tiles_x = tw_ >> 3;
-  const int *bad = bad_.data();
-  const int bstride = tiles_x + 1;
+  const uint8_t *reach = reach_.data();
   std::vector<uint8_t> cls(W);
   // realism: light x 256 per pixel of the row (16 bits: the light stays below 2), and at the samples
   std::vector<int16_t> lt(look.light ? W : 0);
@@ -298,18 +314,13 @@ void Renderer::ground(const Camera &c, const Look &look, uint8_t *img) const {
         ground_xy(u + 8, &gx1, &gy1);
         if (std::fabs(gx1 - gx0) + std::fabs(gy1 - gy0) > 400.0f) exact = true;
         // plain carpet where the block's tiles are: along a row the ground point moves along a line,
-        // monotonically between two pixels' (cast or interpolated), so the block's samples lie in the
-        // tiles of the box between its ends (on the mirrored quarter: from 0 where it crosses an axis),
-        // give or take a texel for the rounding
-        const float ax0 = std::fabs(gx0), ay0 = std::fabs(gy0), ax1 = std::fabs(gx1), ay1 = std::fabs(gy1);
-        const float xlo = (gx0 >= 0) == (gx1 >= 0) ? std::min(ax0, ax1) : 0.0f, xhi = std::max(ax0, ax1);
-        const float ylo = (gy0 >= 0) == (gy1 >= 0) ? std::min(ay0, ay1) : 0.0f, yhi = std::max(ay0, ay1);
-        bool plain = false;
-        if (xhi + 1.0f < fw && yhi + 1.0f < fh) {
-          const int i0 = (int)std::max(0.0f, xlo - 1.0f) >> 3, i1 = ((int)(xhi + 1.0f) >> 3) + 1;
-          const int j0 = (int)std::max(0.0f, ylo - 1.0f) >> 3, j1 = ((int)(yhi + 1.0f) >> 3) + 1;
-          plain = bad[j1 * bstride + i1] - bad[j0 * bstride + i1] - bad[j1 * bstride + i0] + bad[j0 * bstride + i0] == 0;
-        }
+        // monotonically between two pixels' (cast or interpolated), so the block's samples (on the
+        // mirrored quarter) lie within max(|dx|, |dy|) texels of its first one, within that many
+        // tiles, rounded up, plus one (a texel's slack for the rounding)
+        const float ax0 = std::fabs(gx0), ay0 = std::fabs(gy0);
+        const float span = std::max(std::fabs(gx1 - gx0), std::fabs(gy1 - gy0));
+        const bool plain = ax0 < fw && ay0 < fh && span < 2000.0f &&
+                           reach[(size_t)((int)ay0 >> 3) * tiles_x + ((int)ax0 >> 3)] >= ((int)(span + 1.0f) >> 3) + 1;
         if (plain) {
           memset(&cls[u], 1, 8);
         } else if (exact) {

@@ -93,10 +93,9 @@ class Renderer {
   // 64-bit word: 28 KB, so the ray casts stay in the L1 cache
   std::vector<uint64_t> tex_;
   float carpet_x_, carpet_y_;    // carpet half-size in texels
-  // the tiles with a line texel or partly beyond the carpet, counted over the rectangle from tile
-  // (0, 0) to each (exclusive; (tw_ / 8 + 1) per row): a block of 8 pixels whose samples stay in
-  // tiles without any is carpet without a look-up per pixel
-  std::vector<int> bad_;
+  // per tile: how many tiles around it are plain carpet (a block of 8 pixels whose samples stay
+  // within them is carpet without a look-up per pixel)
+  std::vector<uint8_t> reach_;
   static constexpr int kNoiseExtra = 4096;
   std::vector<int8_t> noise_;    // luma noise table (65536 entries, then the first kNoiseExtra again)
   uint64_t seed_;
