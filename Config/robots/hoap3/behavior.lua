@@ -26,8 +26,9 @@ return {
     -- still sees most of it
     kick_x = 0.24,             -- m
     kick_y = 0.045,            -- m: the sole's centre out from the middle (walk.lua footY)
-    -- no kick of its own: the OP3's standing kick (Config/common/walk.lua) swings a leg on one
-    -- 4.5 N*m knee under 8.8 kg, and a fall ends the play; it walks the ball into the goal
+    -- no kick of its own: the OP3's standing kick (Config/common/walk.lua) throws it over (ROBOT=hoap3
+    -- Tests/motion/sim_walk_test.sh kick: a fall, the toe at 0.40 m/s, the ball moved 0.13 m) and a
+    -- fall ends its play; it walks the ball into the goal
     use_kick = false,
     align = { vx = { -0.05, 0.12 }, max_va = 0.4 },
     nav = { min_vx = -0.06 },  -- m/s: the walk's limit backwards
