@@ -73,12 +73,14 @@ void lit_row(const uint8_t *cls, const int16_t *lt, const uint8_t *const col[4],
   const __m128i k255 = _mm_set1_epi16(255), k256 = _mm_set1_epi16(256);
   __m128i m[4];
   for (; u + 8 <= W; u += 8) {
-    const __m128i cl = _mm_unpacklo_epi8(_mm_loadl_epi64((const __m128i *)(cls + u)), zero);
-    for (int k = 0; k < 4; k++) m[k] = _mm_cmpeq_epi16(cl, _mm_set1_epi16((short)k));
-    // 8 pixels of carpet (most of a frame): its colour, else each pixel's by its class
+    // 8 pixels of carpet (most of a frame): its colour in the light, else each pixel's by its class
     uint64_t c8;
     memcpy(&c8, cls + u, 8);
     const bool carpet = c8 == 0x0101010101010101ull;
+    if (!carpet) {
+      const __m128i cl = _mm_unpacklo_epi8(_mm_loadl_epi64((const __m128i *)(cls + u)), zero);
+      for (int k = 0; k < 4; k++) m[k] = _mm_cmpeq_epi16(cl, _mm_set1_epi16((short)k));
+    }
     auto pick = [&](int k) {
       if (carpet) return _mm_set1_epi16(col[1][k]);
       __m128i x = zero;
@@ -86,7 +88,7 @@ void lit_row(const uint8_t *cls, const int16_t *lt, const uint8_t *const col[4],
       return x;
     };
     __m128i l = _mm_loadu_si128((const __m128i *)(lt + u));
-    l = _mm_or_si128(_mm_and_si128(m[3], k256), _mm_andnot_si128(m[3], l));
+    if (!carpet) l = _mm_or_si128(_mm_and_si128(m[3], k256), _mm_andnot_si128(m[3], l));
     const __m128i y = _mm_min_epi16(_mm_mulhi_epu16(_mm_slli_epi16(pick(0), 8), l), k255);
     const __m128i cu = _mm_mulhi_epi16(_mm_slli_epi16(_mm_sub_epi16(pick(1), k128), 8), l);
     const __m128i cv = _mm_mulhi_epi16(_mm_slli_epi16(_mm_sub_epi16(pick(2), k128), 8), l);
@@ -213,13 +215,33 @@ Renderer::Renderer(const Params &p, uint64_t seed)
       if (line) tex_[(size_t)(j >> 3) * (tw_ >> 3) + (i >> 3)] |= 1ull << (((j & 7) << 3) + (i & 7));
     }
   }
-  // coarse level: one flag per 8 x 8 tiles (64 cm square), set if any line texel is inside
-  cells_x_ = (tw_ / 8 + 7) / 8;
-  const int cells_y = (th_ / 8 + 7) / 8;
-  cells_.assign((size_t)cells_x_ * cells_y, 0);
-  for (int tj = 0; tj < th_ / 8; tj++)
-    for (int ti = 0; ti < tw_ / 8; ti++)
-      if (tex_[(size_t)tj * (tw_ / 8) + ti]) cells_[(size_t)(tj / 8) * cells_x_ + ti / 8] = 1;
+  // each tile's reach: how many tiles around it (in both axes) are plain carpet, with no line texel
+  // and wholly inside the carpet (at most 255); the texture's far edges count as not carpet, its
+  // near ones not at all (the quarter's mirror images lie there). The distance to the nearest tile
+  // that is not, along its row, then the larger of that and the rows' distance.
+  const int tiles_x = tw_ / 8, tiles_y = th_ / 8;
+  std::vector<int> row_dist((size_t)tiles_x * tiles_y);
+  for (int tj = 0; tj < tiles_y; tj++) {
+    int last = -100000;   // leftward
+    for (int ti = 0; ti < tiles_x; ti++) {
+      const bool plain = tex_[(size_t)tj * tiles_x + ti] == 0 && (ti + 1) * 8 <= carpet_x_ && (tj + 1) * 8 <= carpet_y_;
+      if (!plain) last = ti;
+      row_dist[(size_t)tj * tiles_x + ti] = ti - last;
+    }
+    last = tiles_x;   // rightward, the far edge first
+    for (int ti = tiles_x - 1; ti >= 0; ti--) {
+      int &d = row_dist[(size_t)tj * tiles_x + ti];
+      if (d == 0) last = ti;
+      d = std::min(d, last - ti);
+    }
+  }
+  reach_.assign((size_t)tiles_x * tiles_y, 0);
+  for (int tj = 0; tj < tiles_y; tj++)
+    for (int ti = 0; ti < tiles_x; ti++) {
+      int d = tiles_y - tj;   // the far edge
+      for (int j = 0; j < tiles_y; j++) d = std::min(d, std::max(row_dist[(size_t)j * tiles_x + ti], std::abs(j - tj)));
+      reach_[(size_t)tj * tiles_x + ti] = (uint8_t)std::min(255, std::max(0, d - 1));
+    }
   std::mt19937_64 rng(seed ^ 0x9e3779b97f4a7c15ull);
   std::normal_distribution<double> n(0, std::max(0.0, p.cam_noise));
   noise_.resize(65536);
@@ -243,8 +265,7 @@ void Renderer::ground(const Camera &c, const Look &look, uint8_t *img) const {
   const uint8_t *col[4] = {kFloor, kGreen, kWhite, kSky};
   const uint64_t *tex = tex_.data();
   const int tiles_x = tw_ >> 3;
-  const uint8_t *cells = cells_.data();
-  const int cells_x = cells_x_;
+  const uint8_t *reach = reach_.data();
   std::vector<uint8_t> cls(W);
   // realism: light x 256 per pixel of the row (16 bits: the light stays below 2), and at the samples
   std::vector<int16_t> lt(look.light ? W : 0);
@@ -283,30 +304,36 @@ void Renderer::ground(const Camera &c, const Look &look, uint8_t *img) const {
     };
     int u = std::max(ua, 0);
     if (ub >= u) {
+      // interpolated only while the blocks are short in texels: from the first one that jumps metres
+      // (near the horizon) on, every pixel of the row is cast
+      bool exact = false;
       float gx0, gy0;
       ground_xy(u, &gx0, &gy0);
       while (u + 8 <= ub) {
         float gx1, gy1;
         ground_xy(u + 8, &gx1, &gy1);
-        // only where the span is short in texels: near the horizon one step jumps metres
-        if (std::fabs(gx1 - gx0) + std::fabs(gy1 - gy0) > 400.0f) break;
-        // most blocks lie inside one 8 x 8 texel tile without line bits: plain carpet
-        const bool same_side = (gx0 >= 0) == (gx1 >= 0) && (gy0 >= 0) == (gy1 >= 0);
-        const float ax0 = std::fabs(gx0), ay0 = std::fabs(gy0), ax1 = std::fabs(gx1), ay1 = std::fabs(gy1);
-        if (same_side && ax0 < fw && ay0 < fh && ax1 < fw && ay1 < fh) {
-          const int i0 = (int)ax0 >> 3, j0 = (int)ay0 >> 3, i1 = (int)ax1 >> 3, j1 = (int)ay1 >> 3;
-          if ((i0 == i1 && j0 == j1 && tex[(size_t)j0 * tiles_x + i0] == 0) ||
-              ((i0 >> 3) == (i1 >> 3) && (j0 >> 3) == (j1 >> 3) && cells[(size_t)(j0 >> 3) * cells_x + (i0 >> 3)] == 0)) {
-            memset(&cls[u], 1, 8);
-            u += 8;
-            gx0 = gx1;
-            gy0 = gy1;
-            continue;
+        if (std::fabs(gx1 - gx0) + std::fabs(gy1 - gy0) > 400.0f) exact = true;
+        // plain carpet where the block's tiles are: along a row the ground point moves along a line,
+        // monotonically between two pixels' (cast or interpolated), so the block's samples (on the
+        // mirrored quarter) lie within max(|dx|, |dy|) texels of its first one, within that many
+        // tiles, rounded up, plus one (a texel's slack for the rounding)
+        const float ax0 = std::fabs(gx0), ay0 = std::fabs(gy0);
+        const float span = std::max(std::fabs(gx1 - gx0), std::fabs(gy1 - gy0));
+        const bool plain = ax0 < fw && ay0 < fh && span < 2000.0f &&
+                           reach[(size_t)((int)ay0 >> 3) * tiles_x + ((int)ax0 >> 3)] >= ((int)(span + 1.0f) >> 3) + 1;
+        if (plain) {
+          memset(&cls[u], 1, 8);
+        } else if (exact) {
+          for (int k = 0; k < 8; k++) {
+            float gx, gy;
+            ground_xy(u + k, &gx, &gy);
+            cls[u + k] = lookup(gx, gy);
           }
+        } else {
+          const float sx = (gx1 - gx0) * 0.125f, sy = (gy1 - gy0) * 0.125f;
+          float gx = gx0, gy = gy0;
+          for (int k = 0; k < 8; k++, gx += sx, gy += sy) cls[u + k] = lookup(gx, gy);
         }
-        const float sx = (gx1 - gx0) * 0.125f, sy = (gy1 - gy0) * 0.125f;
-        float gx = gx0, gy = gy0;
-        for (int k = 0; k < 8; k++, gx += sx, gy += sy) cls[u + k] = lookup(gx, gy);
         u += 8;
         gx0 = gx1;
         gy0 = gy1;
@@ -369,9 +396,22 @@ void Renderer::ground(const Camera &c, const Look &look, uint8_t *img) const {
       const int8_t *nrow = noise_.data() + ((base + nz.offset) & 0xffff);   // no wrap within a row
       const __m128i zero = _mm_setzero_si128(), low = _mm_set1_epi16(0x00ff);
       const __m128i k1 = _mm_set1_epi8(1), k2 = _mm_set1_epi8(2), k3 = _mm_set1_epi8(3);
+      const __m128i carpet_y = _mm_set1_epi8((char)kGreen[0]);
+      const __m128i carpet_uv = _mm_set1_epi32((int)((uint32_t)kGreen[1] << 8 | (uint32_t)kGreen[2] << 24));
       for (; u + 16 <= W; u += 16) {
         const __m128i cl = _mm_loadu_si128((const __m128i *)&cls[u]);
-        const __m128i m0 = _mm_cmpeq_epi8(cl, zero), m1 = _mm_cmpeq_epi8(cl, k1);
+        const __m128i m1 = _mm_cmpeq_epi8(cl, k1);
+        const __m128i n = _mm_loadu_si128((const __m128i *)(nrow + u));
+        const __m128i pos = _mm_and_si128(n, _mm_cmpgt_epi8(n, zero));
+        const __m128i neg = _mm_and_si128(_mm_sub_epi8(zero, n), _mm_cmpgt_epi8(zero, n));
+        if (_mm_movemask_epi8(m1) == 0xffff) {
+          // 16 pixels of carpet (most of a frame): its luma with the noise, its chroma
+          const __m128i y = _mm_subs_epu8(_mm_adds_epu8(carpet_y, pos), neg);
+          _mm_storeu_si128((__m128i *)(row + 2 * u), _mm_or_si128(_mm_unpacklo_epi8(y, zero), carpet_uv));
+          _mm_storeu_si128((__m128i *)(row + 2 * u + 16), _mm_or_si128(_mm_unpackhi_epi8(y, zero), carpet_uv));
+          continue;
+        }
+        const __m128i m0 = _mm_cmpeq_epi8(cl, zero);
         const __m128i m2 = _mm_cmpeq_epi8(cl, k2), m3 = _mm_cmpeq_epi8(cl, k3);
         auto pick = [&](int k) {
           return _mm_or_si128(_mm_or_si128(_mm_and_si128(m0, _mm_set1_epi8((char)col[0][k])),
@@ -379,9 +419,6 @@ void Renderer::ground(const Camera &c, const Look &look, uint8_t *img) const {
                               _mm_or_si128(_mm_and_si128(m2, _mm_set1_epi8((char)col[2][k])),
                                            _mm_and_si128(m3, _mm_set1_epi8((char)col[3][k]))));
         };
-        const __m128i n = _mm_loadu_si128((const __m128i *)(nrow + u));
-        const __m128i pos = _mm_and_si128(n, _mm_cmpgt_epi8(n, zero));
-        const __m128i neg = _mm_and_si128(_mm_sub_epi8(zero, n), _mm_cmpgt_epi8(zero, n));
         const __m128i y = _mm_subs_epu8(_mm_adds_epu8(pick(0), pos), neg);
         const __m128i cu8 = pick(1), cv8 = pick(2);
         const __m128i U = _mm_srli_epi16(_mm_add_epi16(_mm_and_si128(cu8, low), _mm_srli_epi16(cu8, 8)), 1);

@@ -93,8 +93,9 @@ class Renderer {
   // 64-bit word: 28 KB, so the ray casts stay in the L1 cache
   std::vector<uint64_t> tex_;
   float carpet_x_, carpet_y_;    // carpet half-size in texels
-  std::vector<uint8_t> cells_;   // 1 where a 64 x 64 texel cell holds any line texel
-  int cells_x_;
+  // per tile: how many tiles around it are plain carpet (a block of 8 pixels whose samples stay
+  // within them is carpet without a look-up per pixel)
+  std::vector<uint8_t> reach_;
   static constexpr int kNoiseExtra = 4096;
   std::vector<int8_t> noise_;    // luma noise table (65536 entries, then the first kNoiseExtra again)
   uint64_t seed_;

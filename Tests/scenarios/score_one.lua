@@ -97,9 +97,55 @@ local function wait_quarter()
   end
 end
 if cap then cap:write('# t ex ey walking state\n') end
+-- optional frames ($FRAME_DIR): the camera's frame as a PNG every $FRAME_EVERY s (default 5) of play,
+-- the vision's ball circled in red: frame_T.png, and a line per frame in $FRAME_DIR/frames.txt
+-- with the true ball in the robot frame and what the vision made of it
+local frame_dir = os.getenv('FRAME_DIR') or ''
+local frame_every = tonumber(os.getenv('FRAME_EVERY') or '') or 5
+local next_frame = 0
+local function dump_frame()
+  if frame_dir == '' or Body.get_time() - t0 < next_frame then return end
+  next_frame = next_frame + frame_every
+  local draw = require('Tests.vision.draw')
+  local cam = shm.open('camera.image')
+  local w, h = cam.width[0], cam.height[0]
+  local rgb = ffi.new('uint8_t[?]', w * h * 3)
+  for i = 0, w * h - 1 do
+    local pair = bit.band(i, bit.bnot(1)) * 2
+    local y, u, v = cam.yuyv[2 * i], cam.yuyv[pair + 1] - 128, cam.yuyv[pair + 3] - 128
+    rgb[3 * i] = math.max(0, math.min(255, y + 1.402 * v))
+    rgb[3 * i + 1] = math.max(0, math.min(255, y - 0.344 * u - 0.714 * v))
+    rgb[3 * i + 2] = math.max(0, math.min(255, y + 1.772 * u))
+  end
+  local seen = vision.ball_detected[0] ~= 0
+  if seen then
+    local bu, bv = vision.ball_image[0], vision.ball_image[1]
+    for r = vision.ball_radius[0] + 1, vision.ball_radius[0] + 3 do
+      local n = math.max(64, math.floor(8 * r))
+      for k = 0, n - 1 do
+        local px = math.floor(bu + r * math.cos(2 * math.pi * k / n))
+        local py = math.floor(bv + r * math.sin(2 * math.pi * k / n))
+        if px >= 0 and py >= 0 and px < w and py < h then
+          rgb[3 * (py * w + px)], rgb[3 * (py * w + px) + 1], rgb[3 * (py * w + px) + 2] = 255, 0, 0
+        end
+      end
+    end
+  end
+  local t = Body.get_time() - t0
+  draw.write_png(string.format('%s/frame_%05.1f.png', frame_dir, t), rgb, w, h)
+  local T = Sim.truth()
+  local dx, dy = T.ball.x - T.x, T.ball.y - T.y
+  local c, sn = math.cos(T.yaw), math.sin(T.yaw)
+  local f = assert(io.open(frame_dir .. '/frames.txt', 'a'))
+  f:write(string.format('t=%.1f ball_true=(%.2f,%.2f) seen=%d ball_seen=(%.2f,%.2f) head=(%.2f,%.2f)\n', t,
+    c * dx + sn * dy, -sn * dx + c * dy, seen and 1 or 0, vision.ball_position[0], vision.ball_position[1],
+    cam.head[0], cam.head[1]))
+  f:close()
+end
 while Body.get_time() - t0 < limit do
   wait_quarter()
   log_step()
+  dump_frame()
   local plus, minus = Sim.score()
   if plus > plus0 then goal = true break end
   if minus > minus0 then own = true break end

@@ -80,6 +80,27 @@ done
 median=$(printf '%s\n' "${times[@]:-}" | grep . | sort -g \
   | awk '{a[NR]=$1} END {if (NR==0) print "none"; else if (NR%2) print a[(NR+1)/2]; else print (a[NR/2]+a[NR/2+1])/2}')
 echo "# scored in $goals of $n runs; median time to goal: $median s (limit $LIMIT s)"
+# falls (the truth's fallen flag rising in a trace) and the walk's speeds in play: the truth's
+# displacement over 2 s windows in the robot's frame, the fastest window of all runs (forward,
+# sideways, turning) and the mean forward speed while dribbling
+traces=()
+for seed in "${SEEDS[@]}"; do [ -f "$LOGDIR/trace_$seed.txt" ] && traces+=("$LOGDIR/trace_$seed.txt"); done
+if [ ${#traces[@]} -gt 0 ]; then
+  awk 'FNR == 1 { n = 0; was = 0 }
+    /^#/ || /^post/ { next }
+    { if ($7 == 1 && !was) falls++; was = $7
+      n++; t[n] = $1; x[n] = $2; y[n] = $3; a[n] = $4
+      if (n > 8) { k = n - 8; dt = t[n] - t[k]
+        if (dt > 0) {
+          c = cos(a[k]); s = sin(a[k]); dx = x[n] - x[k]; dy = y[n] - y[k]
+          f = (c * dx + s * dy) / dt; l = (-s * dx + c * dy) / dt
+          da = a[n] - a[k]; while (da > 3.14159265) da -= 6.2831853; while (da < -3.14159265) da += 6.2831853
+          if (f > fx) fx = f; if (-f > bx) bx = -f; if (l > ly) ly = l; if (-l > ly) ly = -l
+          if (da / dt > va) va = da / dt; if (-da / dt > va) va = -da / dt
+          if ($14 == "dribble" && $7 == 0) { dsum += f; dn++ } } } }
+    END { printf "# falls: %d; walk speeds in play (2 s, fastest): forward %.3f m/s, backward %.3f m/s, sideways %.3f m/s, turning %.2f rad/s; dribbling %.3f m/s on average\n", falls, fx, bx, ly, va, dn ? dsum / dn : 0 }' \
+    "${traces[@]}"
+fi
 need=$(( (${SCORE_NEED:-9} * n + 9) / 10 ))   # SCORE_NEED of every 10 runs (default 9)
 if [ "$goals" -ge "$need" ]; then echo "ok 1 - robot scores in $goals/$n seeded runs within $LIMIT s (median $median s)"
 else echo "not ok 1 - robot scores in only $goals/$n seeded runs within $LIMIT s (need $need)"; fi

@@ -35,5 +35,6 @@ bench standup_darwin env ROBOT=darwin Tools/tune/standup_stats.sh
 bench recorder Tools/bench/recorder.sh 20
 bench game_replay bash Tests/replay/game_replay_test.sh 120
 bench darwin_score env SCORE_NEED=9 bash Tests/scenarios/darwin_score_test.sh
+bench hoap3_score bash Tools/bench/hoap3_score.sh
 bench hil_walk_op3 bash Tools/bench/dxl_sim_walk.sh
 bench hubo_balance_push bash Tests/motion/hubo_balance_test.sh push

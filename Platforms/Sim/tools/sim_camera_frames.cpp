@@ -1,7 +1,7 @@
 // sim_camera_frames: seeded scenes of the sim camera, each rendered by the clean camera and by the
 // realistic one (sim.lua camera.realism's settings; effects.h), to PNGs and/or timed.
 //   sim_camera_frames [--out DIR] [--scenes N] [--seed S] [--ball white|orange] [--montage FILE]
-//                     [--montage-scene K] [--bench] [--only clean|realistic]
+//                     [--montage-scene K] [--bench] [--only clean|realistic] [--raw FILE]
 // A scene: four robots (two per team) and the ball on the field at seeded places, the camera of
 // robot 0 with its head anywhere, turning during the exposure at up to 4 rad/s (a head scan; the
 // camera pose at the exposure's start from the head angle then, as the DCM takes it from its pose
@@ -12,6 +12,8 @@
 // --bench prints the CPU time per frame of each camera (this thread's, so other load matters less).
 // --only renders one camera's frames (the other's stay black): a profile of that camera alone
 // (perf record build/bin/sim_camera_frames --scenes 400 --only realistic).
+// --raw writes every scene's clean then realistic frame (YUYV, W x H x 2 bytes each) to FILE: two
+// renderers' frames compared byte by byte (Tools/bench/camera_diff.py).
 #include <time.h>
 
 #include <climits>
@@ -45,7 +47,7 @@ void blit(const uint8_t *src, int W, int u0, int v0, int w, int h, uint8_t *dst,
 }  // namespace
 
 int main(int argc, char **argv) {
-  const char *out_arg = "", *montage_arg = "";
+  const char *out_arg = "", *montage_arg = "", *raw_arg = "";
   std::string ball_kind;
   int nscenes = 8, montage_scene = -1, bench = 0;
   const char *only_arg = "";
@@ -60,11 +62,12 @@ int main(int argc, char **argv) {
       {"--montage-scene", DCM_OPT_INT, &montage_scene, 0, 1e6, "K",
        "the montage's scene (default: the first with the ball well in view)", nullptr, 0},
       {"--bench", DCM_OPT_FLAG, &bench, 0, 0, nullptr, "CPU time per frame of each camera", nullptr, 0},
+      {"--raw", DCM_OPT_STRING, &raw_arg, 0, 0, "FILE", "every scene's clean and realistic YUYV frames", nullptr, 0},
       {"--only", DCM_OPT_STRING, &only_arg, 0, 0, "clean|realistic", "render one camera only (profiling)", nullptr, 0},
       DCM_OPT_END,
   };
   dcm_args("sim_camera_frames", "sim_camera_frames", opts, argc, argv);
-  const std::string out = out_arg, montage = montage_arg, only = only_arg;
+  const std::string out = out_arg, montage = montage_arg, only = only_arg, raw = raw_arg;
   if (!only.empty() && only != "clean" && only != "realistic") {
     fprintf(stderr, "sim_camera_frames: --only takes clean or realistic, not '%s'\n", only_arg);
     return 2;
@@ -96,6 +99,8 @@ int main(int argc, char **argv) {
     double t_clean = 0, t_real = 0;
     bool montage_done = montage.empty();
     std::vector<sim::Solid> solids;
+    FILE *raw_f = nullptr;
+    if (!raw.empty() && !(raw_f = fopen(raw.c_str(), "wb"))) throw std::runtime_error(raw + ": cannot write");
     for (int s = 0; s < nscenes; s++) {
       // robot 0 in its half looking roughly forward; the others and the ball 0.5..4 m ahead of it
       const double rx = -3.5 + 3 * U(rng), ry = -2.5 + 5 * U(rng), yaw = -0.8 + 1.6 * U(rng);
@@ -139,6 +144,8 @@ int main(int argc, char **argv) {
       t0 = thread_cpu();
       if (do_real) real.render(sh, solids, b.data());
       t_real += thread_cpu() - t0;
+      if (raw_f && (fwrite(a.data(), 1, a.size(), raw_f) != a.size() || fwrite(b.data(), 1, b.size(), raw_f) != b.size()))
+        throw std::runtime_error(raw + ": write failed");
       if (!out.empty()) {
         blit(a.data(), W, 0, 0, W, H, pair.data(), 2 * W, 0, 0);
         blit(b.data(), W, 0, 0, W, H, pair.data(), 2 * W, W, 0);
@@ -174,6 +181,7 @@ int main(int argc, char **argv) {
         montage_done = true;
       }
     }
+    if (raw_f && fclose(raw_f) != 0) throw std::runtime_error(raw + ": write failed");
     if (bench) {
       printf("camera %dx%d, %d scenes (4 robots, the ball, head turning up to 4 rad/s): CPU per frame clean "
              "%.2f ms, realistic %.2f ms (%+.2f ms, x%.2f)\n",
