@@ -109,6 +109,8 @@ return {
                                -- state at the tip is the one the robot fell in, not `falling`)
       window = 1.0,            -- s before the tip in which a contact, the ball, a kick, a turn counts
       standup_after = 4.0,     -- s: a fall this soon after a stand-up or lying is a stand-up that failed
+      goal = 0.25,             -- m from the torso to a goal's posts or nets: the robot touches the goal (half
+                               -- the arms' 0.3 m across plus the post's radius, 0.05 m, and a margin)
       contact = 0.3,           -- m between two torsos: their arms touch side by side (OP3: the upper arms'
                                -- boxes reach 0.15 m beside the torso, shared/robots/op3_reference.txt)
       ball = 0.2,              -- m from the torso's ground point to the ball's centre: the ball at a foot (its

@@ -88,6 +88,23 @@ describe('fall census', function()
     assert.are.same({ 'ball', 'walking', 'standing' }, f.causes)
   end)
 
+  it('sees the goal frame (posts, nets) near the torso, and the goal mouth not', function()
+    local field = { length = 9.0, goal_width = 2.6, goal_depth = 0.6 }
+    assert.is_near(0.1, census.goal_distance(field, 4.8, -1.2), 1e-9)        -- beside the side net
+    assert.is_near(0.2, census.goal_distance(field, 5.3, 0.3), 1e-9)         -- before the back net
+    assert.is_near(0.5, census.goal_distance(field, -4.0, 1.3), 1e-9)        -- ahead of a post
+    assert.is_near(0.9, census.goal_distance(field, 4.2, 0.0), 1e-9)         -- before the mouth: the back net
+    local h = walk(20, 0.3)
+    for _, r in ipairs(h) do r.x, r.y, r.ball = r.x + 4.5, 0, { 4.9, 0 } end
+    local c = census.new(params, { 'r1' }, field)
+    for _, r in ipairs(h) do c:look(1, r) end
+    local f = c:look(1, { t = 2.0, x = 4.8, y = 0, yaw = 0, roll = 0, pitch = -1.2, fallen = true, state = 'walk' })
+    assert.are.equal('goal', f.cause)
+    assert.are.equal('back', f.tilt_dir)
+    -- the same walk in the middle of the field
+    assert.are.equal('walking', fall(walk(20, 0.3)).cause)
+  end)
+
   it('ranks a kick, a failed stand-up and a push before the rest', function()
     local h = walk(20, 0.1, { ball = { 1.0, 0 } })
     h[19].state = 'kick_left'
@@ -126,6 +143,9 @@ describe('fall census', function()
       local f = c:look(2, { t = 2 + 0.1 * k, x = 0, y = 0, yaw = 0, roll = 0, pitch = 1.2, fallen = true })
       if k > 1 then assert.is_nil(f) end
     end
+    -- rolling about on the ground, the torso under the fall angle for a moment: the same fall
+    c:look(2, { t = 2.6, x = 0, y = 0, yaw = 0, roll = 0, pitch = 0.9, fallen = false })
+    assert.is_nil(c:look(2, { t = 2.7, x = 0, y = 0, yaw = 0, roll = 0, pitch = 1.2, fallen = true }))
     assert.are.equal(1, #c.falls)
     assert.are.equal('b', c.falls[1].name)
     local lines = c:table(2.0)

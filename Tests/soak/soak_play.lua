@@ -20,7 +20,9 @@ local sample_every = tonumber(arg[5]) or 30
 assert(seconds and every and port and main_pid, 'usage: soak_play.lua SECONDS RESTART_EVERY GC_PORT MAIN_PID [SAMPLE]')
 local gc = gc_sim.new(port, nil, require('Config').load('behavior').team_number)
 local S = packet.STATE
-local census = census_mod.new(require('Config').load('game').referee.census, { 'robot' })
+local sim_config = require('Config').load('sim')
+local census = census_mod.new(require('Config').load('game').referee.census, { 'robot' }, {
+  length = sim_config.field.length, goal_width = sim_config.goal.width, goal_depth = sim_config.goal.depth })
 local smaps_dir = os.getenv('SOAK_SMAPS')
 
 local function read(path)

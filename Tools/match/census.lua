@@ -3,18 +3,20 @@
 -- Tests/soak/soak_play.lua). Pure Lua: the caller feeds it one record per robot per look.
 --
 --   local census = require('Tools.match.census')
---   local c = census.new(params, { 'team 1/1', ... })   -- params: game.lua's referee.census
+--   local c = census.new(params, { 'team 1/1', ... }, field)   -- params: game.lua's referee.census; field (nil:
+--                    -- no goals): { length, goal_width, goal_depth } (m, Config sim.lua's field and goal)
 --   c:look(i, rec)   -- robot i at rec.t: { t, x, y, yaw, roll, pitch, fallen, state (motion state name),
 --                    -- kick (true while a kick out of the walk strikes), cmd = { vx, vy, va } (the walk's
 --                    -- command, m/s and rad/s, robot frame), ball = { x, y } or nil, others = { { x, y }, ... }
 --                    -- (the other robots' torsos), pushed (true while a push acts) }; returns the fall
---                    -- record when this look is the one the truth first says fallen
+--                    -- record when the truth says fallen and the robot had got up (tilt under tip_angle) since
+--                    -- its last fall (a robot that rolls about on the ground falls once)
 --   c:push(i, t)     -- robot i was pushed at t (a scenario's Sim.push)
 --   c.falls          -- the fall records: { robot, t, cause, causes = { ... }, x, y, cmd = { vx, vy, va },
 --                    -- speed = { vx, vy, va } (measured, robot frame), tilt_dir ('front', 'back', 'left', 'right') }
 --   c:table(minutes) -- lines: falls per cause, per robot, per robot-minute
 --   c:write_csv(path)
---   census.classify(params, history, tip, others)  -- the cause of one fall (unit-tested alone)
+--   census.classify(params, history, k, field)  -- the cause of the fall whose tip is history[k]
 --
 -- The tip: the first look of the last run of looks whose torso tilt exceeds params.tip_angle before the
 -- truth's fallen (the sim's fall_angle). The causes, the first that applies in this order:
@@ -22,6 +24,8 @@
 --   standup     the motion state was a stand-up within params.standup_after s before the tip, or
 --               the truth said fallen then (a stand-up that failed)
 --   kick        a kick (kick_left/kick_right or a kick out of the walk) within params.window s
+--   goal        the torso within params.goal m of a goal's frame (posts, side and back nets) within
+--               params.window s (walked into the goal)
 --   contact     another robot's torso within params.contact m within params.window s
 --   ball        the ball's centre within params.ball m of the torso's ground point within params.window s
 --   turn        |commanded or measured turn rate| > params.turn_rate, or |commanded or measured sideways
@@ -32,12 +36,13 @@
 local M = {}
 M.__index = M
 
-M.CAUSES = { 'push', 'standup', 'kick', 'contact', 'ball', 'turn', 'walking', 'standing' }
-M.NAMES = { push = 'after a push', standup = 'failed stand-up', kick = 'kick', contact = 'robot contact',
+M.CAUSES = { 'push', 'standup', 'kick', 'goal', 'contact', 'ball', 'turn', 'walking', 'standing' }
+M.NAMES = { push = 'after a push', standup = 'failed stand-up', kick = 'kick', goal = 'goal frame / net',
+  contact = 'robot contact',
   ball = 'ball at the feet', turn = 'turn / sideways step', walking = 'walking straight', standing = 'standing' }
 
-local KEYS = { 'tip_angle', 'window', 'standup_after', 'contact', 'ball', 'turn_rate', 'side_speed', 'moving',
-  'history' }
+local KEYS = { 'tip_angle', 'window', 'standup_after', 'goal', 'contact', 'ball', 'turn_rate', 'side_speed',
+  'moving', 'history' }
 
 local function check(params)
   if type(params) ~= 'table' then error('census: referee.census (Config/common/game.lua) is missing', 3) end
@@ -78,11 +83,29 @@ function M.tip_index(params, h)
   return math.max(1, k - 1)
 end
 
+-- Distance from (x, y) to the segment (ax, ay)-(bx, by).
+local function to_segment(x, y, ax, ay, bx, by)
+  local dx, dy = bx - ax, by - ay
+  local u = math.max(0, math.min(1, ((x - ax) * dx + (y - ay) * dy) / (dx * dx + dy * dy)))
+  return math.sqrt((ax + u * dx - x) ^ 2 + (ay + u * dy - y) ^ 2)
+end
+
+-- Distance from (x, y) to the nearest goal's frame: the side nets from the posts back, the back net.
+function M.goal_distance(field, x, y)
+  local best = math.huge
+  local l, g, d = field.length / 2, field.goal_width / 2, field.goal_depth
+  for _, sx in ipairs({ -1, 1 }) do
+    for _, sy in ipairs({ -1, 1 }) do best = math.min(best, to_segment(x, y, sx * l, sy * g, sx * (l + d), sy * g)) end
+    best = math.min(best, to_segment(x, y, sx * (l + d), -g, sx * (l + d), g))
+  end
+  return best
+end
+
 local STANDUP = { standup_front = true, standup_back = true }
 local KICK = { kick_left = true, kick_right = true }
 
 -- The causes of the fall whose history is h (oldest first) and tip record index k.
-function M.classify(params, h, k)
+function M.classify(params, h, k, field)
   local tip = h[k]
   local causes, has = {}, {}
   local function add(c) if not has[c] then has[c] = true causes[#causes + 1] = c end end
@@ -95,6 +118,7 @@ function M.classify(params, h, k)
     if age <= params.window then
       if r.pushed then add('push') end
       if KICK[r.state] or r.kick then add('kick') end
+      if field and M.goal_distance(field, r.x, r.y) <= params.goal then add('goal') end
       for _, o in ipairs(r.others or {}) do
         if math.sqrt((o[1] - r.x) ^ 2 + (o[2] - r.y) ^ 2) <= params.contact then add('contact') end
       end
@@ -119,9 +143,10 @@ function M.classify(params, h, k)
   return first, causes, speed
 end
 
-function M.new(params, names)
+function M.new(params, names, field)
   check(params)
-  return setmetatable({ p = params, names = names or {}, hist = {}, was = {}, pushes = {}, falls = {} }, M)
+  return setmetatable({ p = params, names = names or {}, field = field, hist = {}, down = {}, pushes = {},
+    falls = {} }, M)
 end
 
 function M:push(i, t)
@@ -134,11 +159,12 @@ function M:look(i, rec)
   if self.pushes[i] and rec.t - self.pushes[i] <= self.p.window then rec.pushed = true end
   h[#h + 1] = rec
   while #h > 1 and rec.t - h[1].t > self.p.history do table.remove(h, 1) end
-  local fell = rec.fallen and not self.was[i]
-  self.was[i] = rec.fallen
+  if not rec.fallen and tilt(rec) < self.p.tip_angle then self.down[i] = false end
+  local fell = rec.fallen and not self.down[i]
   if not fell then return nil end
+  self.down[i] = true
   local k = M.tip_index(self.p, h)
-  local cause, causes, speed = M.classify(self.p, h, k)
+  local cause, causes, speed = M.classify(self.p, h, k, self.field)
   local tip = h[k]
   local dir
   if math.abs(rec.pitch) >= math.abs(rec.roll) then dir = rec.pitch > 0 and 'front' or 'back'

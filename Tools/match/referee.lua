@@ -48,7 +48,8 @@ for i = 1, 2 * n do beliefs[i] = { world = shm.open('world', { robot = robots[i]
 local tally = tally_mod.new(robots)
 local names = {}
 for i = 1, 2 * n do names[i] = string.format('%d/%d', team_numbers[robots[i].team], robots[i].player) end
-local census = census_mod.new(rules.census, names)
+local census = census_mod.new(rules.census, names, { length = sim.field.length, goal_width = sim.goal.width,
+  goal_depth = sim.goal.depth })
 local m = match.new(rules, field, { { number = team_numbers[1], players = players },
   { number = team_numbers[2], players = players } })
 

@@ -19,11 +19,12 @@ matplotlib.use('Agg')
 import matplotlib.pyplot as plt  # noqa: E402
 
 FIELD_L, FIELD_W = 9.0, 6.0  # Config/platforms/Sim/sim.lua: the KidSize field
-CAUSES = ['push', 'standup', 'kick', 'contact', 'ball', 'turn', 'walking', 'standing']
-NAMES = {'push': 'after a push', 'standup': 'failed stand-up', 'kick': 'kick', 'contact': 'robot contact',
+CAUSES = ['push', 'standup', 'kick', 'goal', 'contact', 'ball', 'turn', 'walking', 'standing']
+NAMES = {'push': 'after a push', 'standup': 'failed stand-up', 'kick': 'kick', 'goal': 'goal frame / net',
+         'contact': 'robot contact',
          'ball': 'ball at the feet', 'turn': 'turn / sideways step', 'walking': 'walking straight',
          'standing': 'standing'}
-COLOURS = {'push': 'black', 'standup': 'purple', 'kick': 'orange', 'contact': 'red', 'ball': 'gold',
+COLOURS = {'push': 'black', 'standup': 'purple', 'kick': 'orange', 'goal': 'white', 'contact': 'red', 'ball': 'gold',
            'turn': 'deepskyblue', 'walking': 'blue', 'standing': 'grey'}
 
 
