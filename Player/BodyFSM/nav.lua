@@ -21,6 +21,16 @@ function M.attack(ctx)
   return bx, by, dx / d, dy / d, d
 end
 
+-- Whether the ball's estimate lies in a goal: beyond either goal line by body.ball_in_goal m, between the
+-- posts (a scored ball; trusted only with the pose).
+function M.ball_in_goal(ctx)
+  local w = ctx.world
+  if not w:localised() then return false end
+  local fx, fy = w:ball_field()
+  local f = w.cfg.field
+  return math.abs(fx) > f.length / 2 + ctx.cfg.body.ball_in_goal and math.abs(fy) < f.goal_width / 2
+end
+
 -- The point to walk to: behind the ball on the line from the goal, going round the ball when the
 -- robot is on its far side. Returns tx, ty, heading wanted (robot frame).
 function M.behind_ball(ctx)

@@ -13,6 +13,7 @@
 # to show that the check catches a leak. The fall census (Tools/match/census.lua): its table printed, the falls
 # in build/test-logs/soak/falls.csv and where they happened in falls.png (Tools/plot/plot_falls.py).
 #   Tests/soak/soak.sh [SECONDS]   env: ROBOT_ID (uses ROBOT_ID+90), SOAK_RESTART, SOAK_SAMPLE, SOAK_WARMUP,
+#                                       SOAK_LOGDIR (default build/test-logs/soak),
 #                                       SOAK_DCM_KB_PER_S, SOAK_LUA_KB_PER_S, HRP_SOAK_LEAK_BYTES_PER_S
 set -u
 cd "$(dirname "$0")/../.."
@@ -23,7 +24,7 @@ SAMPLE=${SOAK_SAMPLE:-30}
 WARM=${SOAK_WARMUP:-$(( EVERY + 30 > SECS / 4 ? EVERY + 30 : SECS / 4 ))}
 DCM_RATE=${SOAK_DCM_KB_PER_S:-0.25}
 LUA_RATE=${SOAK_LUA_KB_PER_S:-4}
-LOGDIR="$HRP_ROOT/build/test-logs/soak"
+LOGDIR="${SOAK_LOGDIR:-$HRP_ROOT/build/test-logs/soak}"
 mkdir -p "$LOGDIR"
 ID=$(( ${ROBOT_ID:-9200} + 90 ))
 PORT=$((40000 + ID % 20000))
