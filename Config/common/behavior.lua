@@ -108,11 +108,13 @@ return {
     search_back_near = 0.5,    -- m: a ball lost nearer than this: step back first
     search_back_speed = 0.08,  -- m/s
     approach_behind = 0.30,    -- m: aim at this point behind the ball (away from the goal)
-    -- m the ball's estimate lies beyond a goal line between the posts: it is in the goal, scored, and the
-    -- robot stands where it is (BodyFSM/wait.lua) instead of following it into the net, where it falls
-    -- (the fall census, docs/results/game.md); more than the ball's radius (0.07 m) and a pose estimate's
-    -- usual error along the field, so that a ball on the line is still pushed over it
-    ball_in_goal = 0.15,
+    -- a ball in a goal is scored: the robot stands where it is (BodyFSM/wait.lua) instead of following it into
+    -- the net, where it falls (the fall census, docs/results/game.md). In the goal: its estimate `beyond` m
+    -- past a goal line (more than the ball's radius, 0.07 m, and a pose estimate's usual error along the
+    -- field: a ball on the line is still pushed over it) and `inside` m within the posts (a ball beside a post
+    -- is still played); the robot waits `wait` s at most (a wrong pose, a mirrored one, puts a ball there
+    -- too), then plays on and waits again only `retry` s later
+    ball_in_goal = { beyond = 0.15, inside = 0.2, wait = 10, retry = 30 },
     align_distance = 0.45,     -- m: from here on, align precisely ...
     approach_near = 0.1,       -- m: ... once this much nearer (approach -> align)
     align_far = 0.3,           -- m: back to approaching this much further (align -> approach)

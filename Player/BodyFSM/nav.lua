@@ -21,14 +21,16 @@ function M.attack(ctx)
   return bx, by, dx / d, dy / d, d
 end
 
--- Whether the ball's estimate lies in a goal: beyond either goal line by body.ball_in_goal m, between the
--- posts (a scored ball; trusted only with the pose).
+-- Whether the ball's estimate lies in a goal: beyond either goal line by body.ball_in_goal.beyond m, inside
+-- the posts by .inside m (a scored ball; trusted only with the pose, and not within .retry s of giving up
+-- a wait: BodyFSM/wait.lua sets ctx.in_goal_gave_up).
 function M.ball_in_goal(ctx)
   local w = ctx.world
-  if not w:localised() then return false end
+  local g = ctx.cfg.body.ball_in_goal
+  if not w:localised() or ctx.t - (ctx.in_goal_gave_up or -math.huge) < g.retry then return false end
   local fx, fy = w:ball_field()
   local f = w.cfg.field
-  return math.abs(fx) > f.length / 2 + ctx.cfg.body.ball_in_goal and math.abs(fy) < f.goal_width / 2
+  return math.abs(fx) > f.length / 2 + g.beyond and math.abs(fy) < f.goal_width / 2 - g.inside
 end
 
 -- The point to walk to: behind the ball on the line from the goal, going round the ball when the

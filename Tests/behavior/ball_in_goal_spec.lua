@@ -26,11 +26,13 @@ end
 
 describe('a ball in the goal', function()
   it('is beyond a goal line by ball_in_goal between the posts, either goal', function()
-    local l, m = cfg.world.field.length / 2, cfg.body.ball_in_goal
+    local l, g = cfg.world.field.length / 2, cfg.body.ball_in_goal
+    local m, post = g.beyond, cfg.world.field.goal_width / 2
     assert.is_true(nav.ball_in_goal((ctx_at(4.0, 0, l + m + 0.01, 0.5))))
     assert.is_true(nav.ball_in_goal((ctx_at(-4.0, 0, -(l + m + 0.01), -0.5))))
     assert.is_false(nav.ball_in_goal((ctx_at(4.0, 0, l + m - 0.01, 0))))      -- on the line: push it over
-    assert.is_false(nav.ball_in_goal((ctx_at(4.0, 0, l + 0.3, 1.4))))         -- beside the goal, out
+    assert.is_false(nav.ball_in_goal((ctx_at(4.0, 0, l + 0.3, post + 0.1))))  -- beside the goal, out
+    assert.is_false(nav.ball_in_goal((ctx_at(4.0, 0, l + 0.3, post - g.inside + 0.01)))) -- at a post: play it
     assert.is_false(nav.ball_in_goal((ctx_at(4.0, 0, l + 0.3, 0, false))))    -- pose not trusted
   end)
 
@@ -49,5 +51,14 @@ describe('a ball in the goal', function()
     ctx.world.ball = { x = -0.5, y = 0 }    -- thrown back in
     assert.are.equal('out', wait.update(ctx))
     assert.are.equal('approach', machine.transitions.wait.out)
+    -- still in after `wait` s (a wrong pose): play on, and no waiting again for `retry` s
+    local g = cfg.body.ball_in_goal
+    ctx.world.ball = { x = 0.6, y = 0 }
+    wait.entry(ctx)
+    ctx.t = g.wait + 0.1
+    assert.are.equal('out', wait.update(ctx))
+    assert.is_false(nav.ball_in_goal(ctx))
+    ctx.t = ctx.t + g.retry + 0.1
+    assert.is_true(nav.ball_in_goal(ctx))
   end)
 end)
