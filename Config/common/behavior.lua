@@ -108,6 +108,13 @@ return {
     search_back_near = 0.5,    -- m: a ball lost nearer than this: step back first
     search_back_speed = 0.08,  -- m/s
     approach_behind = 0.30,    -- m: aim at this point behind the ball (away from the goal)
+    -- a ball in a goal is scored: the robot stands where it is (BodyFSM/wait.lua) instead of following it into
+    -- the net, where it falls (the fall census, docs/results/game.md). In the goal: its estimate `beyond` m
+    -- past a goal line (more than the ball's radius, 0.07 m, and a pose estimate's usual error along the
+    -- field: a ball on the line is still pushed over it) and `inside` m within the posts (a ball beside a post
+    -- is still played); the robot waits `wait` s at most (a wrong pose, a mirrored one, puts a ball there
+    -- too), then plays on and waits again only `retry` s later
+    ball_in_goal = { beyond = 0.15, inside = 0.2, wait = 10, retry = 30 },
     align_distance = 0.45,     -- m: from here on, align precisely ...
     approach_near = 0.1,       -- m: ... once this much nearer (approach -> align)
     align_far = 0.3,           -- m: back to approaching this much further (align -> approach)
@@ -140,6 +147,11 @@ return {
       -- in the message period, 0.5 s)
       avoid = { clearance = 0.55, behind = 0.1, short = 0.2, margin = 0.15, min_distance = 0.5, mate_age = 1.0 },
     },
+    -- never walking into another robot (BodyFSM/nav.lua keep_clear, on every walk command): the speed
+    -- towards a robot (seen, or a teammate heard) nearer than `slow` m is at most gain x (distance - stop);
+    -- two torsos 0.3 m apart touch (the fall census's contact, Config/common/game.lua), `stop` leaves a
+    -- margin for the obstacle's estimate
+    keep_clear = { stop = 0.4, slow = 0.8, gain = 0.8 },
     follow_turn_gain = 0.8,    -- 1/s: turning towards the ball's bearing after a kick
     reposition_near = 1.0,     -- m: the ball's last estimate this near: search (the head sees it from here)
     wander_arrive = 0.3,       -- m: at the wander point

@@ -103,5 +103,22 @@ return {
     setplay_prepare = 15,      -- s from a set play's call to the referee's execute
     setplay_execute = 10,      -- s after execute until normal play (or the ball moved)
     ball_moved = 0.2,          -- m the ball moves: a kick-off or set play is taken
+    -- the fall census (Tools/match/census.lua): a fall's cause from the truth in the window before its tip
+    census = {
+      tip_angle = 0.3,         -- rad of torso tilt: the tip (under the walk's fallAngleRate, 0.35: the motion
+                               -- state at the tip is the one the robot fell in, not `falling`)
+      window = 1.0,            -- s before the tip in which a contact, the ball, a kick, a turn counts
+      standup_after = 4.0,     -- s: a fall this soon after a stand-up or lying is a stand-up that failed
+      goal = 0.25,             -- m from the torso to a goal's posts or nets: the robot touches the goal (half
+                               -- the arms' 0.3 m across plus the post's radius, 0.05 m, and a margin)
+      contact = 0.3,           -- m between two torsos: their arms touch side by side (OP3: the upper arms'
+                               -- boxes reach 0.15 m beside the torso, shared/robots/op3_reference.txt)
+      ball = 0.2,              -- m from the torso's ground point to the ball's centre: the ball at a foot (its
+                               -- radius 0.07 m plus a foot's 0.13 m reach ahead of or beside the torso)
+      turn_rate = 0.3,         -- rad/s commanded or measured: a turn
+      side_speed = 0.05,       -- m/s commanded or measured sideways: a sideways step
+      moving = 0.02,           -- m/s commanded or measured: walking, not standing in the walk
+      history = 6.0,           -- s of looks kept per robot
+    },
   },
 }

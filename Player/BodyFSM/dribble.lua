@@ -36,6 +36,7 @@ function M.update(ctx)
   local d = cfg.dribble
   if not ctx.world:ball_known() then return 'lost' end
   if localize.needed(ctx) then return 'unsure' end
+  if nav.ball_in_goal(ctx) then return 'in_goal' end
   local foot = shot.foot(ctx)
   if foot then ctx.kick_side = foot return 'shoot' end
   local bx, by, ux, uy = nav.attack(ctx)

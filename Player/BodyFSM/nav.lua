@@ -21,6 +21,18 @@ function M.attack(ctx)
   return bx, by, dx / d, dy / d, d
 end
 
+-- Whether the ball's estimate lies in a goal: beyond either goal line by body.ball_in_goal.beyond m, inside
+-- the posts by .inside m (a scored ball; trusted only with the pose, and not within .retry s of giving up
+-- a wait: BodyFSM/wait.lua sets ctx.in_goal_gave_up).
+function M.ball_in_goal(ctx)
+  local w = ctx.world
+  local g = ctx.cfg.body.ball_in_goal
+  if not w:localised() or ctx.t - (ctx.in_goal_gave_up or -math.huge) < g.retry then return false end
+  local fx, fy = w:ball_field()
+  local f = w.cfg.field
+  return math.abs(fx) > f.length / 2 + g.beyond and math.abs(fy) < f.goal_width / 2 - g.inside
+end
+
 -- The point to walk to: behind the ball on the line from the goal, going round the ball when the
 -- robot is on its far side. Returns tx, ty, heading wanted (robot frame).
 function M.behind_ball(ctx)
@@ -56,6 +68,34 @@ function M.robots(ctx)
     end
   end
   return list
+end
+
+-- The walk command (vx, vy, va) with its speed towards every other robot (M.robots) nearer than
+-- body.keep_clear.slow m limited to keep_clear.gain x (its distance - keep_clear.stop): a robot never walks
+-- into another (the fall census: contacts are most falls in a match); away, across and turning stay free,
+-- and no axis gets faster than asked.
+function M.keep_clear(ctx, vx, vy, va)
+  local kc = ctx.cfg.body.keep_clear
+  if not kc then return vx, vy, va end
+  for _, o in ipairs(M.robots(ctx) or {}) do
+    local d = sqrt(o.x * o.x + o.y * o.y)
+    if d < kc.slow and d > 1e-6 then
+      local ux, uy = o.x / d, o.y / d
+      local toward = vx * ux + vy * uy
+      local allowed = kc.gain * math.max(0, d - kc.stop)
+      if toward > allowed then
+        -- the part towards it taken out; where that would add speed on an axis (a robot ahead and to the
+        -- side: a side-step away), the whole command slowed instead
+        local px, py = vx - (toward - allowed) * ux, vy - (toward - allowed) * uy
+        if px * vx >= 0 and math.abs(px) <= math.abs(vx) and py * vy >= 0 and math.abs(py) <= math.abs(vy) then
+          vx, vy = px, py
+        else
+          vx, vy = vx * allowed / toward, vy * allowed / toward
+        end
+      end
+    end
+  end
+  return vx, vy, va
 end
 
 -- The point to steer for on the way to (tx, ty) (robot frame): the target itself, or, when another

@@ -1,7 +1,7 @@
 -- Walking scenarios in the sim's lockstep, run by ./run_repl (see sim_walk_test.sh):
 --   ./run_repl Tests/motion/sim_scenarios.lua NAME [ARGS...]
 -- NAME: forward, sideways, turn, backward, random, push, fallpolicy, keypose, kick, head, pushmax,
--- speed. Prints TAP lines ("ok N - ..." / "not ok N - ...") and "# " figures; measured from the
+-- speed, ramp. Prints TAP lines ("ok N - ..." / "not ok N - ...") and "# " figures; measured from the
 -- sim's truth (Sim.truth()).
 -- luacheck: globals Sim Motion Walk wait arg shm Body
 local name = arg[1]
@@ -454,6 +454,50 @@ function scenarios.speed(axis, ...)
     best = math.max(best, math.abs(vel[k]))
   end
   print(string.format('speed %s %.3f', axis, best))
+end
+
+-- a straight walk whose speed ramps from v0 to v1 m/s at `rate` m/s per s (after 3 s at v0), then holds v1
+-- for `hold` s (defaults 0.1, 0.4, 0.1, 5): it must not turn (the truth's heading from the ramp's start,
+-- at most `max_drift` rad, default 0.25) nor fall, and walks on along its heading at 80% of v1 or more (the
+-- feet slip a little on the carpet)
+function scenarios.ramp(v0, v1, rate, hold, max_drift)
+  v0, v1, rate, hold = tonumber(v0) or 0.1, tonumber(v1) or 0.4, tonumber(rate) or 0.1, tonumber(hold) or 5
+  max_drift = tonumber(max_drift) or 0.25
+  start_clean()
+  local falls0 = Motion.falls()
+  Motion.request('walk')
+  Walk.set_velocity(v0, 0, 0)
+  wait(3)
+  local a = Sim.truth()
+  local yaw, last, worst, fell = 0, a.yaw, 0, false
+  local t0 = Body.get_time()
+  local t_ramp = (v1 - v0) / rate
+  local hold_start
+  while Body.get_time() - t0 < t_ramp + hold do
+    local t = Body.get_time() - t0
+    Walk.set_velocity(math.min(v1, v0 + rate * t), 0, 0)
+    wait(0.1)
+    local s = Sim.truth()
+    yaw = yaw + wrap(s.yaw - last)
+    last = s.yaw
+    worst = math.max(worst, math.abs(yaw))
+    if not hold_start and t >= t_ramp then hold_start = { s, Body.get_time() } end
+    if s.fallen or Motion.state() ~= 'walk' or Motion.falls() > falls0 then fell = true break end
+  end
+  local b = Sim.truth()
+  local along = 0
+  if hold_start and not fell then
+    local h, dt = hold_start[1], Body.get_time() - hold_start[2]
+    local c, sn = math.cos(b.yaw), math.sin(b.yaw)
+    along = (c * (b.x - h.x) + sn * (b.y - h.y)) / dt
+  end
+  note('ramp %.2f -> %.2f m/s at %.2f m/s/s, %.0f s held: heading change %.3f rad at the end, %.3f at most; ' ..
+    'speed along the heading while held %.3f m/s%s', v0, v1, rate, hold, yaw, worst, along, fell and ' (fell)' or '')
+  print(string.format('ramp drift %.3f max %.3f along %.3f fell %d', yaw, worst, along, fell and 1 or 0))
+  tap(not fell, 'no fall in the ramp and the hold')
+  tap(worst < max_drift, string.format('a straight walk does not turn: heading change at most %.3f rad < %.2f',
+    worst, max_drift))
+  tap(along >= 0.8 * v1, string.format('walks on along its heading at %.3f m/s >= %.2f', along, 0.8 * v1))
 end
 
 local f = scenarios[name]

@@ -10,8 +10,10 @@
 # SOAK_LUA_KB_PER_S (default 4) for the LuaJIT processes (Tests/soak/rss_check.lua). Each process's series,
 # rate and steps are printed. `make soak` (1 hour), `make soak SOAK_SECONDS=600` (10 minutes).
 # HRP_SOAK_LEAK_BYTES_PER_S=N: the DCM leaks N bytes per simulated second (Tests/soak/leak_shim.c, preloaded),
-# to show that the check catches a leak.
+# to show that the check catches a leak. The fall census (Tools/match/census.lua): its table printed, the falls
+# in build/test-logs/soak/falls.csv and where they happened in falls.png (Tools/plot/plot_falls.py).
 #   Tests/soak/soak.sh [SECONDS]   env: ROBOT_ID (uses ROBOT_ID+90), SOAK_RESTART, SOAK_SAMPLE, SOAK_WARMUP,
+#                                       SOAK_LOGDIR (default build/test-logs/soak),
 #                                       SOAK_DCM_KB_PER_S, SOAK_LUA_KB_PER_S, HRP_SOAK_LEAK_BYTES_PER_S
 set -u
 cd "$(dirname "$0")/../.."
@@ -22,7 +24,7 @@ SAMPLE=${SOAK_SAMPLE:-30}
 WARM=${SOAK_WARMUP:-$(( EVERY + 30 > SECS / 4 ? EVERY + 30 : SECS / 4 ))}
 DCM_RATE=${SOAK_DCM_KB_PER_S:-0.25}
 LUA_RATE=${SOAK_LUA_KB_PER_S:-4}
-LOGDIR="$HRP_ROOT/build/test-logs/soak"
+LOGDIR="${SOAK_LOGDIR:-$HRP_ROOT/build/test-logs/soak}"
 mkdir -p "$LOGDIR"
 ID=$(( ${ROBOT_ID:-9200} + 90 ))
 PORT=$((40000 + ID % 20000))
@@ -45,13 +47,16 @@ for _ in $(seq 1 300); do
   sleep 0.1
 done
 t0=$SECONDS
-./run_repl Tests/soak/soak_play.lua "$SECS" "$EVERY" "$PORT" "$MAIN" "$SAMPLE" >"$LOGDIR/soak.out" 2>&1
+SOAK_FALLS="$LOGDIR/falls.csv" ./run_repl Tests/soak/soak_play.lua "$SECS" "$EVERY" "$PORT" "$MAIN" "$SAMPLE" >"$LOGDIR/soak.out" 2>&1
 unset LD_PRELOAD
 echo "# $SECS s of robot time in $((SECONDS - t0)) s wall${HRP_SOAK_LEAK_BYTES_PER_S:+ (the DCM leaking $HRP_SOAK_LEAK_BYTES_PER_S bytes per simulated s)}"
 n=0; fails=0
 check() { n=$((n + 1)); if [ "$1" = 0 ]; then echo "ok $n - $2"; else fails=$((fails + 1)); echo "not ok $n - $2"; fi; }
 result=$(grep '^result' "$LOGDIR/soak.out")
 echo "# $result"
+sed -n '/^fall census/,/^result/p' "$LOGDIR/soak.out" | grep -v '^result' | sed 's/^/# /'
+[ -s "$LOGDIR/falls.csv" ] && "$HRP_ROOT/.venv/bin/python" Tools/plot/plot_falls.py "$LOGDIR/falls.csv" 2>&1 |
+  tail -1 | sed 's/^/# /'
 [ -n "$result" ]
 check $? "the soak ran to its end (${result:-no result; see $LOGDIR/soak.out})"
 grep -q 'ended (' "$LOGDIR/main.log"

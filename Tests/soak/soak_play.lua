@@ -6,16 +6,23 @@
 -- anonymous and huge-page parts, open file descriptors, mapped hrp shm segments; prints one line per process
 -- ("proc motion t=30 pid=.. rss_kb=.. anon_kb=.. huge_kb=.. fds=.. shm=..") and one for the robot ("robot
 -- t=30 segments=.. games=.. falls=.."), judged by Tests/soak/soak.sh and Tests/soak/rss_check.lua.
+-- Every fall is classified by the fall census (Tools/match/census.lua) from the sim's truth at each look
+-- (a "fall ..." line each, the census table at the end; SOAK_FALLS=FILE writes the falls there as CSV).
 -- SOAK_SMAPS=DIR also copies each process's /proc/PID/smaps there at each sample (where the bytes are).
 -- luacheck: globals Sim wait arg shm Body motion game
 local packet = require('GameFSM.packet')
 local gc_sim = require('Tests.game.gc_sim')
+local census_mod = require('Tools.match.census')
+local Motion = require('Motion')
 
 local seconds, every, port, main_pid = tonumber(arg[1]), tonumber(arg[2]), tonumber(arg[3]), tonumber(arg[4])
 local sample_every = tonumber(arg[5]) or 30
 assert(seconds and every and port and main_pid, 'usage: soak_play.lua SECONDS RESTART_EVERY GC_PORT MAIN_PID [SAMPLE]')
 local gc = gc_sim.new(port, nil, require('Config').load('behavior').team_number)
 local S = packet.STATE
+local sim_config = require('Config').load('sim')
+local census = census_mod.new(require('Config').load('game').referee.census, { 'robot' }, {
+  length = sim_config.field.length, goal_width = sim_config.goal.width, goal_depth = sim_config.goal.depth })
 local smaps_dir = os.getenv('SOAK_SMAPS')
 
 local function read(path)
@@ -69,11 +76,20 @@ end
 
 gc_sim.joined(4)
 local next_sample = sample_every
+local function census_look()
+  local T = Sim.truth()
+  local f = census:look(1, { t = Body.get_time() - t_start, x = T.x, y = T.y, yaw = T.yaw, roll = T.roll,
+    pitch = T.pitch, fallen = T.fallen, state = Motion.STATES[motion.state[0] + 1], kick = motion.kick_phase[0] == 2,
+    cmd = { motion.velocity[0], motion.velocity[1], motion.velocity[2] }, ball = { T.ball.x, T.ball.y }, others = {} })
+  if f then print(string.format('%8.1f  %s', f.t, census_mod.line(f))) io.stdout:flush() end
+end
+
 local function play_for(s)
   local t0 = Body.get_time()
   while Body.get_time() - t0 < s do
     gc:tick()
     wait(0.1)
+    census_look()
     if Body.get_time() - t_start >= next_sample - 1e-6 then
       sample()
       next_sample = next_sample + sample_every
@@ -109,6 +125,9 @@ while Body.get_time() - t_start < seconds - 1e-6 do
   if motion.walking[0] == 1 then walked = walked + 1 end
 end
 if next_sample <= seconds + 1e-6 then sample() end
+for _, line in ipairs(census:table((Body.get_time() - t_start) / 60)) do print(line) end
+local falls_path = os.getenv('SOAK_FALLS')
+if falls_path and falls_path ~= '' then census:write_csv(falls_path) end
 local plus, minus = Sim.score()
 print(string.format('result seconds=%.0f games=%d goals=%d:%d falls=%d walking_at_restarts=%d game_state=%d frames=%d',
   Body.get_time() - t_start, games, plus, minus, motion.falls[0] - falls0, walked, game.state[0],

@@ -7,7 +7,8 @@
 # (make match, make match4). The referee's rules are Config/common/game.lua's `referee`; the half and
 # READY's length given here reach it through its own site folder (build/match/<id>/site_referee/game.lua).
 # env: ROBOT_ID (robots ROBOT_ID+270 ..; UDP ports derived from it), logs in build/match/<first id>/
-# (trace.txt: where everyone was every 0.1 s, for Tools/plot/plot_match.py; HRP_MATCH_TRACE= for none);
+# (trace.txt: where everyone was every 0.1 s, for Tools/plot/plot_match.py; HRP_MATCH_TRACE= for none;
+# falls.csv and falls.png: the fall census's falls and where on the field, Tools/plot/plot_falls.py);
 # ALONE="2" (team numbers, space-separated): those teams' robots play without team play (no team
 # messages, no roles: each robot alone; game.lua's team.enabled, roles.enabled), for Tools/match/league.py.
 # The robots see each other (jerseys in the sim camera, the vision block's robots, the world's obstacles) and walk
@@ -73,7 +74,7 @@ printf 'return { referee = { half_time = %s%s } }\n' "$HALF" "${READY:+, ready_t
   >"$DIR/site_referee/game.lua"
 START=$(date +%s.%N)
 # in the background with its pid kept, so that the cleanup can stop it (a signal ends `wait` at once)
-HRP_MATCH_TRACE="${HRP_MATCH_TRACE-$DIR/trace.txt}" ROBOT_ID=$ID HRP_SITE="$DIR/site_referee" ./run_repl Tools/match/referee.lua "$N" "$GC_PORT" "$RET_PORT" \
+HRP_MATCH_FALLS="$DIR/falls.csv" HRP_MATCH_TRACE="${HRP_MATCH_TRACE-$DIR/trace.txt}" ROBOT_ID=$ID HRP_SITE="$DIR/site_referee" ./run_repl Tools/match/referee.lua "$N" "$GC_PORT" "$RET_PORT" \
   > >(tee "$DIR/referee.log") 2>&1 &
 REF=$!
 wait "$REF"
@@ -88,4 +89,5 @@ ps -o times=,args= -p "${kids%,},$DCM" | awk -v wall="$(echo "$END - $START" | b
     cpu[k] += $1; all += $1 }
   END { printf "CPU over %.0f s wall (%.0f%% of one core in all):\n", wall, 100 * all / wall
         for (k in cpu) printf "  %-28s %7.1f s  %5.1f%%\n", k, cpu[k], 100 * cpu[k] / all }'
+[ -s "$DIR/falls.csv" ] && "$HRP_ROOT/.venv/bin/python" Tools/plot/plot_falls.py "$DIR/falls.csv" 2>&1 | tail -1
 exit "$STATUS"

@@ -9,7 +9,10 @@
 -- Robots ROBOT_ID .. ROBOT_ID + 2 * PER_TEAM - 1: the first PER_TEAM are team 1's players 1..n, the
 -- others team 2's. Sends GameController packets (GameFSM/packet.lua, broadcast on the loopback to
 -- GC_PORT), reads the robots' return packets on RETURN_PORT, watches the sim's truth and plays the
--- game by Tools/match/rules.lua; prints the events and, at the end, the result.
+-- game by Tools/match/rules.lua; prints the events and, at the end, the result. Every fall is classified
+-- by Tools/match/census.lua from the truth and the robot's motion block (a line per fall; the census table
+-- at the end); with HRP_MATCH_FALLS set to a file, the falls are written there as CSV
+-- (Tools/plot/plot_falls.py).
 -- luacheck: globals wait arg shm Body
 local Sim = require('Sim')
 local Config = require('Config')
@@ -18,6 +21,8 @@ local udp = require('GameFSM.udp')
 local match = require('Tools.match.rules')
 local gc_sim = require('Tests.game.gc_sim')
 local tally_mod = require('Tools.match.tally')
+local census_mod = require('Tools.match.census')
+local Motion = require('Motion')
 
 local n, gc_port, return_port = tonumber(arg[1]), tonumber(arg[2]), tonumber(arg[3])
 assert(n and gc_port and return_port, 'usage: referee.lua PER_TEAM GC_PORT RETURN_PORT')
@@ -39,8 +44,12 @@ end
 -- each robot's own view (its pose belief and role) for the per-robot figures
 local beliefs = {}
 for i = 1, 2 * n do beliefs[i] = { world = shm.open('world', { robot = robots[i].id }),
-  game = shm.open('game', { robot = robots[i].id }) } end
+  game = shm.open('game', { robot = robots[i].id }), motion = shm.open('motion', { robot = robots[i].id }) } end
 local tally = tally_mod.new(robots)
+local names = {}
+for i = 1, 2 * n do names[i] = string.format('%d/%d', team_numbers[robots[i].team], robots[i].player) end
+local census = census_mod.new(rules.census, names, { length = sim.field.length, goal_width = sim.goal.width,
+  goal_depth = sim.goal.depth })
 local m = match.new(rules, field, { { number = team_numbers[1], players = players },
   { number = team_numbers[2], players = players } })
 
@@ -63,7 +72,7 @@ local function look()
       w.score = { s.score() }
     end
     w.robots[i] = { team = robots[i].team, player = robots[i].player, x = T.x, y = T.y, yaw = T.yaw,
-      fallen = T.fallen }
+      roll = T.roll, pitch = T.pitch, fallen = T.fallen }
   end
   return w
 end
@@ -105,9 +114,23 @@ local function status(t, w)
   print(table.concat(parts, ' '))
 end
 
+-- the census's record of robot i: its truth, its motion state and walk command, the ball, the others
+local function census_look(t, w)
+  for i, r in ipairs(w.robots) do
+    local mo = beliefs[i].motion
+    local others = {}
+    for j, o in ipairs(w.robots) do if j ~= i then others[#others + 1] = { o.x, o.y } end end
+    local f = census:look(i, { t = t - t0, x = r.x, y = r.y, yaw = r.yaw, roll = r.roll, pitch = r.pitch,
+      fallen = r.fallen, state = Motion.STATES[mo.state[0] + 1], kick = mo.kick_phase[0] == 2,
+      cmd = { mo.velocity[0], mo.velocity[1], mo.velocity[2] }, ball = { w.ball[1], w.ball[2] }, others = others })
+    if f then print(string.format('%8.1f  %s', f.t, census_mod.line(f))) end
+  end
+end
+
 while true do
   local t = Body.get_time()
   local w = look()
+  census_look(t, w)
   if t >= next_status then next_status = t + STATUS status(t, w) end
   if trace then write_trace(t, w) end
   local playing = m.state == packet.STATE.playing
@@ -173,4 +196,7 @@ for i = 1, 2 * n do
 end
 print('return packets (team/player:count): ' .. table.concat(online, ' ') .. (bad > 0 and ' bad ' .. bad or ''))
 for _, line in ipairs(tally:lines()) do print(line) end
+for _, line in ipairs(census:table(2 * n * sim_s / 60)) do print(line) end
+local falls_path = os.getenv('HRP_MATCH_FALLS')
+if falls_path and falls_path ~= '' then census:write_csv(falls_path) print('falls: ' .. falls_path) end
 print(string.format('time: %.0f s simulated in %d s wall: real-time factor %.2f', sim_s, wall_s, sim_s / wall_s))
