@@ -147,11 +147,6 @@ return {
       -- in the message period, 0.5 s)
       avoid = { clearance = 0.55, behind = 0.1, short = 0.2, margin = 0.15, min_distance = 0.5, mate_age = 1.0 },
     },
-    -- never walking into another robot (BodyFSM/nav.lua keep_clear, on every walk command): the speed
-    -- towards a robot (seen, or a teammate heard) nearer than `slow` m is at most gain x (distance - stop);
-    -- two torsos 0.3 m apart touch (the fall census's contact, Config/common/game.lua), `stop` leaves a
-    -- margin for the obstacle's estimate
-    keep_clear = { stop = 0.4, slow = 0.8, gain = 0.8 },
     follow_turn_gain = 0.8,    -- 1/s: turning towards the ball's bearing after a kick
     reposition_near = 1.0,     -- m: the ball's last estimate this near: search (the head sees it from here)
     wander_arrive = 0.3,       -- m: at the wander point

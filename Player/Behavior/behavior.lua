@@ -16,7 +16,6 @@ local controller = require('GameFSM.controller')
 local packet = require('GameFSM.packet')
 local setplay = require('GameFSM.setplay')
 local act = require('Behavior.act')
-local nav = require('BodyFSM.nav')
 local Team = require('Team.team')
 local roles = require('Team.roles')
 local position = require('Team.position')
@@ -107,12 +106,8 @@ function M.new(opts)
     gc:resume(prev.state, prev.penalized)
     if prev.pose then self.world:resume(prev.pose[1], prev.pose[2], prev.pose[3], cfg.resume.spread) end
   end
-  self.ctx = { cfg = cfg, rules = rules, world = self.world, body = self.body,
+  self.ctx = { cfg = cfg, rules = rules, world = self.world, act = act, body = self.body,
     head = self.head, t = 0, game = gc:view() }
-  -- every walk command keeps clear of the other robots (BodyFSM/nav.lua keep_clear)
-  local ctx = self.ctx
-  ctx.act = setmetatable({ walk = function(vx, vy, va) return act.walk(nav.keep_clear(ctx, vx, vy, va)) end },
-    { __index = act })
   return self
 end
 

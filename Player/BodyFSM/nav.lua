@@ -70,34 +70,6 @@ function M.robots(ctx)
   return list
 end
 
--- The walk command (vx, vy, va) with its speed towards every other robot (M.robots) nearer than
--- body.keep_clear.slow m limited to keep_clear.gain x (its distance - keep_clear.stop): a robot never walks
--- into another (the fall census: contacts are most falls in a match); away, across and turning stay free,
--- and no axis gets faster than asked.
-function M.keep_clear(ctx, vx, vy, va)
-  local kc = ctx.cfg.body.keep_clear
-  if not kc then return vx, vy, va end
-  for _, o in ipairs(M.robots(ctx) or {}) do
-    local d = sqrt(o.x * o.x + o.y * o.y)
-    if d < kc.slow and d > 1e-6 then
-      local ux, uy = o.x / d, o.y / d
-      local toward = vx * ux + vy * uy
-      local allowed = kc.gain * math.max(0, d - kc.stop)
-      if toward > allowed then
-        -- the part towards it taken out; where that would add speed on an axis (a robot ahead and to the
-        -- side: a side-step away), the whole command slowed instead
-        local px, py = vx - (toward - allowed) * ux, vy - (toward - allowed) * uy
-        if px * vx >= 0 and math.abs(px) <= math.abs(vx) and py * vy >= 0 and math.abs(py) <= math.abs(vy) then
-          vx, vy = px, py
-        else
-          vx, vy = vx * allowed / toward, vy * allowed / toward
-        end
-      end
-    end
-  end
-  return vx, vy, va
-end
-
 -- The point to steer for on the way to (tx, ty) (robot frame): the target itself, or, when another
 -- robot (M.robots: seen, its foot point, or a teammate's reported pose) stands in the way, a point
 -- on the tangent to a circle of `clearance` m around it. In the way: nearer the straight path than

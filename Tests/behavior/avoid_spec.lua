@@ -94,35 +94,3 @@ describe('nav avoid', function()
     end
   end)
 end)
-
-describe('nav keep_clear', function()
-  local kc = body.keep_clear
-  local function mk(obstacles) return { cfg = { body = body }, world = { obstacles = obstacles } } end
-
-  it('leaves the command alone with no robot near', function()
-    local vx, vy, va = nav.keep_clear(mk({ { x = 2.0, y = 0 }, { x = 0.1, y = -kc.slow - 0.01 } }), 0.3, 0.05, 0.2)
-    assert.are.same({ 0.3, 0.05, 0.2 }, { vx, vy, va })
-  end)
-
-  it('slows towards a robot ahead to gain x (distance - stop), to nothing at stop', function()
-    local d = kc.stop + 0.1
-    local vx = nav.keep_clear(mk({ { x = d, y = 0 } }), 0.3, 0, 0)
-    assert.is_near(kc.gain * 0.1, vx, 1e-9)
-    vx = nav.keep_clear(mk({ { x = kc.stop - 0.05, y = 0 } }), 0.3, 0, 0)
-    assert.are.equal(0, vx)
-    -- backing away and turning stay free
-    local vx2, _, va = nav.keep_clear(mk({ { x = kc.stop - 0.05, y = 0 } }), -0.1, 0, 0.5)
-    assert.are.equal(-0.1, vx2)
-    assert.are.equal(0.5, va)
-  end)
-
-  it('takes only the part towards a robot to the side, never adding speed', function()
-    local vx, vy = nav.keep_clear(mk({ { x = 0, y = kc.stop } }), 0.2, 0.1, 0)
-    assert.are.equal(0.2, vx)                -- across it: free
-    assert.is_near(0, vy, 1e-9)              -- towards it: none at `stop`
-    local vx3, vy3 = nav.keep_clear(mk({ { x = 0.3, y = 0.3 } }), 0.3, 0, 0)
-    local allowed = kc.gain * math.max(0, math.sqrt(0.18) - kc.stop)
-    assert.is_true((vx3 + vy3) / math.sqrt(2) <= allowed + 1e-9)
-    assert.is_true(vx3 <= 0.3 and vx3 >= 0 and vy3 == 0)
-  end)
-end)
