@@ -157,71 +157,8 @@ end
 -- The support polygon: the convex hull of the bottom corners of the URDF's sole* collision boxes of
 -- the feet's links, in the stance frame.
 
-local function nums(s)
-  local t = {}
-  for x in s:gmatch('[-%d.eE+]+') do t[#t + 1] = tonumber(x) end
-  return t
-end
-
--- R = Rz(yaw) Ry(pitch) Rx(roll) applied to v
-local function rotate(rpy, v)
-  local cr, sr = math.cos(rpy[1]), math.sin(rpy[1])
-  local cp, sp = math.cos(rpy[2]), math.sin(rpy[2])
-  local cy, sy = math.cos(rpy[3]), math.sin(rpy[3])
-  local x, y, z = v[1], cr * v[2] - sr * v[3], sr * v[2] + cr * v[3]
-  x, z = cp * x + sp * z, -sp * x + cp * z
-  return { cy * x - sy * y, sy * x + cy * y, z }
-end
-
-local function sole_corners(urdf, file, link)
-  local body = urdf:match('<link name="' .. link .. '">(.-)</link>')
-  if not body then error(format('%s: no link %s (teleop limbs: a foot link)', file, link), 0) end
-  local pts = {}
-  local pattern = '<collision name="sole[^"]*">%s*<origin ([^>]*)/>%s*<geometry><box size="([^"]+)"/>'
-  for attrs, size in body:gmatch(pattern) do
-    local o = nums(attrs:match('xyz="([^"]+)"'))
-    local rpy = nums(attrs:match('rpy="([^"]+)"') or '0 0 0')
-    local s = nums(size)
-    for _, c in ipairs({ { 1, 1 }, { 1, -1 }, { -1, 1 }, { -1, -1 } }) do
-      local p = rotate(rpy, { c[1] * s[1] / 2, c[2] * s[2] / 2, -s[3] / 2 })
-      pts[#pts + 1] = { o[1] + p[1], o[2] + p[2], o[3] + p[3] }
-    end
-  end
-  if #pts == 0 then error(format('%s: link %s has no collision box named sole*', file, link), 0) end
-  return pts
-end
-
--- Andrew's monotone chain: the hull counter-clockwise.
-local function hull(pts)
-  table.sort(pts, function(a, b) return a[1] < b[1] or (a[1] == b[1] and a[2] < b[2]) end)
-  local function cross(o, a, b) return (a[1] - o[1]) * (b[2] - o[2]) - (a[2] - o[2]) * (b[1] - o[1]) end
-  local lower, upper = {}, {}
-  for _, p in ipairs(pts) do
-    while #lower >= 2 and cross(lower[#lower - 1], lower[#lower], p) <= 0 do lower[#lower] = nil end
-    lower[#lower + 1] = p
-  end
-  for i = #pts, 1, -1 do
-    local p = pts[i]
-    while #upper >= 2 and cross(upper[#upper - 1], upper[#upper], p) <= 0 do upper[#upper] = nil end
-    upper[#upper + 1] = p
-  end
-  lower[#lower] = nil
-  upper[#upper] = nil
-  for _, p in ipairs(upper) do lower[#lower + 1] = p end
-  return lower
-end
-
--- Signed distance of (x, y) inside a counter-clockwise convex polygon (< 0: outside, by about that).
-local function inside(poly, x, y)
-  local d = math.huge
-  for i = 1, #poly do
-    local a, b = poly[i], poly[i % #poly + 1]
-    local ex, ey = b[1] - a[1], b[2] - a[2]
-    local len = sqrt(ex * ex + ey * ey)
-    if len > 0 then d = min(d, (ex * (y - a[2]) - ey * (x - a[1])) / len) end
-  end
-  return d
-end
+local polygon = require('support_polygon')
+local hull, inside = polygon.hull, polygon.inside
 M.hull, M.inside = hull, inside
 
 -- ---------------------------------------------------------------------------------------------------
@@ -283,7 +220,7 @@ function M.validator(opts)
     if not link then
       error(format("Config/common/teleop.lua: key 'limbs.%s.link' must name the foot's link", name), 0)
     end
-    self.soles[name] = { link = link, corners = sole_corners(urdf, urdf_path, link) }
+    self.soles[name] = { link = link, corners = polygon.sole_corners(urdf, link, urdf_path) }
   end
   -- self-collision: links a few joints apart and the pairs touching at the zero pose are the boxes'
   -- approximation

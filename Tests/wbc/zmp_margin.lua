@@ -17,54 +17,8 @@ local M = {}
 local Z = {}
 Z.__index = Z
 
-local function nums(s) local t = {} for x in s:gmatch('[-%d.eE+]+') do t[#t + 1] = tonumber(x) end return t end
-
--- R = Rz(yaw) Ry(pitch) Rx(roll) applied to v
-local function rotate(rpy, v)
-  local cr, sr = math.cos(rpy[1]), math.sin(rpy[1])
-  local cp, sp = math.cos(rpy[2]), math.sin(rpy[2])
-  local cy, sy = math.cos(rpy[3]), math.sin(rpy[3])
-  local x, y, z = v[1], cr * v[2] - sr * v[3], sr * v[2] + cr * v[3]
-  x, z = cp * x + sp * z, -sp * x + cp * z
-  return { cy * x - sy * y, sy * x + cy * y, z }
-end
-
--- The sole boxes' bottom corners of link `link` in its frame.
-local function sole_corners(urdf, link)
-  local body = assert(urdf:match('<link name="' .. link .. '">(.-)</link>'), 'zmp_margin: no link ' .. link)
-  local pts = {}
-  local pattern = '<collision name="sole[^"]*">%s*<origin ([^>]*)/>%s*<geometry><box size="([^"]+)"/>'
-  for attrs, size in body:gmatch(pattern) do
-    local o = nums(attrs:match('xyz="([^"]+)"'))
-    local rpy = nums(attrs:match('rpy="([^"]+)"') or '0 0 0')
-    local s = nums(size)
-    for _, c in ipairs({ { 1, 1 }, { 1, -1 }, { -1, 1 }, { -1, -1 } }) do
-      local p = rotate(rpy, { c[1] * s[1] / 2, c[2] * s[2] / 2, -s[3] / 2 })
-      pts[#pts + 1] = { o[1] + p[1], o[2] + p[2], o[3] + p[3] }
-    end
-  end
-  assert(#pts > 0, 'zmp_margin: no sole* collision box on ' .. link)
-  return pts
-end
-
--- Convex hull (counter-clockwise) of 2-D points {x, y}.
-local function hull(pts)
-  table.sort(pts, function(a, b) return a[1] < b[1] or (a[1] == b[1] and a[2] < b[2]) end)
-  local function cross(o, a, b) return (a[1] - o[1]) * (b[2] - o[2]) - (a[2] - o[2]) * (b[1] - o[1]) end
-  local lower, upper = {}, {}
-  for _, p in ipairs(pts) do
-    while #lower >= 2 and cross(lower[#lower - 1], lower[#lower], p) <= 0 do lower[#lower] = nil end
-    lower[#lower + 1] = p
-  end
-  for i = #pts, 1, -1 do
-    local p = pts[i]
-    while #upper >= 2 and cross(upper[#upper - 1], upper[#upper], p) <= 0 do upper[#upper] = nil end
-    upper[#upper + 1] = p
-  end
-  lower[#lower], upper[#upper] = nil, nil
-  for _, p in ipairs(upper) do lower[#lower + 1] = p end
-  return lower
-end
+local support = require('support_polygon')
+local rotate = support.rotate
 
 function M.new(Sim, shm)
   local robot = Config.load('robot')
@@ -85,7 +39,8 @@ function M.new(Sim, shm)
       link = assert(urdf:match('<joint name="' .. joint .. '".-<child link="([^"]+)"'),
         'zmp_margin: no child link of ' .. joint)
     end
-    self.feet_[k] = { link = link, corners = sole_corners(urdf, link), frame = fp and fp[key].frame,
+    local corners = support.sole_corners(urdf, link, Config.robot_file(robot.description))
+    self.feet_[k] = { link = link, corners = corners, frame = fp and fp[key].frame,
       points = fp and fp[key].points }
   end
   self.pressure = fp ~= nil
@@ -183,14 +138,7 @@ function Z:margin_of(zx, zy)
   for _, foot in ipairs(self.feet_) do
     if foot.loaded then for _, p in ipairs(foot.ground) do pts[#pts + 1] = { p[1], p[2] } end end
   end
-  local poly, m = hull(pts), math.huge
-  for i = 1, #poly do
-    local a, b = poly[i], poly[i % #poly + 1]
-    local ex, ey = b[1] - a[1], b[2] - a[2]
-    local d = (ex * (zy - a[2]) - ey * (zx - a[1])) / math.sqrt(ex * ex + ey * ey)   -- left of a->b: inside
-    m = math.min(m, d)
-  end
-  return m
+  return support.inside(support.hull(pts), zx, zy)
 end
 
 return M
