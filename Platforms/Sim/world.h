@@ -108,9 +108,10 @@ struct Truth {
   double x, y, z, yaw, roll, pitch;
   bool fallen;
   double ball[5];     // x, y, z, vx, vy
-  // the centre of pressure of the ground's forces on the robot (the carpet's and the static
-  // objects'; their mean over the tick): x, y where their moment has no horizontal part on the
-  // carpet's plane (z = 0), and their vertical sum fz (N); 0 0 0 with nothing on the ground
+  // the centre of pressure of the ground's forces on the robot's feet (its soles' contacts and those
+  // of the feet with pressure sensors, with the carpet and the static objects; their mean over the
+  // tick): x, y where their moment has no horizontal part on the carpet's plane (z = 0), and their
+  // vertical sum fz (N); 0 0 0 with no foot on the ground
   double cop[3];
 };
 
@@ -247,7 +248,7 @@ class World {
     int press_frame[2] = {-1, -1}, press_link[2] = {-1, -1};
     const std::vector<PressureFoot> *pressure = nullptr;   // its body's sensors' layout
     Vec3 press_f[2] = {Vec3::Zero(), Vec3::Zero()}, press_m[2] = {Vec3::Zero(), Vec3::Zero()};
-    // the same for every contact of the robot with the ground (Truth::cop)
+    // the same for every contact of its feet with the ground (Truth::cop)
     Vec3 ground_f = Vec3::Zero(), ground_m = Vec3::Zero();
   };
   // a contact of a robot with the ground, its force wanted after the step: robot, sole side (-1:
