@@ -204,7 +204,12 @@ void blur_row(const Develop &d, int n, const uint8_t *src, const int32_t *map, i
 // read whole rows without clamping: a pair's first pixel's sample at offset dx is ce or co (dx's
 // parity) from dx >> 1 on. Then each output row sums its samples' rows 16 pixels at a time. The
 // same pixels as the sample by sample loop.
+// A lens map's regular runs are short (a few dozen pixels): each is copied in whole blocks of 16
+// lumas and 8 chroma pairs, the last block running past the run's end. What it writes there lies
+// where the row's next run, its padding or the next row writes afterwards (rows and runs are filled
+// in order), or in the planes' slack; it reads past the run only while that stays inside the scratch.
 struct Planes {
+  static constexpr int kSlack = 32;   // lumas (and chroma words) written past a plane's last row
   int W = 0, H = 0, P = 0, stride = 0, Q = 0, cstride = 0;
   std::vector<uint8_t> y;
   std::vector<uint16_t> ce, co;
@@ -215,11 +220,13 @@ struct Planes {
     stride = W + 2 * P;
     Q = P / 2 + 1;
     cstride = W / 2 + 2 * Q;
-    if (y.size() < (size_t)stride * H) y.resize((size_t)stride * H);
-    if (ce.size() < (size_t)cstride * H) {
-      ce.resize((size_t)cstride * H);
+    if (y.size() < (size_t)stride * H + kSlack) y.resize((size_t)stride * H + kSlack);
+    if (ce.size() < (size_t)cstride * H + kSlack) {
+      ce.resize((size_t)cstride * H + kSlack);
       co.resize(ce.size());
     }
+    // the wide copies' reads end at most 4 * 8 + 2 bytes past a run's last pair
+    const uint8_t *src_end = map ? src + (size_t)map->width * map->height * 2 : nullptr;
     for (int r = 0; r < H; r++) {
       uint8_t *py = &y[(size_t)r * stride + P];
       uint16_t *pe = &ce[(size_t)r * cstride + Q], *po = &co[(size_t)r * cstride + Q];
@@ -236,13 +243,20 @@ struct Planes {
           const LensMap::Run &run = map->runs[k];
           const int u = run.u, n = 2 * run.pairs;
           if (run.regular) {
-            lumas(src + run.src, n, py + u);
+            const uint8_t *s0 = src + run.src;
+            const bool wide = s0 + 2 * n + 64 <= src_end;
+            if (wide) lumas_wide(s0, n, py + u);
+            else lumas(s0, n, py + u);
             if ((run.src & 3) == 0) {
-              chromas(src + run.src, run.pairs, pe + u / 2);
+              if (wide) chromas_wide(s0, run.pairs, pe + u / 2);
+              else chromas(s0, run.pairs, pe + u / 2);
               memcpy(po + u / 2, pe + u / 2, (size_t)2 * run.pairs);
+            } else if (wide) {
+              chromas_wide(s0 - 2, run.pairs, pe + u / 2);
+              chromas_wide(s0 + 2, run.pairs, po + u / 2);
             } else {
-              chromas(src + run.src - 2, run.pairs, pe + u / 2);
-              chromas(src + run.src + 2, run.pairs, po + u / 2);
+              chromas(s0 - 2, run.pairs, pe + u / 2);
+              chromas(s0 + 2, run.pairs, po + u / 2);
             }
             continue;
           }
@@ -275,21 +289,33 @@ struct Planes {
     }
     for (; i < n; i++) out[i] = p[2 * i];
   }
+  // the lumas of n pixels, in whole blocks of 16 (up to 15 read and written past the end)
+  static void lumas_wide(const uint8_t *p, int n, uint8_t *out) {
+    const __m128i low = _mm_set1_epi16(0x00ff);
+    for (int i = 0; i < n; i += 16) {
+      const __m128i a = _mm_loadu_si128((const __m128i *)(p + 2 * i));
+      const __m128i b = _mm_loadu_si128((const __m128i *)(p + 2 * i + 16));
+      _mm_storeu_si128((__m128i *)(out + i), _mm_packus_epi16(_mm_and_si128(a, low), _mm_and_si128(b, low)));
+    }
+  }
+  // 8 pairs' chroma U | V << 8
+  static __m128i chroma8(const uint8_t *p) {
+    const __m128i lo = _mm_set1_epi32(0xff), hi = _mm_set1_epi32(0xff00);
+    auto c4 = [&](__m128i w) {
+      const __m128i c = _mm_or_si128(_mm_and_si128(_mm_srli_epi32(w, 8), lo), _mm_and_si128(_mm_srli_epi32(w, 16), hi));
+      return _mm_srai_epi32(_mm_slli_epi32(c, 16), 16);   // sign-extended: packs keeps the 16 bits
+    };
+    return _mm_packs_epi32(c4(_mm_loadu_si128((const __m128i *)p)), c4(_mm_loadu_si128((const __m128i *)(p + 16))));
+  }
   // the chroma U | V << 8 of n pairs of YUYV
   static void chromas(const uint8_t *p, int n, uint16_t *out) {
-    const __m128i lo = _mm_set1_epi32(0xff), hi = _mm_set1_epi32(0xff00);
     int i = 0;
-    for (; i + 8 <= n; i += 8) {
-      auto c4 = [&](__m128i w) {
-        const __m128i c =
-            _mm_or_si128(_mm_and_si128(_mm_srli_epi32(w, 8), lo), _mm_and_si128(_mm_srli_epi32(w, 16), hi));
-        return _mm_srai_epi32(_mm_slli_epi32(c, 16), 16);   // sign-extended: packs keeps the 16 bits
-      };
-      const __m128i a = c4(_mm_loadu_si128((const __m128i *)(p + 4 * i)));
-      const __m128i b = c4(_mm_loadu_si128((const __m128i *)(p + 4 * i + 16)));
-      _mm_storeu_si128((__m128i *)(out + i), _mm_packs_epi32(a, b));
-    }
+    for (; i + 8 <= n; i += 8) _mm_storeu_si128((__m128i *)(out + i), chroma8(p + 4 * i));
     for (; i < n; i++) out[i] = (uint16_t)(p[4 * i + 1] | p[4 * i + 3] << 8);
+  }
+  // the same in whole blocks of 8 pairs (up to 7 read and written past the end)
+  static void chromas_wide(const uint8_t *p, int n, uint16_t *out) {
+    for (int i = 0; i < n; i += 8) _mm_storeu_si128((__m128i *)(out + i), chroma8(p + 4 * i));
   }
 };
 
