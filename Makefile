@@ -5,6 +5,7 @@
 #   make check  the fast tier for the edit-test loop (lint, specs, C/C++ tests, fast scenarios; < 3 min)
 #   make league MATCHES=20 HALF=60   seeded 2v2 matches on Ray, with team play vs without: a table
 #   make soak   1 hour of play in the sim, memory/fd/shm growth per process (SOAK_SECONDS=600: 10 minutes)
+#   make soak-seeds  the 10-minute soak on five seeds: the lone robot's falls per minute
 #   make sanitize  the C/C++ tests and DCM scenarios under ASan+UBSan (SANITIZE=thread: TSan)
 #   make clean  remove build/ (and the sanitizer builds)
 
@@ -53,7 +54,7 @@ endif
 # Tests/run_all.sh runs every program; the libFuzzer targets sit there too. Tests/ holds the Lua specs,
 # the scenario scripts (*_test.sh, fuzz runs included) and their fixtures.
 
-.PHONY: all deps test check clean bench sim match match4 league sanitize soak $(NATIVE_DIRS)
+.PHONY: all deps test check clean bench sim match match4 league sanitize soak soak-seeds $(NATIVE_DIRS)
 
 all: $(DEPS_STAMP) $(NATIVE_DIRS)
 
@@ -121,10 +122,14 @@ bench: all
 	@Tools/bench/run_all.sh
 
 # One robot playing in the sim (lockstep, camera on) for SOAK_SECONDS of robot time (1 hour; 600: the
-# 10-minute version), game restarts every 3 minutes: memory, fds and shm segments per process.
+# 10-minute version), the sim seeded with SEED, a new game every 3 minutes: memory, fds and shm segments per
+# process, the fall census. soak-seeds: the 10-minute soak on seeds 1-5 and the falls per minute over all.
 SOAK_SECONDS ?= 3600
 soak: all
-	@Tests/soak/soak.sh $(SOAK_SECONDS)
+	@SOAK_SEED=$(SEED) Tests/soak/soak.sh $(SOAK_SECONDS)
+
+soak-seeds: all
+	@Tools/bench/soak_seeds.sh 600
 
 # The C/C++ tests and the DCM scenarios under ASan+UBSan (SANITIZE=thread: TSan), Tests/sanitize.sh.
 sanitize:

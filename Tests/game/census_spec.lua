@@ -166,4 +166,56 @@ describe('fall census', function()
     assert.has_error(function() census.new({ tip_angle = 0.3 }) end,
       'census: referee.census.window (Config/common/game.lua) must be a number >= 0, got nil')
   end)
+
+  -- A crafted lying-about: { fallen, tilt (rad, as pitch) } per look, 0.1 s apart.
+  local SEQ = {
+    { false, 0.02 }, { false, 0.2 }, { false, 0.6 }, { true, 1.3 },      -- fall 1
+    { true, 1.5 }, { false, 0.9 }, { true, 1.2 }, { false, 1.0 }, { true, 1.4 }, -- rolling: the flag flickers
+    { false, 0.5 }, { true, 1.1 },                                       -- a stand-up that stays tilted, back down
+    { false, 0.35 }, { false, 0.1 }, { false, 0.02 },                    -- up
+    { false, 0.4 }, { true, 1.2 },                                       -- fall 2
+    { false, 0.02 }, { true, 1.3 },                                      -- put back upright (a penalty), fall 3
+  }
+  local function rec(k, q) return { t = 0.1 * k, x = 0, y = 0, yaw = 0, roll = 0, pitch = q[2], fallen = q[1] } end
+
+  it('counts a fall only when the robot got up between falls (census.fell)', function()
+    local down, n, edges, was = nil, 0, 0, false
+    for k, q in ipairs(SEQ) do
+      local fell
+      fell, down = census.fell(down, rec(k, q), params.tip_angle)
+      if fell then n = n + 1 end
+      if q[1] and not was then edges = edges + 1 end   -- the sim's flag switching on
+      was = q[1]
+    end
+    assert.are.equal(3, n)
+    assert.are.equal(6, edges)
+    assert.has_error(function() census.fell(nil, { fallen = true }, 0.3) end,
+      "census.fell: a look needs the truth's roll and pitch (numbers)")
+  end)
+
+  it('gives the referee, the tally and the census one count on the same looks', function()
+    local rules_mod, tally_mod = require('Tools.match.rules'), require('Tools.match.tally')
+    local rules = require('Config').load('game').referee
+    local field = { length = 9, width = 6, goal_width = 2.6, ball_diameter = 0.14, penalty_mark_distance = 1.5,
+      goal_area_length = 1, goal_area_width = 3 }
+    local m = rules_mod.new(rules, field, { { number = 1, players = { 1 } }, { number = 2, players = { 1 } } })
+    local tl = tally_mod.new({ { team = 1, player = 1 }, { team = 2, player = 1 } }, rules.census.tip_angle)
+    local c = census.new(params, { '1/1', '2/1' })
+    local still = { team = 2, player = 1, x = 1, y = 0, roll = 0, pitch = 0, fallen = false }
+    -- robot 1 goes through the sequence twice: in INITIAL/READY (the referee counts in every state) and on
+    for pass = 0, 1 do
+      for k, q in ipairs(SEQ) do
+        local r = rec(pass * #SEQ + k, q)
+        r.team, r.player, r.state = 1, 1, 'stance'
+        m:step(r.t, { ball = { 0, 0 }, score = { 0, 0 }, robots = { r, still } })
+        tl:look(0.1, true, 1, r, nil, 1, false)
+        c:look(1, r)
+      end
+    end
+    assert.are.equal(6, #c.falls)
+    assert.are.same({ 6, 0 }, m.stats.falls)
+    assert.are.equal(6, tl.robots[1].falls)
+    assert.has_error(function() rules_mod.new({}, field, {}) end,
+      'rules: referee.census.tip_angle (Config/common/game.lua) must be a number > 0, got nil')
+  end)
 end)

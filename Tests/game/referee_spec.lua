@@ -12,7 +12,8 @@ local S = packet.STATE
 
 local function world(ball, robots, score)
   return { ball = ball, score = score or { 0, 0 }, robots = robots or {
-    { team = 1, player = 1, x = -1, y = 0, fallen = false }, { team = 2, player = 1, x = 1, y = 0, fallen = false } } }
+    { team = 1, player = 1, x = -1, y = 0, roll = 0, pitch = 0, fallen = false },
+    { team = 2, player = 1, x = 1, y = 0, roll = 0, pitch = 0, fallen = false } } }
 end
 
 -- A match brought to PLAYING at time t (returned); the packets round-trip through build/parse.
@@ -82,7 +83,7 @@ describe('the referee', function()
   it('penalizes a robot fallen too long and puts it back on its own touch line', function()
     local m, t = playing()
     local w = world({ 0, 0 })
-    w.robots[1].fallen = true
+    w.robots[1].fallen, w.robots[1].pitch = true, 1.3
     m:step(t + 0.1, w)
     local acts = m:step(t + 0.2 + rules.fallen_time, w)
     assert.are.equal('robot', acts[1][1])

@@ -12,16 +12,19 @@ describe('referee tally', function()
   end)
 
   it('counts role seconds, mirrored seconds (team frame turned by the side), falls and penalties', function()
-    local t = tally.new({ { team = 1, player = 1 }, { team = 2, player = 1 } })
-    local truth = { x = 3.0, y = -1.0, fallen = false }
+    local t = tally.new({ { team = 1, player = 1 }, { team = 2, player = 1 } }, 0.3)
+    local truth = { x = 3.0, y = -1.0, roll = 0, pitch = 0, fallen = false }
     -- team 2 defends +x (side -1): its belief (-3, 1) in its own frame is (3, -1) on the field: right
     t:look(0.5, true, 2, truth, { x = -3.0, y = 1.0, role = 4 }, -1, false)
     -- team 1 (side 1) believes (-3, 1): the mirror
     t:look(0.5, true, 1, truth, { x = -3.0, y = 1.0, role = 1 }, 1, false)
     t:look(0.5, false, 1, truth, { x = -3.0, y = 1.0, role = 1 }, 1, false)      -- not playing
-    t:look(0.5, true, 1, { x = 3, y = -1, fallen = true }, { x = 3, y = -1, role = 2 }, 1, false)
-    t:look(0.5, true, 1, { x = 3, y = -1, fallen = true }, { x = 3, y = -1, role = 2 }, 1, true)
-    t:look(0.5, true, 1, { x = 3, y = -1, fallen = true }, { x = 3, y = -1, role = 2 }, 1, true)
+    t:look(0.5, true, 1, { x = 3, y = -1, roll = 0, pitch = 1.2, fallen = true }, { x = 3, y = -1, role = 2 }, 1, false)
+    t:look(0.5, true, 1, { x = 3, y = -1, roll = 0, pitch = 1.2, fallen = true }, { x = 3, y = -1, role = 2 }, 1, true)
+    t:look(0.5, true, 1, { x = 3, y = -1, roll = 0, pitch = 1.2, fallen = true }, { x = 3, y = -1, role = 2 }, 1, true)
+    -- rolling on the ground: the flag off for a look, the torso still tilted, then on again: the same fall
+    t:look(0.5, true, 1, { x = 3, y = -1, roll = 0, pitch = 0.9, fallen = false }, { x = 3, y = -1, role = 2 }, 1, true)
+    t:look(0.5, true, 1, { x = 3, y = -1, roll = 0, pitch = 1.2, fallen = true }, { x = 3, y = -1, role = 2 }, 1, true)
     local r1, r2 = t.robots[1], t.robots[2]
     assert.are.equal(0.5, r2.role.goalkeeper)
     assert.are.equal(0, r2.mirrored)

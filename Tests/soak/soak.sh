@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Soak: one robot playing in the sim in lockstep (all processes, camera on) for SECONDS of robot time
-# (default 3600), the game restarted every SOAK_RESTART s (default 180). Samples each process every
+# (default 3600), the sim seeded with SOAK_SEED (default 1: its sensor noise and everything drawn from it),
+# refereed as in a match (Tools/match/rules.lua: a goal, then READY and the other team's kick-off), a new game
+# every SOAK_RESTART s (default 180). Samples each process every
 # SOAK_SAMPLE s of robot time (default 30): resident memory, open file descriptors, mapped shm segments
 # (Tests/soak/soak_play.lua), and checks: no process died or was restarted, fds and segments did not grow,
 # and RSS does not grow on after the warm-up (SOAK_WARMUP s, default the first game restart + 30 s or a
@@ -8,11 +10,13 @@
 # the growth of RSS's high-water mark without its 2 largest steps (one-time high-water marks: buffers,
 # arenas, JIT) per simulated second is at most SOAK_DCM_KB_PER_S (default 0.25) for the DCM and
 # SOAK_LUA_KB_PER_S (default 4) for the LuaJIT processes (Tests/soak/rss_check.lua). Each process's series,
-# rate and steps are printed. `make soak` (1 hour), `make soak SOAK_SECONDS=600` (10 minutes).
+# rate and steps are printed. `make soak` (1 hour), `make soak SOAK_SECONDS=600 SEED=3` (10 minutes, seed 3);
+# Tools/bench/soak_seeds.sh (make soak-seeds): the 10-minute soak on five seeds and the falls over all.
 # HRP_SOAK_LEAK_BYTES_PER_S=N: the DCM leaks N bytes per simulated second (Tests/soak/leak_shim.c, preloaded),
 # to show that the check catches a leak. The fall census (Tools/match/census.lua): its table printed, the falls
 # in build/test-logs/soak/falls.csv and where they happened in falls.png (Tools/plot/plot_falls.py).
-#   Tests/soak/soak.sh [SECONDS]   env: ROBOT_ID (uses ROBOT_ID+90), SOAK_RESTART, SOAK_SAMPLE, SOAK_WARMUP,
+#   Tests/soak/soak.sh [SECONDS]   env: ROBOT_ID (uses ROBOT_ID+90), SOAK_SEED, SOAK_RESTART, SOAK_SAMPLE,
+#                                       SOAK_WARMUP,
 #                                       SOAK_LOGDIR (default build/test-logs/soak),
 #                                       SOAK_DCM_KB_PER_S, SOAK_LUA_KB_PER_S, HRP_SOAK_LEAK_BYTES_PER_S
 set -u
@@ -20,6 +24,8 @@ cd "$(dirname "$0")/../.."
 source Run/env.sh
 SECS=${1:-${SOAK_SECONDS:-3600}}
 EVERY=${SOAK_RESTART:-180}
+SEED=${SOAK_SEED:-1}
+case "$SEED" in ''|*[!0-9]*) echo "soak.sh: SOAK_SEED must be a whole number >= 0, got '$SEED'" >&2; exit 2 ;; esac
 SAMPLE=${SOAK_SAMPLE:-30}
 WARM=${SOAK_WARMUP:-$(( EVERY + 30 > SECS / 4 ? EVERY + 30 : SECS / 4 ))}
 DCM_RATE=${SOAK_DCM_KB_PER_S:-0.25}
@@ -37,7 +43,7 @@ if [ -n "${HRP_SOAK_LEAK_BYTES_PER_S:-}" ]; then
     { echo "not ok 1 - the leak shim builds"; exit 1; }
   export HRP_SOAK_LEAK_BYTES_PER_S LD_PRELOAD="$HRP_ROOT/build/soak/leak_shim.so${LD_PRELOAD:+:$LD_PRELOAD}"
 fi
-./run_main --sim --quiet --dcm-arg --lockstep --dcm-arg --seed --dcm-arg 1 >"$LOGDIR/main.log" 2>&1 &
+./run_main --sim --quiet --dcm-arg --lockstep --dcm-arg --seed --dcm-arg "$SEED" >"$LOGDIR/main.log" 2>&1 &
 MAIN=$!
 cleanup() { kill -TERM "$MAIN" 2>/dev/null; wait "$MAIN" 2>/dev/null; Tools/shm/shm --robot "$ID" remove >/dev/null 2>&1; }
 trap cleanup EXIT
@@ -49,7 +55,7 @@ done
 t0=$SECONDS
 SOAK_FALLS="$LOGDIR/falls.csv" ./run_repl Tests/soak/soak_play.lua "$SECS" "$EVERY" "$PORT" "$MAIN" "$SAMPLE" >"$LOGDIR/soak.out" 2>&1
 unset LD_PRELOAD
-echo "# $SECS s of robot time in $((SECONDS - t0)) s wall${HRP_SOAK_LEAK_BYTES_PER_S:+ (the DCM leaking $HRP_SOAK_LEAK_BYTES_PER_S bytes per simulated s)}"
+echo "# $SECS s of robot time in $((SECONDS - t0)) s wall, seed $SEED${HRP_SOAK_LEAK_BYTES_PER_S:+ (the DCM leaking $HRP_SOAK_LEAK_BYTES_PER_S bytes per simulated s)}"
 n=0; fails=0
 check() { n=$((n + 1)); if [ "$1" = 0 ]; then echo "ok $n - $2"; else fails=$((fails + 1)); echo "not ok $n - $2"; fi; }
 result=$(grep '^result' "$LOGDIR/soak.out")

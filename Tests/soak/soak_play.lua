@@ -1,28 +1,44 @@
 -- The soak's GameController and sampler (run by ./run_repl inside the sim's lockstep, Tests/soak/soak.sh):
 --   ./run_repl Tests/soak/soak_play.lua SECONDS RESTART_EVERY GC_PORT MAIN_PID [SAMPLE_EVERY]
--- Plays SECONDS of robot time; every RESTART_EVERY s the game restarts (INITIAL, READY, SET, PLAYING, the
--- ball and the robot put back); at the start the robot is jostled (below). At the start and every SAMPLE_EVERY
+-- Plays SECONDS of robot time; every RESTART_EVERY s a new game starts. The game is refereed by the sim's
+-- automatic referee (Tools/match/rules.lua, the GameController of `make match`, with game.lua's `referee`
+-- numbers; the robot's team against an empty one, no goalkeeper flag): INITIAL beside the touch line, READY
+-- (the robot walks to its kick-off position), SET, PLAYING; after a goal READY again and the kick-off for
+-- the other team, the ball back on the centre mark, as a real GameController restarts; a ball out of the
+-- field gives a throw-in, goal kick or corner; a robot lying too long or leaving the field is penalized.
+-- At the start the robot is jostled (below). At the start and every SAMPLE_EVERY
 -- s of robot time (default 30) samples each of run_main's children (the DCM too): resident memory, its
 -- anonymous and huge-page parts, open file descriptors, mapped hrp shm segments; prints one line per process
 -- ("proc motion t=30 pid=.. rss_kb=.. anon_kb=.. huge_kb=.. fds=.. shm=..") and one for the robot ("robot
 -- t=30 segments=.. games=.. falls=.."), judged by Tests/soak/soak.sh and Tests/soak/rss_check.lua.
 -- Every fall is classified by the fall census (Tools/match/census.lua) from the sim's truth at each look
--- (a "fall ..." line each, the census table at the end; SOAK_FALLS=FILE writes the falls there as CSV).
+-- (a "fall ..." line each, the census table at the end; SOAK_FALLS=FILE writes the falls there as CSV);
+-- falls= is the census's count (one per lying), motion_falls= the motion process's own detections.
+-- The referee's events (goals, kick-offs, set plays, penalties) are printed with their robot time.
 -- SOAK_SMAPS=DIR also copies each process's /proc/PID/smaps there at each sample (where the bytes are).
 -- luacheck: globals Sim wait arg shm Body motion game
 local packet = require('GameFSM.packet')
 local gc_sim = require('Tests.game.gc_sim')
 local census_mod = require('Tools.match.census')
+local rules_mod = require('Tools.match.rules')
+local Config = require('Config')
 local Motion = require('Motion')
 
 local seconds, every, port, main_pid = tonumber(arg[1]), tonumber(arg[2]), tonumber(arg[3]), tonumber(arg[4])
 local sample_every = tonumber(arg[5]) or 30
 assert(seconds and every and port and main_pid, 'usage: soak_play.lua SECONDS RESTART_EVERY GC_PORT MAIN_PID [SAMPLE]')
-local gc = gc_sim.new(port, nil, require('Config').load('behavior').team_number)
-local S = packet.STATE
-local sim_config = require('Config').load('sim')
-local census = census_mod.new(require('Config').load('game').referee.census, { 'robot' }, {
+local beh = Config.load('behavior')
+local gc = gc_sim.new(port, nil, beh.team_number)
+local sim_config = Config.load('sim')
+local referee = {}
+for k, v in pairs(Config.load('game').referee) do referee[k] = v end
+referee.goalkeeper = 0 -- the lone robot plays the field, as the soak's robot always has
+local census = census_mod.new(referee.census, { 'robot' }, {
   length = sim_config.field.length, goal_width = sim_config.goal.width, goal_depth = sim_config.goal.depth })
+local field = { length = sim_config.field.length, width = sim_config.field.width,
+  goal_width = sim_config.goal.width, ball_diameter = sim_config.ball.diameter,
+  penalty_mark_distance = sim_config.field.penalty_mark_distance,
+  goal_area_length = sim_config.field.goal_area_length, goal_area_width = sim_config.field.goal_area_width }
 local smaps_dir = os.getenv('SOAK_SMAPS')
 
 local function read(path)
@@ -44,6 +60,7 @@ end
 
 local t_start = Body.get_time()
 local games, falls0 = 0, motion.falls[0]
+local kickoffs = { 0, 0 } -- kick-offs after a goal: for the robot's team, for the other
 local function sample()
   local t = Body.get_time() - t_start
   for _, c in ipairs(children()) do
@@ -70,26 +87,56 @@ local function sample()
   local p = io.popen('ls /dev/shm 2>/dev/null')
   for name in p:lines() do if name:find('^hrp%.' .. shm.robot_id() .. '%.') then all = all + 1 end end
   p:close()
-  print(string.format('robot t=%.0f segments=%d games=%d falls=%d', t, all, games, motion.falls[0] - falls0))
+  print(string.format('robot t=%.0f segments=%d games=%d falls=%d motion_falls=%d', t, all, games, #census.falls,
+    motion.falls[0] - falls0))
   io.stdout:flush()
 end
 
 gc_sim.joined(4)
 local next_sample = sample_every
-local function census_look()
+local m, next_packet, sent_state, printed
+local function new_game()
+  m = rules_mod.new(referee, field, { { number = beh.team_number, players = { beh.player_number } },
+    { number = gc_sim.OTHER, players = {} } })
+  next_packet, sent_state, printed = -1, nil, 0
+end
+
+-- One look: the census, the referee's step (its teleports carried out), its packet when due or at once on a
+-- new state (as the GameController does), its new events.
+local function look()
   local T = Sim.truth()
-  local f = census:look(1, { t = Body.get_time() - t_start, x = T.x, y = T.y, yaw = T.yaw, roll = T.roll,
+  local t = Body.get_time() - t_start
+  local f = census:look(1, { t = t, x = T.x, y = T.y, yaw = T.yaw, roll = T.roll,
     pitch = T.pitch, fallen = T.fallen, state = Motion.STATES[motion.state[0] + 1], kick = motion.kick_phase[0] == 2,
     cmd = { motion.velocity[0], motion.velocity[1], motion.velocity[2] }, ball = { T.ball.x, T.ball.y }, others = {} })
-  if f then print(string.format('%8.1f  %s', f.t, census_mod.line(f))) io.stdout:flush() end
+  if f then print(string.format('%8.1f  %s', f.t, census_mod.line(f))) end
+  local was = m.state
+  local w = { ball = { T.ball.x, T.ball.y, T.ball.vx, T.ball.vy }, touch = T.ball.touch >= 0 and 1 or false,
+    score = { Sim.score() }, robots = { { team = 1, player = beh.player_number, x = T.x, y = T.y, yaw = T.yaw,
+      roll = T.roll, pitch = T.pitch, fallen = T.fallen } } }
+  for _, a in ipairs(m:step(Body.get_time(), w)) do
+    if a[1] == 'ball' then Sim.teleport_ball(a[2], a[3]) else Sim.teleport_robot(a[3], a[4], a[5]) end
+  end
+  if was == packet.STATE.playing and m.state == packet.STATE.ready then
+    kickoffs[m.kickoff] = kickoffs[m.kickoff] + 1
+  end
+  if Body.get_time() >= next_packet or m.state ~= sent_state then
+    next_packet, sent_state = Body.get_time() + referee.packet_period, m.state
+    local p = m:packet()
+    gc.number = (gc.number + 1) % 256
+    p.packet_number = gc.number
+    assert(gc.tx:send(packet.build(p), '127.0.0.1', port))
+  end
+  for k = printed + 1, #m.log do print(string.format('%8.1f  %s', m.log[k][1] - t_start, m.log[k][2])) end
+  printed = #m.log
+  io.stdout:flush()
 end
 
 local function play_for(s)
   local t0 = Body.get_time()
-  while Body.get_time() - t0 < s do
-    gc:tick()
-    wait(0.1)
-    census_look()
+  while Body.get_time() - t0 < s - 1e-6 do
+    wait(referee.look_period)
+    look()
     if Body.get_time() - t_start >= next_sample - 1e-6 then
       sample()
       next_sample = next_sample + sample_every
@@ -109,10 +156,8 @@ local function jostle()
 end
 local function restart_game()
   games = games + 1
-  Sim.teleport_robot(-2.0, 0.0, 0.0)
   Sim.teleport_ball(0.0, 0.0)
-  for _, st in ipairs({ S.initial, S.ready, S.set }) do gc:set({ state = st }) play_for(1.0) end
-  gc:set({ state = S.playing })
+  new_game()
 end
 
 sample()
@@ -121,7 +166,7 @@ local walked = 0
 while Body.get_time() - t_start < seconds - 1e-6 do
   local left = seconds - (Body.get_time() - t_start)
   restart_game()
-  play_for(math.min(every, left) - 3.0)
+  play_for(math.min(every, left))
   if motion.walking[0] == 1 then walked = walked + 1 end
 end
 if next_sample <= seconds + 1e-6 then sample() end
@@ -129,6 +174,6 @@ for _, line in ipairs(census:table((Body.get_time() - t_start) / 60)) do print(l
 local falls_path = os.getenv('SOAK_FALLS')
 if falls_path and falls_path ~= '' then census:write_csv(falls_path) end
 local plus, minus = Sim.score()
-print(string.format('result seconds=%.0f games=%d goals=%d:%d falls=%d walking_at_restarts=%d game_state=%d frames=%d',
-  Body.get_time() - t_start, games, plus, minus, motion.falls[0] - falls0, walked, game.state[0],
-  shm.open('vision').frame[0]))
+print(string.format('result seconds=%.0f games=%d goals=%d:%d kickoffs_after_goals=%d:%d falls=%d motion_falls=%d '
+  .. 'walking_at_restarts=%d game_state=%d frames=%d', Body.get_time() - t_start, games, plus, minus, kickoffs[1],
+  kickoffs[2], #census.falls, motion.falls[0] - falls0, walked, game.state[0], shm.open('vision').frame[0]))

@@ -17,6 +17,10 @@
 --   c:table(minutes) -- lines: falls per cause, per robot, per robot-minute
 --   c:write_csv(path)
 --   census.classify(params, history, k, field)  -- the cause of the fall whose tip is history[k]
+--   census.fell(down, rec, tip_angle)  -- the one definition of a fall that every count here uses (the
+--                    -- census, the referee's team falls in Tools/match/rules.lua, the per-robot tally in
+--                    -- Tools/match/tally.lua, the soak's falls=): rec = { fallen, roll, pitch }, down the
+--                    -- state it returned at the last look (nil at first); returns (a new fall?, down)
 --
 -- The tip: the first look of the last run of looks whose torso tilt exceeds params.tip_angle before the
 -- truth's fallen (the sim's fall_angle). The causes, the first that applies in this order:
@@ -56,6 +60,19 @@ local function check(params)
 end
 
 local function tilt(r) return math.sqrt(r.roll * r.roll + r.pitch * r.pitch) end
+
+-- One fall: the truth says fallen and the robot has got up since its last fall (the truth not fallen and
+-- its torso tilt under tip_angle). The sim's fallen flag alone switches on again each time a lying robot
+-- rolls past its fall angle, and the motion process's own count (motion.falls) each time it detects a fall
+-- during a stand-up: both count one fall two or more times.
+function M.fell(down, rec, tip_angle)
+  if type(rec.roll) ~= 'number' or type(rec.pitch) ~= 'number' then
+    error('census.fell: a look needs the truth\'s roll and pitch (numbers)', 2)
+  end
+  if not rec.fallen and tilt(rec) < tip_angle then down = false end
+  if rec.fallen and not down then return true, true end
+  return false, down
+end
 
 local function wrap(a) return (a + math.pi) % (2 * math.pi) - math.pi end
 
@@ -159,10 +176,9 @@ function M:look(i, rec)
   if self.pushes[i] and rec.t - self.pushes[i] <= self.p.window then rec.pushed = true end
   h[#h + 1] = rec
   while #h > 1 and rec.t - h[1].t > self.p.history do table.remove(h, 1) end
-  if not rec.fallen and tilt(rec) < self.p.tip_angle then self.down[i] = false end
-  local fell = rec.fallen and not self.down[i]
+  local fell
+  fell, self.down[i] = M.fell(self.down[i], rec, self.p.tip_angle)
   if not fell then return nil end
-  self.down[i] = true
   local k = M.tip_index(self.p, h)
   local cause, causes, speed = M.classify(self.p, h, k, self.field)
   local tip = h[k]

@@ -16,7 +16,8 @@ so matches can share a node.
 team.enabled, roles.enabled): 'alternate' gives team 2 to odd seeds and team 1 to even ones (each
 side of the comparison kicks off first as often); 'us' is then the team WITH team play.
 
-Prints one row per match and the totals: goals for and against, own goals, falls, penalties, seconds
+Prints one row per match and the totals: goals for and against, own goals, falls (the referee's count, by the
+fall census's definition: one per lying, Tools/match/census.lua), penalties, seconds
 in each role, seconds with a mirrored pose belief (Tools/match/tally.lua), from 'us' (team 1 when
 --alone none).
 """

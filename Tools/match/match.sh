@@ -2,7 +2,8 @@
 # A whole match, unattended: two teams of PER_TEAM robots in one simulated world (lockstep), each
 # robot its own ROBOT_ID, run_main and site folder (team and player number), refereed by
 # Tools/match/referee.lua (a GameController: packets, return packets, the sim's truth). Prints the events,
-# the result (goals, own goals, falls, penalties), the real-time factor and the CPU per process kind.
+# the result (goals, own goals, falls (one per lying, as the fall census counts them), penalties), the
+# real-time factor and the CPU per process kind.
 #   Tools/match/match.sh [PER_TEAM (2)] [HALF_SECONDS (300)] [SEED (1)] [READY_SECONDS (45)]
 # (make match, make match4). The referee's rules are Config/common/game.lua's `referee`; the half and
 # READY's length given here reach it through its own site folder (build/match/<id>/site_referee/game.lua).

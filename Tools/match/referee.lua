@@ -45,7 +45,7 @@ end
 local beliefs = {}
 for i = 1, 2 * n do beliefs[i] = { world = shm.open('world', { robot = robots[i].id }),
   game = shm.open('game', { robot = robots[i].id }), motion = shm.open('motion', { robot = robots[i].id }) } end
-local tally = tally_mod.new(robots)
+local tally = tally_mod.new(robots, rules.census.tip_angle)
 local names = {}
 for i = 1, 2 * n do names[i] = string.format('%d/%d', team_numbers[robots[i].team], robots[i].player) end
 local census = census_mod.new(rules.census, names, { length = sim.field.length, goal_width = sim.goal.width,

@@ -10,11 +10,15 @@
 --   local m = match.new(rules, field, teams)  -- rules: game.referee; field: sim.lua's field/goal/ball;
 --                                            -- teams: { { number = 1, players = { 1, 2 } }, {...} }
 --   local acts = m:step(t, world)  -- world: { ball = {x, y, vx, vy}, score = {into +x, into -x},
---                                  --   robots = { { team = 1|2, player = k, x, y, fallen } ... } }
+--                                  --   robots = { { team = 1|2, player = k, x, y, roll, pitch, fallen } ... } }
 --                                  -- acts: { { 'ball', x, y } | { 'robot', i, x, y, yaw } ... }
 --   m:packet()  -- the GameController packet's fields for GameFSM/packet.lua's build()
 --   m.stats, m.over, m.log (events: { t, text })
+-- stats.falls counts a team's falls as the fall census does (Tools/match/census.lua's fell: the robot got
+-- up between two falls) at every look, in every state, penalized or not: a team's falls add up to the
+-- census's count of its robots.
 local packet = require('GameFSM.packet')
+local census = require('Tools.match.census')
 
 local M = {}
 local Match = {}
@@ -24,7 +28,13 @@ local SECONDARY = { throw_in = 9, corner_kick = 7, goal_kick = 8 }
 local abs, pi = math.abs, math.pi
 
 function M.new(rules, field, teams)
-  local m = setmetatable({ r = rules, L = field.length / 2, W = field.width / 2, goal_w = field.goal_width / 2,
+  local tip = type(rules.census) == 'table' and rules.census.tip_angle or nil
+  if type(tip) ~= 'number' or tip ~= tip or tip <= 0 then
+    error('rules: referee.census.tip_angle (Config/common/game.lua) must be a number > 0, got '
+      .. tostring(tip), 2)
+  end
+  local m = setmetatable({ r = rules, tip_angle = tip, down = {},
+    L = field.length / 2, W = field.width / 2, goal_w = field.goal_width / 2,
     ball_r = field.ball_diameter / 2, penalty_mark = field.penalty_mark_distance,
     goal_area = { field.goal_area_length, field.goal_area_width / 2 },
     teams = teams, state = S.initial, first_half = 1, played = 0,
@@ -120,7 +130,7 @@ function Match:penalize(acts, i, rb, why)
   self:event(string.format('team %d player %d penalized (%s)', self.teams[rb.team].number, rb.player, why))
 end
 
--- Falls and leaving the field; penalties that have run out.
+-- Lying too long and leaving the field; penalties that have run out.
 function Match:watch_robots(acts, world)
   for i, rb in ipairs(world.robots) do
     local p = self.robots[i] or {}
@@ -133,9 +143,8 @@ function Match:watch_robots(acts, world)
         self:event(string.format('team %d player %d back', self.teams[rb.team].number, rb.player))
       end
     else
-      if rb.fallen and not p.fallen_at then
-        p.fallen_at = self.t
-        self.stats.falls[rb.team] = self.stats.falls[rb.team] + 1
+      -- the penalty's clock: since the sim's fallen flag switched on
+      if rb.fallen and not p.fallen_at then p.fallen_at = self.t
       elseif not rb.fallen then p.fallen_at = nil end
       local out = self.r.outside
       if abs(rb.x) > self.L + out or abs(rb.y) > self.W + out then
@@ -144,6 +153,15 @@ function Match:watch_robots(acts, world)
         self:penalize(acts, i, rb, 'fallen')
       end
     end
+  end
+end
+
+-- Falls, as the census counts them (one per lying: up between falls).
+function Match:count_falls(world)
+  for i, rb in ipairs(world.robots) do
+    local fell
+    fell, self.down[i] = census.fell(self.down[i], rb, self.tip_angle)
+    if fell then self.stats.falls[rb.team] = self.stats.falls[rb.team] + 1 end
   end
 end
 
@@ -196,6 +214,7 @@ function Match:step(t, world)
   local v = { world.ball[3] or 0, world.ball[4] or 0 }
   self.ball_dv = self.ball_v and math.sqrt((v[1] - self.ball_v[1]) ^ 2 + (v[2] - self.ball_v[2]) ^ 2) or 0
   self.ball_v = v
+  self:count_falls(world)
   local acts, r = {}, self.r
   if not self.since then -- the first look: everyone beside the touch line
     self.since = t
