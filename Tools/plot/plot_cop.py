@@ -16,7 +16,7 @@ ok = np.isfinite(d['sens_x'])
 
 fig, ax = plt.subplots(3, 1, figsize=(10, 9), sharex=True)
 for a, axis in zip(ax[:2], ['x', 'y']):
-    a.plot(t, d['true_' + axis], lw=2, alpha=0.6, label='truth (the ground\'s forces on the robot)')
+    a.plot(t, d['true_' + axis], lw=2, alpha=0.6, label='truth (the ground\'s forces on the feet)')
     a.plot(t[ok], d['sens_' + axis][ok], '--', label='foot pressure sensors (4 per foot)')
     a.set_ylabel(axis + ' (m, field)')
     a.grid(True)
